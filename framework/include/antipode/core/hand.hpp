@@ -1,0 +1,53 @@
+#pragma once
+/// @file
+/// A hand hypothesis: a pose of the gripper with its fingers fully open, plus what each
+/// pipeline stage learned about it.
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+
+namespace antipode {
+
+/// The classification label of a hand (paper section 4).
+enum class HandLabel : std::uint8_t { kUnknown, kPositive, kNegative, kIndeterminate };
+
+/// Why a stage dropped a hand. kNone means the hand is still a candidate.
+enum class Rejection : std::uint8_t {
+  kNone,
+  kInCollision,
+  kEmptyClosingRegion,
+  kTooWide,
+  kNotAntipodal,
+  kLowScore,
+  kNoIk,
+  kNoPlan,
+  kOutOfWorkspace,
+};
+
+const char* to_string(HandLabel label);
+const char* to_string(Rejection reason);
+
+/// One hand hypothesis. The pose is X_FrameHand: hand frame expressed in `frame` (the
+/// cloud's frame). Rotation columns are the approach (x), closing (y) and axis (z)
+/// directions; the origin is the centre of the palm face (see hand_geometry.hpp).
+struct Hand {
+  Eigen::Isometry3d X_FrameHand = Eigen::Isometry3d::Identity();
+  std::string frame = "base";
+  double width_m = 0.0;   ///< extent of the object between the fingers along closing
+  double score = 0.0;     ///< higher is better; meaning set by the last stage that scored it
+  HandLabel label = HandLabel::kUnknown;
+  Rejection rejection = Rejection::kNone;
+  std::int32_t sample_index = -1;            ///< which surface sample produced this hand
+  std::vector<std::int32_t> closing_points;  ///< indices into the cloud, inside the closing region
+
+  Eigen::Vector3d approach() const { return X_FrameHand.linear().col(0); }
+  Eigen::Vector3d closing() const { return X_FrameHand.linear().col(1); }
+  Eigen::Vector3d axis() const { return X_FrameHand.linear().col(2); }
+  Eigen::Vector3d position_m() const { return X_FrameHand.translation(); }
+};
+
+}  // namespace antipode

@@ -1,0 +1,19 @@
+#pragma once
+/// @file
+/// Classifier: scores and labels hand hypotheses (paper section 4).
+
+#include "antipode/interfaces/component.hpp"
+#include "antipode/interfaces/hand_set.hpp"
+
+namespace antipode {
+
+class Classifier : public Component {
+ public:
+  ComponentKind kind() const final { return ComponentKind::kClassifier; }
+
+  /// Sets `score` and `label` of every hand in `hands`; hands judged not to be grasps get
+  /// label kNegative and a rejection reason. Never reorders or removes hands.
+  virtual void classify(HandSet& hands) const = 0;
+};
+
+}  // namespace antipode

@@ -1,0 +1,19 @@
+#pragma once
+/// @file
+/// What flows from the sampler through the classifier to the selector.
+
+#include <memory>
+#include <vector>
+
+#include "antipode/core/cloud.hpp"
+#include "antipode/core/hand.hpp"
+
+namespace antipode {
+
+/// Hands together with the (preprocessed) cloud their `closing_points` index into.
+struct HandSet {
+  std::shared_ptr<const Cloud> cloud;
+  std::vector<Hand> hands;
+};
+
+}  // namespace antipode

@@ -1,0 +1,25 @@
+#pragma once
+/// @file
+/// Sampler: cloud in, hand hypotheses out (paper section 3).
+
+#include "antipode/core/random.hpp"
+#include "antipode/interfaces/component.hpp"
+#include "antipode/interfaces/hand_set.hpp"
+
+namespace antipode {
+
+class Sampler : public Component {
+ public:
+  ComponentKind kind() const final { return ComponentKind::kSampler; }
+
+  /// Returns hand hypotheses that satisfy the sampler's necessary geometric conditions.
+  ///
+  /// Contract: `cloud` is in any frame; the returned HandSet's cloud is the cloud the hands
+  /// refer to (the sampler may preprocess it) and every hand's `frame` equals its frame.
+  /// The result depends only on `cloud`, the sampler's parameters and `random`'s seed - not
+  /// on the number of threads. Throws antipode::Error for unusable input (no finite point,
+  /// nothing in the workspace). May be called concurrently from several trees.
+  virtual HandSet sample(const Cloud& cloud, const RandomStream& random) const = 0;
+};
+
+}  // namespace antipode

@@ -1,0 +1,58 @@
+#include "antipode/core/parameters.hpp"
+
+namespace antipode {
+
+Parameters::Parameters(YAML::Node node, std::string owner, std::string file)
+    : node_(std::move(node)), owner_(std::move(owner)), file_(std::move(file)) {
+  if (node_.IsDefined() && !node_.IsNull() && !node_.IsMap()) {
+    throw Error("parameters of " + owner_ + " must be a mapping of key: value",
+                location(""));
+  }
+}
+
+bool Parameters::has(const std::string& key) const {
+  return node_.IsMap() && node_[key].IsDefined() && !node_[key].IsNull();
+}
+
+Parameters Parameters::child(const std::string& key) const {
+  asked_.insert(key);
+  if (!has(key)) return Parameters(YAML::Node(YAML::NodeType::Map), owner_ + "." + key, file_);
+  return Parameters(node_[key], owner_ + "." + key, file_);
+}
+
+void Parameters::reject_unknown() const {
+  if (!node_.IsMap()) return;
+  const std::vector<std::string> known(asked_.begin(), asked_.end());
+  for (const auto& entry : node_) {
+    const auto key = entry.first.as<std::string>();
+    if (asked_.count(key) == 0) {
+      fail(key, "unknown parameter '" + key + "' of " + owner_ + did_you_mean(key, known));
+    }
+  }
+}
+
+SourceLocation Parameters::location(const std::string& key) const {
+  YAML::Mark mark = node_.Mark();
+  if (!key.empty() && node_.IsMap()) {
+    for (const auto& entry : node_) {
+      if (entry.first.Scalar() == key) mark = entry.first.Mark();
+    }
+  }
+  if (file_.empty()) return {};
+  if (mark.is_null()) return {file_, 0, 0};
+  return {file_, mark.line + 1, mark.column + 1};
+}
+
+void Parameters::fail(const std::string& key, const std::string& message) const {
+  throw Error(message, location(key));
+}
+
+std::string Parameters::scalar_text(const std::string& key) const {
+  const YAML::Node value = node_[key];
+  if (value.IsScalar()) return value.Scalar();
+  if (value.IsSequence()) return "a list";
+  if (value.IsMap()) return "a mapping";
+  return "nothing";
+}
+
+}  // namespace antipode

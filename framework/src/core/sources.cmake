@@ -1,0 +1,7 @@
+list(APPEND ANTIPODE_SOURCES
+  ${CMAKE_CURRENT_LIST_DIR}/cloud.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/error.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/hand_geometry.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/names.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/parameters.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/random.cpp)

@@ -1,0 +1,56 @@
+#include <gtest/gtest.h>
+
+#include "antipode/core/cloud.hpp"
+#include "antipode/core/error.hpp"
+#include "antipode/core/hand.hpp"
+#include "antipode/core/hand_geometry.hpp"
+
+namespace antipode {
+namespace {
+
+TEST(HandGeometryTest, BaxterDefaultsAreValid) {
+  const HandGeometry baxter;
+  EXPECT_NO_THROW(baxter.validate());
+  EXPECT_DOUBLE_EQ(baxter.min_aperture_m, 0.029);
+  EXPECT_DOUBLE_EQ(baxter.max_aperture_m, 0.072);
+}
+
+TEST(HandGeometryTest, InconsistentValuesNameTheField) {
+  HandGeometry hand;
+  hand.min_aperture_m = 0.08;
+  EXPECT_THROW(hand.validate(), Error);
+  hand = HandGeometry();
+  hand.depth_m = -1.0;
+  try {
+    hand.validate();
+    FAIL();
+  } catch (const Error& error) {
+    EXPECT_NE(std::string(error.what()).find("depth_m"), std::string::npos);
+  }
+}
+
+TEST(CloudTest, ValidateChecksPerPointArrays) {
+  Cloud cloud;
+  cloud.points_m = {{0, 0, 0}, {1, 0, 0}};
+  EXPECT_NO_THROW(cloud.validate());
+  cloud.normals = {{0, 0, 1}};
+  EXPECT_THROW(cloud.validate(), Error);
+  cloud.normals = {{0, 0, 1}, {0, 1, 0}};
+  cloud.view_masks = {1u, 2u};
+  EXPECT_THROW(cloud.validate(), Error);  // view 1 has no origin
+  cloud.view_origins_m = {{0, 0, 0}, {1, 1, 1}};
+  EXPECT_NO_THROW(cloud.validate());
+}
+
+TEST(HandTest, AxesAreRotationColumns) {
+  Hand hand;
+  hand.X_FrameHand.linear() << 0, 0, 1,  //
+      1, 0, 0,                           //
+      0, 1, 0;
+  EXPECT_TRUE(hand.approach().isApprox(Eigen::Vector3d(0, 1, 0)));
+  EXPECT_TRUE(hand.closing().isApprox(Eigen::Vector3d(0, 0, 1)));
+  EXPECT_TRUE(hand.axis().isApprox(Eigen::Vector3d(1, 0, 0)));
+}
+
+}  // namespace
+}  // namespace antipode
