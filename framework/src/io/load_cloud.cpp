@@ -1,0 +1,85 @@
+#include "antipode/io/load_cloud.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <cerrno>
+#include <cstring>
+#include <fstream>
+#include <mutex>
+
+#include <pcl/console/print.h>
+
+#include "antipode/core/error.hpp"
+#include "raw_points.hpp"
+
+namespace antipode {
+namespace io {
+
+std::string read_file_bytes(const std::string& path) {
+  std::ifstream file(path, std::ios::binary);
+  if (!file) throw Error(std::string("cannot open cloud file: ") + std::strerror(errno), {path});
+  std::string bytes;
+  file.seekg(0, std::ios::end);
+  const std::streamoff size = file.tellg();
+  if (size < 0) throw Error("cannot read cloud file (is it a directory?)", {path});
+  bytes.resize(static_cast<std::size_t>(size));
+  file.seekg(0, std::ios::beg);
+  if (size > 0 && !file.read(bytes.data(), size)) throw Error("cannot read cloud file", {path});
+  return bytes;
+}
+
+void silence_pcl_console() {
+  static std::once_flag once;
+  std::call_once(once, [] { pcl::console::setVerbosityLevel(pcl::console::L_ALWAYS); });
+}
+
+}  // namespace io
+
+namespace {
+
+std::string lower_extension(const std::string& path) {
+  const std::size_t dot = path.find_last_of('.');
+  const std::size_t slash = path.find_last_of('/');
+  if (dot == std::string::npos || (slash != std::string::npos && dot < slash)) return "";
+  std::string ext = path.substr(dot + 1);
+  std::transform(ext.begin(), ext.end(), ext.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return ext;
+}
+
+io::RawPoints read_any(const std::string& path) {
+  const std::string ext = lower_extension(path);
+  if (ext != "pcd" && ext != "ply") {
+    const std::string format = ext.empty() ? "no extension" : "unknown extension '." + ext + "'";
+    throw Error("cannot tell the cloud format: " + format + " (expected .pcd or .ply)", {path});
+  }
+  const std::string bytes = io::read_file_bytes(path);
+  if (bytes.empty()) throw Error("the cloud file is empty", {path});
+  return ext == "pcd" ? io::read_pcd(path, bytes) : io::read_ply(path, bytes);
+}
+
+}  // namespace
+
+Cloud load_cloud(const std::string& path, const LoadCloudOptions& options) {
+  io::RawPoints raw = read_any(path);
+  if (raw.points_m.empty()) throw Error("the cloud has no points", {path});
+  const std::size_t declared = raw.points_m.size();
+  auto& points = raw.points_m;
+  points.erase(std::remove_if(points.begin(), points.end(),
+                              [](const Eigen::Vector3f& p) { return !p.allFinite(); }),
+               points.end());
+  if (points.empty()) {
+    throw Error(
+        "the cloud has no finite point (all " + std::to_string(declared) + " are NaN or infinite)",
+        {path});
+  }
+  Cloud cloud;
+  cloud.frame = options.frame;
+  cloud.points_m = std::move(points);
+  cloud.view_masks.assign(cloud.points_m.size(), 1u);
+  cloud.view_origins_m.push_back(
+      options.view_origin_m.value_or(raw.origin_m.value_or(Eigen::Vector3f::Zero())));
+  return cloud;
+}
+
+}  // namespace antipode
