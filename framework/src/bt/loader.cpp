@@ -1,0 +1,63 @@
+#include "antipode/bt/loader.hpp"
+
+#include "build_tree.hpp"
+#include "checks.hpp"
+#include "overrides.hpp"
+#include "parser.hpp"
+#include "yaml_source.hpp"
+
+namespace antipode::bt {
+namespace {
+
+const NodeRegistry& registry_of(const LoadOptions& options) {
+  if (options.registry != nullptr) return *options.registry;
+  static const NodeRegistry builtin = builtin_node_registry();
+  return builtin;
+}
+
+struct CheckedFile {
+  detail::FileSpec spec;
+  detail::Overrides entries;  // `--set key=value` entries of the main blackboard
+};
+
+CheckedFile check_file(const std::string& yaml, const std::string& file_name,
+                       const LoadOptions& options) {
+  YAML::Node document = detail::parse_yaml(yaml, file_name);
+  CheckedFile checked;
+  checked.entries = detail::apply_overrides(document, options.overrides);
+  detail::ParseContext context;
+  context.file = file_name;
+  context.registry = &registry_of(options);
+  context.components = options.components;
+  checked.spec = detail::parse_document(document, context);
+  detail::check_subtree_cycles(checked.spec);
+  detail::check_entry_types(checked.spec, context.registry->converters(), checked.entries);
+  return checked;
+}
+
+}  // namespace
+
+Tree load_tree_string(const std::string& yaml, const std::string& file_name,
+                      const LoadOptions& options) {
+  const CheckedFile checked = check_file(yaml, file_name, options);
+  detail::TreeBuilder builder{
+      checked.spec, options.components,
+      std::make_shared<const LiteralConverters>(registry_of(options).converters()), options.seed,
+      nullptr};
+  return builder.build(checked.entries);
+}
+
+Tree load_tree_file(const std::string& path, const LoadOptions& options) {
+  return load_tree_string(detail::read_text_file(path), path, options);
+}
+
+void validate_tree_string(const std::string& yaml, const std::string& file_name,
+                          const LoadOptions& options) {
+  check_file(yaml, file_name, options);
+}
+
+void validate_tree_file(const std::string& path, const LoadOptions& options) {
+  validate_tree_string(detail::read_text_file(path), path, options);
+}
+
+}  // namespace antipode::bt

@@ -1,0 +1,72 @@
+#include "overrides.hpp"
+
+#include "antipode/bt/blackboard.hpp"
+#include "antipode/core/error.hpp"
+
+namespace antipode::bt::detail {
+namespace {
+
+std::vector<std::string> split_path(const std::string& text) {
+  std::vector<std::string> parts;
+  std::size_t start = 0;
+  for (auto dot = text.find('.'); dot != std::string::npos; dot = text.find('.', start)) {
+    parts.push_back(text.substr(start, dot - start));
+    start = dot + 1;
+  }
+  parts.push_back(text.substr(start));
+  return parts;
+}
+
+YAML::Node read_value(const std::string& text) {
+  try {
+    YAML::Node value = YAML::Load(text);
+    if (value.IsDefined() && !value.IsNull()) return value;
+  } catch (const YAML::Exception&) {
+    // Not YAML: take it as plain text.
+  }
+  return YAML::Node(text);
+}
+
+void set_parameter(YAML::Node& document, const std::string& key, const std::string& text) {
+  const std::string what = "--set " + key + "=" + text;
+  const auto path = split_path(key);
+  const YAML::Node components = std::as_const(document)["components"];
+  std::vector<std::string> names;
+  if (components.IsMap()) {
+    for (const auto& entry : components) names.push_back(entry.first.Scalar());
+  }
+  const YAML::Node found = components.IsMap() ? components[path[0]] : YAML::Node();
+  if (!found.IsDefined() || !found.IsMap()) {
+    throw Error(what + ": unknown component '" + path[0] + "'" + did_you_mean(path[0], names));
+  }
+  YAML::Node target;
+  target.reset(found);
+  for (std::size_t i = 1; i + 1 < path.size(); ++i) {
+    if (path[i].empty()) throw Error(what + ": empty parameter name");
+    if (!std::as_const(target)[path[i]].IsMap()) target[path[i]] = YAML::Node(YAML::NodeType::Map);
+    YAML::Node next = target[path[i]];
+    target.reset(next);
+  }
+  if (path.back().empty()) throw Error(what + ": empty parameter name");
+  target[path.back()] = read_value(text);
+}
+
+}  // namespace
+
+Overrides apply_overrides(YAML::Node& document, const Overrides& overrides) {
+  Overrides entries;
+  for (const auto& [key, value] : overrides) {
+    if (key.find('.') != std::string::npos) {
+      set_parameter(document, key, value);
+    } else if (is_valid_key(key)) {
+      entries.emplace_back(key, value);
+    } else {
+      throw Error("--set " + key + "=" + value +
+                  ": not a blackboard entry name (a letter or '_', then letters, digits, '_') "
+                  "nor component.parameter");
+    }
+  }
+  return entries;
+}
+
+}  // namespace antipode::bt::detail

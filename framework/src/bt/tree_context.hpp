@@ -1,0 +1,41 @@
+#pragma once
+// What all nodes of one loaded tree share: the seed, the components, the observers and the
+// log sink. Internal to the engine.
+
+#include <chrono>
+#include <cstdint>
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "antipode/bt/node.hpp"
+#include "antipode/bt/observer.hpp"
+#include "antipode/interfaces/component.hpp"
+
+namespace antipode::bt::detail {
+
+struct TreeContext {
+  std::uint64_t seed = 0;
+  std::map<std::string, std::shared_ptr<Component>> components;
+  std::vector<TreeObserver*> observers;
+  std::vector<std::shared_ptr<TreeObserver>> owned_observers;
+  LogSink log_sink;
+
+  void notify(const Node& node, Status previous, Status current) const {
+    if (observers.empty()) return;
+    const auto now = std::chrono::steady_clock::now();
+    for (TreeObserver* observer : observers) {
+      observer->on_status_change(node, previous, current, now);
+    }
+  }
+};
+
+// The loader's access to a node's children.
+struct NodeAccess {
+  static void add_child(Node& parent, std::unique_ptr<Node> child) {
+    parent.children_.push_back(std::move(child));
+  }
+};
+
+}  // namespace antipode::bt::detail

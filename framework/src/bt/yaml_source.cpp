@@ -1,0 +1,40 @@
+#include "yaml_source.hpp"
+
+#include <fstream>
+#include <sstream>
+
+namespace antipode::bt::detail {
+
+std::string read_text_file(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw Error("cannot read tree file '" + path + "'", {path});
+  std::ostringstream text;
+  text << in.rdbuf();
+  if (in.bad()) throw Error("cannot read tree file '" + path + "'", {path});
+  return text.str();
+}
+
+YAML::Node parse_yaml(const std::string& text, const std::string& file) {
+  try {
+    return YAML::Load(text);
+  } catch (const YAML::ParserException& error) {
+    const SourceLocation where{file, error.mark.line + 1, error.mark.column + 1};
+    throw Error("YAML syntax error: " + error.msg,
+                error.mark.is_null() ? SourceLocation{file} : where);
+  }
+}
+
+SourceLocation locate(const YAML::Node& node, const std::string& file) {
+  if (!node.IsDefined()) return {file};
+  const YAML::Mark mark = node.Mark();
+  if (mark.is_null()) return {file};
+  return {file, mark.line + 1, mark.column + 1};
+}
+
+SourceLocation locate_value(const YAML::Node& key, const YAML::Node& value,
+                            const std::string& file) {
+  if (!value.IsDefined() || value.IsNull()) return locate(key, file);
+  return locate(value, file);
+}
+
+}  // namespace antipode::bt::detail

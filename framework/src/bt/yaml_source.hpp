@@ -1,0 +1,25 @@
+#pragma once
+// Reading YAML tree files and locating their nodes for messages.
+
+#include <string>
+
+#include <yaml-cpp/yaml.h>
+
+#include "antipode/core/error.hpp"
+
+namespace antipode::bt::detail {
+
+// The contents of `path`; throws Error when it cannot be read.
+std::string read_text_file(const std::string& path);
+
+// Parses `text`; a syntax error becomes Error "file:line:column: YAML syntax error: ...".
+YAML::Node parse_yaml(const std::string& text, const std::string& file);
+
+// Where `node` starts in `file` (1-based), or just `file` when yaml-cpp has no mark.
+SourceLocation locate(const YAML::Node& node, const std::string& file);
+
+// The value's location, or the key's when the value is null (and so has no useful mark).
+SourceLocation locate_value(const YAML::Node& key, const YAML::Node& value,
+                            const std::string& file);
+
+}  // namespace antipode::bt::detail

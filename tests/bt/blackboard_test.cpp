@@ -1,0 +1,220 @@
+// Blackboard typing, text conversion, remapping, and entries flowing between nodes.
+#include "test_support.hpp"
+
+namespace antipode::bt::testing {
+namespace {
+
+std::string error_of(const std::function<void()>& action) {
+  try {
+    action();
+  } catch (const Error& error) {
+    return error.what();
+  }
+  return "";
+}
+
+// Counts copies, to show that values are moved into and read from the blackboard in place.
+struct CopyCounter {
+  CopyCounter() = default;
+  CopyCounter(const CopyCounter&) { ++copies; }
+  CopyCounter(CopyCounter&&) noexcept = default;
+  CopyCounter& operator=(const CopyCounter&) {
+    ++copies;
+    return *this;
+  }
+  CopyCounter& operator=(CopyCounter&&) noexcept = default;
+  static int copies;
+};
+int CopyCounter::copies = 0;
+
+TEST(BlackboardTest, StoresTypedValues) {
+  Blackboard board;
+  EXPECT_FALSE(board.has("n"));
+  board.set("n", 3);
+  board.set("n", 4);
+  EXPECT_EQ(board.get<int>("n"), 4);
+  EXPECT_EQ(board.type_of("n"), std::type_index(typeid(int)));
+  EXPECT_EQ(board.text("n"), "4");
+  EXPECT_EQ(board.text("m"), "<unset>");
+}
+
+TEST(BlackboardTest, TypeConflictsThrowOnSetAndGet) {
+  Blackboard board;
+  board.set("n", 3);
+  EXPECT_EQ(error_of([&] { board.set("n", 2.5); }),
+            "blackboard entry {n} holds int; cannot store double in it");
+  EXPECT_EQ(error_of([&] { board.get<std::vector<double>>("n"); }),
+            "blackboard entry {n} holds int, not list of double");
+  EXPECT_EQ(error_of([&] { board.get<int>("m"); }), "blackboard entry {m} has not been written");
+}
+
+TEST(BlackboardTest, TextEntriesConvertToTheRequestedType) {
+  Blackboard board;
+  board.set<std::string>("n", "12");
+  board.set<std::string>("list", "[1, 2.5]");
+  EXPECT_EQ(board.get<int>("n"), 12);
+  EXPECT_EQ(board.get<std::vector<double>>("list"), (std::vector<double>{1, 2.5}));
+  EXPECT_EQ(error_of([&] { board.get<int>("list"); }),
+            "blackboard entry {list} holds the text '[1, 2.5]', which is not a valid int");
+  board.set("m", 1);
+  board.set<std::string>("m", "5");  // text written to an int entry is converted
+  EXPECT_EQ(board.get_ref<int>("m"), 5);
+  EXPECT_THROW(board.set<std::string>("m", "five"), Error);
+}
+
+TEST(BlackboardTest, LargeValuesAreMovedInAndReadWithoutCopies) {
+  Blackboard board;
+  CopyCounter::copies = 0;
+  board.set("big", CopyCounter{});
+  const CopyCounter& first = board.get_ref<CopyCounter>("big");
+  const CopyCounter& second = board.get_ref<CopyCounter>("big");
+  EXPECT_EQ(&first, &second);
+  EXPECT_EQ(CopyCounter::copies, 0);
+  EXPECT_EQ(board.text("big"), "<antipode::bt::testing::(anonymous namespace)::CopyCounter>");
+}
+
+TEST(BlackboardTest, RemappedKeysActOnTheTarget) {
+  auto outer = std::make_shared<Blackboard>();
+  Blackboard inner;
+  inner.remap("result", outer, "answer");
+  inner.set("result", 42);
+  inner.set("private", 1);
+  outer->set("hidden", 2);
+  EXPECT_EQ(outer->get<int>("answer"), 42);
+  EXPECT_FALSE(outer->has("private"));
+  EXPECT_FALSE(outer->has("result"));
+  EXPECT_FALSE(inner.has("hidden"));
+  EXPECT_EQ(inner.keys(), (std::vector<std::string>{"private", "result"}));
+}
+
+TEST(BlackboardTest, ReferencesAndKeysAreRecognised) {
+  EXPECT_EQ(parse_reference("{cloud}"), "cloud");
+  EXPECT_EQ(parse_reference("{_a1}"), "_a1");
+  EXPECT_EQ(parse_reference("cloud"), std::nullopt);
+  EXPECT_EQ(parse_reference("{a b}"), std::nullopt);
+  EXPECT_EQ(parse_reference("{1a}"), std::nullopt);
+  EXPECT_FALSE(is_valid_key(""));
+}
+
+using EntryTest = TreeTest;
+
+TEST_F(EntryTest, OutputsReachInputsThroughTheBlackboard) {
+  Tree tree = load(R"(
+main: t
+trees:
+  t:
+    Sequence:
+      - WriteInt: { value: 7, out: "{n}" }
+      - WriteInt: { value: 8, out: m }
+      - ReadInt: { in: "{n}", expect: 7 }
+      - ReadInt: { in: "{m}", expect: 8 }
+      - MakeBig: { out: "{big}" }
+)");
+  EXPECT_EQ(tree.tick_once(), Status::kSuccess);
+  EXPECT_EQ(tree.blackboard().get<int>("n"), 7);
+  EXPECT_EQ(tree.blackboard().get_ref<std::shared_ptr<const std::vector<int>>>("big")->size(),
+            1000u);
+}
+
+TEST_F(EntryTest, ReadingAnUnwrittenEntryNamesTheNodePortAndPlace) {
+  Tree tree = load(R"(
+main: t
+trees:
+  t:
+    ReadInt: { in: "{cloud}" }
+)");
+  try {
+    tree.tick_once();
+    FAIL() << "expected an error";
+  } catch (const Error& error) {
+    EXPECT_STREQ(error.what(),
+                 "trees/t.yaml:5:20: port 'in' of ReadInt reads {cloud}, which no node has "
+                 "written yet");
+  }
+}
+
+TEST_F(EntryTest, ReadingTextThatDoesNotConvertIsALocatedError) {
+  Tree tree = load(R"(
+main: t
+trees:
+  t:
+    Sequence:
+      - SetBlackboard: { key: x, value: abc }
+      - ReadInt: { in: "{x}", name: check }
+)");
+  try {
+    tree.tick_once();
+    FAIL() << "expected an error";
+  } catch (const Error& error) {
+    EXPECT_STREQ(error.what(),
+                 "trees/t.yaml:7:24: port 'in' of ReadInt 'check' reads {x} as int, but it "
+                 "holds the text 'abc'");
+  }
+}
+
+TEST_F(EntryTest, SetOverridesBecomeTextEntriesOfTheMainTree) {
+  options.overrides = {{"n", "5"}};
+  Tree tree = load(R"(
+main: t
+trees:
+  t:
+    ReadInt: { in: "{n}", expect: 5 }
+)");
+  EXPECT_EQ(tree.tick_once(), Status::kSuccess);
+}
+
+TEST_F(EntryTest, ListLiteralsAndListEntriesReachListPorts) {
+  options.overrides = {{"values", "[0.5, 1.5]"}};
+  Tree tree = load(R"(
+main: t
+trees:
+  t:
+    Sequence:
+      - SumList: { in: [1, 2, 3.5], sum: "{a}" }
+      - SumList: { in: "{values}", sum: "{b}" }
+)");
+  EXPECT_EQ(tree.tick_once(), Status::kSuccess);
+  EXPECT_DOUBLE_EQ(tree.blackboard().get<double>("a"), 6.5);
+  EXPECT_DOUBLE_EQ(tree.blackboard().get<double>("b"), 2.0);
+}
+
+TEST_F(EntryTest, ComponentPortsReachTheirComponent) {
+  options.overrides = {{"sampler.samples", "7"}};
+  Tree tree = load(R"(
+components:
+  sampler: { plugin: fake_sampler, samples: 3 }
+main: t
+trees:
+  t:
+    UseSampler: { sampler: sampler, out: "{n}" }
+)");
+  EXPECT_EQ(components.created, 1);
+  EXPECT_EQ(tree.tick_once(), Status::kSuccess);
+  EXPECT_EQ(tree.blackboard().get<int>("n"), 7);
+  EXPECT_NE(tree.component("sampler"), nullptr);
+  EXPECT_EQ(tree.component_names(), std::vector<std::string>{"sampler"});
+}
+
+TEST_F(EntryTest, ErrorsThrownByATickAreLocatedAtTheNode) {
+  NodeManifest thrower;
+  thrower.type = "Thrower";
+  thrower.create = [](const NodeConfig& config) -> std::unique_ptr<Node> {
+    struct Throwing : SyncActionNode {
+      using SyncActionNode::SyncActionNode;
+      Status tick() override { throw std::runtime_error("no finite point"); }
+    };
+    return std::make_unique<Throwing>(config);
+  };
+  registry.add(thrower);
+  Tree tree = load("main: t\ntrees:\n  t:\n    Sequence: [AlwaysSuccess, Thrower]\n");
+  try {
+    tree.tick_once();
+    FAIL() << "expected an error";
+  } catch (const Error& error) {
+    EXPECT_STREQ(error.what(), "trees/t.yaml:4:31: Thrower: no finite point");
+  }
+  EXPECT_EQ(tree.root().status(), Status::kIdle);
+}
+
+}  // namespace
+}  // namespace antipode::bt::testing
