@@ -1,13 +1,20 @@
 # antipode_add_plugin(NAME SOURCES src... [LIBRARIES lib...])
-# Builds one plugin shared library into the build tree's plugin directory (where the plugin
-# host finds it) and installs it into the install prefix's plugin directory.
+# Builds one plugin library, libantipode_NAME.so, against antipode::framework. Inside the
+# antipode tree it goes to the build tree's plugin directory (where the plugin host finds it);
+# in a third-party project (find_package(antipode)) to ${CMAKE_BINARY_DIR}/plugins - put that
+# directory on ANTIPODE_PLUGIN_PATH. Both install into the antipode plugin directory.
 function(antipode_add_plugin name)
   cmake_parse_arguments(ARG "" "" "SOURCES;LIBRARIES" ${ARGN})
   add_library(${name} MODULE ${ARG_SOURCES})
   target_link_libraries(${name} PRIVATE antipode::framework ${ARG_LIBRARIES})
+  if(DEFINED ANTIPODE_PLUGIN_BUILD_DIR)
+    set(output_dir "${ANTIPODE_PLUGIN_BUILD_DIR}")
+  else()
+    set(output_dir "${CMAKE_BINARY_DIR}/plugins")
+  endif()
   set_target_properties(${name} PROPERTIES
     PREFIX "libantipode_"
-    LIBRARY_OUTPUT_DIRECTORY "${ANTIPODE_PLUGIN_BUILD_DIR}"
+    LIBRARY_OUTPUT_DIRECTORY "${output_dir}"
     CXX_VISIBILITY_PRESET hidden
     VISIBILITY_INLINES_HIDDEN ON)
   install(TARGETS ${name} LIBRARY DESTINATION "${ANTIPODE_PLUGIN_INSTALL_DIR}")

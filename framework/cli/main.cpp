@@ -1,8 +1,75 @@
+// The `antipode` command: runs, validates and inspects behaviour trees and plugins.
+#include <CLI/CLI.hpp>
+
 #include <iostream>
 
 #include "antipode/config.hpp"
+#include "antipode/core/error.hpp"
+#include "commands.hpp"
+#include "exit_codes.hpp"
 
-int main() {
-  std::cout << "antipode " << ANTIPODE_VERSION << "\n";
-  return 0;
+namespace {
+
+constexpr const char* kExamples = R"(Examples:
+  antipode run trees/demo.yaml
+  antipode run trees/detect.yaml --set sampler.samples=500 --seed 3 --trace run.jsonl
+  antipode validate trees/detect.yaml
+  antipode plugins
+
+Exit codes: 0 success, 1 the tree returned FAILURE, 2 invalid input (command line, tree,
+parameters, data file), 3 internal error. See docs/cli.md.)";
+
+struct Commands {
+  antipode::cli::RunOptions run;
+  std::string validate_path;
+};
+
+void add_run(CLI::App& app, Commands& commands) {
+  CLI::App* run = app.add_subcommand("run", "Run a behaviour tree");
+  run->add_option("tree", commands.run.tree_path, "YAML tree file")->required();
+  run->add_option("--set", commands.run.set,
+                  "Override: component.parameter=value, or key=value for a blackboard entry "
+                  "of the main tree (repeatable)");
+  run->add_option("--seed", commands.run.seed, "Seed of every random stream (default 0)");
+  run->add_option("--trace", commands.run.trace_path, "Write every status change as JSON lines");
+  run->add_flag("-q,--quiet", commands.run.quiet, "No per-node trace on the console");
+}
+
+int dispatch(const CLI::App& app, const Commands& commands) {
+  if (app.got_subcommand("run")) return antipode::cli::run_command(commands.run);
+  if (app.got_subcommand("validate")) {
+    return antipode::cli::validate_command(commands.validate_path);
+  }
+  if (app.got_subcommand("plugins")) return antipode::cli::plugins_command();
+  std::cout << app.help();
+  return antipode::cli::kExitInvalidInput;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  using namespace antipode::cli;
+  CLI::App app{"antipode: grasp detection and picking with behaviour trees and plugins"};
+  app.footer(kExamples);
+  app.set_version_flag("--version", std::string("antipode ") + ANTIPODE_VERSION);
+  Commands commands;
+  add_run(app, commands);
+  CLI::App* validate = app.add_subcommand("validate", "Check a tree file without running it");
+  validate->add_option("tree", commands.validate_path, "YAML tree file")->required();
+  app.add_subcommand("plugins", "List plugin libraries found, loaded and refused, and why");
+  app.require_subcommand(0, 1);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& error) {
+    return app.exit(error) == 0 ? kExitSuccess : kExitInvalidInput;
+  }
+  try {
+    return dispatch(app, commands);
+  } catch (const antipode::Error& error) {
+    std::cerr << "antipode: error: " << error.what() << "\n";
+    return kExitInvalidInput;
+  } catch (const std::exception& error) {
+    std::cerr << "antipode: internal error: " << error.what() << "\n";
+    return kExitInternalError;
+  }
 }

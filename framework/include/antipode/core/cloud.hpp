@@ -3,6 +3,7 @@
 /// A point cloud as antipode passes it between stages.
 
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -32,5 +33,8 @@ struct Cloud {
   /// Throws antipode::Error describing the first broken invariant.
   void validate() const;
 };
+
+/// How clouds travel between behaviour-tree nodes: shared, never copied, never modified.
+using CloudPtr = std::shared_ptr<const Cloud>;
 
 }  // namespace antipode

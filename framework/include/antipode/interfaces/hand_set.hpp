@@ -16,4 +16,8 @@ struct HandSet {
   std::vector<Hand> hands;
 };
 
+/// How hand sets travel between behaviour-tree nodes: shared and immutable; a stage that
+/// changes hands (a classifier) writes a new set.
+using HandSetPtr = std::shared_ptr<const HandSet>;
+
 }  // namespace antipode

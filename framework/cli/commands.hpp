@@ -1,0 +1,28 @@
+#pragma once
+// The `antipode` subcommands. Each returns the process exit code (see exit_codes.hpp) and
+// throws antipode::Error for bad input, which main() prints as one line.
+
+#include <cstdint>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace antipode::cli {
+
+struct RunOptions {
+  std::string tree_path;
+  std::vector<std::string> set;  ///< "key=value" overrides
+  std::uint64_t seed = 0;
+  std::string trace_path;        ///< JSON-lines trace file; "" for none
+  bool quiet = false;            ///< no per-node console trace
+};
+
+int run_command(const RunOptions& options);
+int validate_command(const std::string& tree_path);
+int plugins_command();
+
+/// Splits "key=value" overrides; throws Error for an entry without '='.
+std::vector<std::pair<std::string, std::string>> parse_overrides(
+    const std::vector<std::string>& entries);
+
+}  // namespace antipode::cli

@@ -1,0 +1,23 @@
+#pragma once
+// What every CLI command that touches trees needs: the plugin host with everything found on
+// the search path, and a node registry with the built-in and plugin node types.
+
+#include <memory>
+
+#include "antipode/bt/node_registry.hpp"
+#include "antipode/plugin/plugin_host.hpp"
+
+namespace antipode::cli {
+
+struct Session {
+  std::unique_ptr<PluginHost> host;
+  bt::NodeRegistry registry;
+};
+
+/// Loads every plugin on the search path and registers built-in and plugin nodes.
+Session open_session();
+
+/// " - note: N plugin libraries were refused; see 'antipode plugins'", or "" when none were.
+std::string refused_plugins_note(const PluginHost& host);
+
+}  // namespace antipode::cli

@@ -1,0 +1,91 @@
+#pragma once
+/// @file
+/// The plugin host: finds plugin libraries, loads them safely and creates what they offer.
+///
+/// Contract:
+/// - A plugin library is a file named `libantipode_<name>.so` in a search directory. The
+///   search path is the directories of `ANTIPODE_PLUGIN_PATH` (colon-separated, in order),
+///   then this build tree's plugin directory, then `antipode/plugins` beside the
+///   installed libantipode.so (`<prefix>/lib/antipode/plugins`). When two
+///   directories hold a file of the same name, the earlier one wins.
+/// - Libraries are opened with dlopen(RTLD_NOW | RTLD_LOCAL). A library is refused - recorded
+///   with its path and reason, never thrown, never crashing - when dlopen fails (dlerror()
+///   text verbatim), the entry symbol is missing, the ABI major differs or the minor is
+///   newer than the host's (both versions named), the descriptor is malformed, or one of its
+///   type names is already offered by a loaded library.
+/// - A library stays loaded while the host or any component created from it lives.
+
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "antipode/plugin/abi.hpp"
+#include "antipode/plugin/component_source.hpp"
+
+namespace antipode {
+
+/// What happened to one library file.
+struct PluginRecord {
+  enum class State { kLoaded, kRefused, kShadowed };
+  std::string path;
+  State state = State::kRefused;
+  std::string reason;    ///< why refused or shadowed; empty when loaded
+  std::string name;      ///< from the descriptor, when it could be read
+  std::string version;   ///< from the descriptor, when it could be read
+  std::vector<std::string> offers;  ///< "kind type" for each factory of a loaded library
+};
+
+const char* to_string(PluginRecord::State state);
+
+class PluginHost : public ComponentSource {
+ public:
+  /// `ANTIPODE_PLUGIN_PATH` directories, then the build tree's, then the installed one.
+  static std::vector<std::string> default_search_path();
+
+  explicit PluginHost(std::vector<std::string> search_path = default_search_path());
+  ~PluginHost() override;
+  PluginHost(const PluginHost&) = delete;
+  PluginHost& operator=(const PluginHost&) = delete;
+
+  /// Loads every plugin library found on the search path. Refusals are recorded.
+  void load_search_path();
+
+  /// Loads one library file; returns its record (loaded or refused).
+  const PluginRecord& load_library(const std::string& path);
+
+  /// Every library seen so far, in the order they were considered.
+  const std::vector<PluginRecord>& records() const { return records_; }
+  const std::vector<std::string>& search_path() const { return search_path_; }
+
+  /// Registers the node types of every loaded library into `registry`. Throws
+  /// antipode::Error when a plugin node type collides with one already in the registry.
+  void register_nodes(bt::NodeRegistry& registry) const;
+
+  /// The node types offered by loaded libraries.
+  std::vector<std::string> node_types() const;
+
+  // ComponentSource
+  std::vector<std::string> component_types() const override;
+  std::optional<ComponentKind> kind_of(const std::string& type) const override;
+  std::shared_ptr<Component> create(const std::string& type,
+                                    const Parameters& params) const override;
+
+ private:
+  struct Library;
+  struct Offer {
+    std::shared_ptr<Library> library;
+    const PluginFactory* factory;
+  };
+
+  std::string refuse_reason(const PluginDescriptor& descriptor) const;
+
+  std::vector<std::string> search_path_;
+  std::vector<PluginRecord> records_;
+  std::map<std::string, Offer> offers_;  // type name -> factory
+};
+
+/// "libantipode_<name>.so" for a plugin name.
+std::string plugin_file_name(const std::string& plugin_name);
+
+}  // namespace antipode

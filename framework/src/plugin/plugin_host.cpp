@@ -1,0 +1,253 @@
+#include "antipode/plugin/plugin_host.hpp"
+
+#include <dlfcn.h>
+
+#include <cstddef>
+#include <cstdlib>
+#include <filesystem>
+#include <set>
+#include <sstream>
+
+#include "antipode/config.hpp"
+#include "antipode/core/error.hpp"
+#include "plugin_kind.hpp"
+
+namespace antipode {
+namespace fs = std::filesystem;
+
+/// An open library; dlclose()d when the last owner (host or component) lets go.
+struct PluginHost::Library {
+  void* handle = nullptr;
+  std::string path;
+  const PluginDescriptor* descriptor = nullptr;
+  ~Library() {
+    if (handle != nullptr) dlclose(handle);
+  }
+};
+
+namespace {
+
+std::string version_text(std::uint32_t major, std::uint32_t minor) {
+  return std::to_string(major) + "." + std::to_string(minor);
+}
+
+std::vector<std::string> split_path_list(const char* text) {
+  std::vector<std::string> parts;
+  if (text == nullptr) return parts;
+  std::stringstream stream(text);
+  std::string part;
+  while (std::getline(stream, part, ':')) {
+    if (!part.empty()) parts.push_back(part);
+  }
+  return parts;
+}
+
+bool is_plugin_file(const fs::path& path) {
+  const std::string name = path.filename().string();
+  return name.rfind("libantipode_", 0) == 0 && path.extension() == ".so";
+}
+
+// Plugin files in `directory`, sorted by name so loading order is reproducible.
+std::vector<fs::path> plugin_files_in(const std::string& directory) {
+  std::vector<fs::path> files;
+  std::error_code error;
+  for (fs::directory_iterator it(directory, error), end; !error && it != end;
+       it.increment(error)) {
+    if (is_plugin_file(it->path())) files.push_back(it->path());
+  }
+  std::sort(files.begin(), files.end());
+  return files;
+}
+
+// The descriptor fields the host reads end with `factories`.
+constexpr std::size_t kDescriptorBytesRead =
+    offsetof(PluginDescriptor, factories) + sizeof(PluginDescriptor::factories);
+
+// <directory of libantipode.so>/antipode/plugins: found at run time, so an installed tree
+// works from whatever prefix it was installed to.
+std::string installed_plugin_dir() {
+  Dl_info info{};
+  if (dladdr(reinterpret_cast<void*>(&split_path_list), &info) == 0 ||
+      info.dli_fname == nullptr) {
+    return ANTIPODE_PLUGIN_DIR_BESIDE_LIBRARY;
+  }
+  const fs::path library_dir = fs::path(info.dli_fname).parent_path();
+  return (library_dir / ANTIPODE_PLUGIN_DIR_BESIDE_LIBRARY).lexically_normal().string();
+}
+
+}  // namespace
+
+const char* to_string(PluginRecord::State state) {
+  switch (state) {
+    case PluginRecord::State::kLoaded: return "loaded";
+    case PluginRecord::State::kRefused: return "refused";
+    case PluginRecord::State::kShadowed: return "shadowed";
+  }
+  return "?";
+}
+
+std::string plugin_file_name(const std::string& plugin_name) {
+  return "libantipode_" + plugin_name + ".so";
+}
+
+std::vector<std::string> PluginHost::default_search_path() {
+  std::vector<std::string> path = split_path_list(std::getenv("ANTIPODE_PLUGIN_PATH"));
+  path.emplace_back(ANTIPODE_PLUGIN_BUILD_DIR);
+  path.push_back(installed_plugin_dir());
+  return path;
+}
+
+PluginHost::PluginHost(std::vector<std::string> search_path)
+    : search_path_(std::move(search_path)) {}
+
+PluginHost::~PluginHost() = default;
+
+void PluginHost::load_search_path() {
+  std::map<std::string, std::string> first_seen;  // file name -> path that won
+  for (const auto& directory : search_path_) {
+    for (const auto& file : plugin_files_in(directory)) {
+      const auto [winner, inserted] =
+          first_seen.emplace(file.filename().string(), file.string());
+      if (inserted) {
+        load_library(file.string());
+      } else {
+        records_.push_back({file.string(), PluginRecord::State::kShadowed,
+                            "shadowed by " + winner->second, "", "", {}});
+      }
+    }
+  }
+}
+
+std::string PluginHost::refuse_reason(const PluginDescriptor& descriptor) const {
+  if (descriptor.abi_major != kAbiMajor || descriptor.abi_minor > kAbiMinor) {
+    return "built for plugin ABI " + version_text(descriptor.abi_major, descriptor.abi_minor) +
+           ", but this antipode provides ABI " + version_text(kAbiMajor, kAbiMinor) +
+           " (rebuild the plugin against this antipode)";
+  }
+  if (descriptor.descriptor_size < kDescriptorBytesRead) {
+    return "descriptor is " + std::to_string(descriptor.descriptor_size) +
+           " bytes, expected at least " + std::to_string(kDescriptorBytesRead);
+  }
+  if (descriptor.name == nullptr || descriptor.version == nullptr ||
+      (descriptor.factory_count > 0 && descriptor.factories == nullptr)) {
+    return "descriptor has a null name, version or factory table";
+  }
+  std::set<std::string> own_types;
+  for (std::uint32_t i = 0; i < descriptor.factory_count; ++i) {
+    const PluginFactory& factory = descriptor.factories[i];
+    const std::string problem = factory_problem(factory);
+    if (!problem.empty()) return "factory " + std::to_string(i) + ": " + problem;
+    const auto existing = offers_.find(factory.type);
+    if (existing != offers_.end()) {
+      return "type '" + std::string(factory.type) + "' is already provided by " +
+             existing->second.library->path;
+    }
+    if (!own_types.insert(factory.type).second) {
+      return "type '" + std::string(factory.type) + "' is offered twice";
+    }
+  }
+  return {};
+}
+
+const PluginRecord& PluginHost::load_library(const std::string& path) {
+  PluginRecord record{path, PluginRecord::State::kRefused, "", "", "", {}};
+  dlerror();  // clear any stale error
+  void* handle = dlopen(path.c_str(), RTLD_NOW | RTLD_LOCAL);
+  if (handle == nullptr) {
+    const char* text = dlerror();
+    record.reason = text != nullptr ? text : "dlopen failed";
+    records_.push_back(std::move(record));
+    return records_.back();
+  }
+  auto library = std::make_shared<Library>();
+  library->handle = handle;
+  library->path = path;
+  void* symbol = dlsym(handle, "antipode_plugin_descriptor");
+  if (symbol == nullptr) {
+    record.reason = "no entry symbol 'antipode_plugin_descriptor' (did the plugin use "
+                    "ANTIPODE_PLUGIN(...)?)";
+    records_.push_back(std::move(record));
+    return records_.back();
+  }
+  const auto entry = reinterpret_cast<antipode_plugin_entry_fn>(symbol);
+  const PluginDescriptor* descriptor = entry();
+  record.reason = descriptor == nullptr ? "entry symbol returned no descriptor"
+                                        : refuse_reason(*descriptor);
+  if (!record.reason.empty()) {
+    records_.push_back(std::move(record));
+    return records_.back();
+  }
+  library->descriptor = descriptor;
+  record.state = PluginRecord::State::kLoaded;
+  record.name = descriptor->name;
+  record.version = descriptor->version;
+  for (std::uint32_t i = 0; i < descriptor->factory_count; ++i) {
+    const PluginFactory& factory = descriptor->factories[i];
+    offers_[factory.type] = Offer{library, &factory};
+    record.offers.push_back(std::string(factory.kind) + " " + factory.type);
+  }
+  records_.push_back(std::move(record));
+  return records_.back();
+}
+
+void PluginHost::register_nodes(bt::NodeRegistry& registry) const {
+  for (const auto& [type, offer] : offers_) {
+    if (offer.factory->register_node == nullptr) continue;
+    register_plugin_node(registry, type, offer.library->path, offer.factory->register_node);
+  }
+}
+
+std::vector<std::string> PluginHost::node_types() const {
+  std::vector<std::string> types;
+  for (const auto& [type, offer] : offers_) {
+    if (offer.factory->register_node != nullptr) types.push_back(type);
+  }
+  return types;
+}
+
+std::vector<std::string> PluginHost::component_types() const {
+  std::vector<std::string> types;
+  for (const auto& [type, offer] : offers_) {
+    if (offer.factory->create != nullptr) types.push_back(type);
+  }
+  return types;
+}
+
+std::optional<ComponentKind> PluginHost::kind_of(const std::string& type) const {
+  const auto it = offers_.find(type);
+  if (it == offers_.end()) return std::nullopt;
+  return parse_component_kind(it->second.factory->kind);
+}
+
+std::shared_ptr<Component> PluginHost::create(const std::string& type,
+                                              const Parameters& params) const {
+  const auto it = offers_.find(type);
+  if (it == offers_.end() || it->second.factory->create == nullptr) {
+    throw Error("unknown component type '" + type + "'" + did_you_mean(type, component_types()),
+                params.location("plugin"), "run 'antipode plugins' to list what is available");
+  }
+  const Offer& offer = it->second;
+  Component* raw = nullptr;
+  try {
+    raw = offer.factory->create(params);
+  } catch (const Error&) {
+    throw;
+  } catch (const std::exception& error) {
+    throw Error(type + ": " + error.what(), params.location("plugin"));
+  }
+  if (raw == nullptr) {
+    throw Error("plugin " + offer.library->path + " returned no object for '" + type + "'");
+  }
+  // The deleter keeps the library loaded for as long as the component lives.
+  std::shared_ptr<Component> component(raw, [library = offer.library](Component* object) {
+    delete object;
+  });
+  const auto declared = parse_component_kind(offer.factory->kind);
+  if (!declared || component->kind() != *declared) {
+    throw Error("plugin " + offer.library->path + ": '" + type + "' is declared as a " +
+                offer.factory->kind + " but creates a " + to_string(component->kind()));
+  }
+  return component;
+}
+
+}  // namespace antipode

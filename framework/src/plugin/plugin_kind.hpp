@@ -1,0 +1,24 @@
+#pragma once
+// Plugin-host internals: factory kinds and checks shared by the host's translation units.
+
+#include <optional>
+#include <string>
+
+#include "antipode/interfaces/component.hpp"
+#include "antipode/plugin/abi.hpp"
+
+namespace antipode {
+
+/// The ComponentKind spelled `kind` ("sampler", ...), or nullopt ("node" or unknown).
+std::optional<ComponentKind> parse_component_kind(const std::string& kind);
+
+/// Why `factory` is malformed, or "" when it is well formed.
+std::string factory_problem(const PluginFactory& factory);
+
+/// Calls a plugin's node registration for node type `type`, checking that it registers
+/// exactly that type and collides with nothing already registered.
+void register_plugin_node(bt::NodeRegistry& registry, const std::string& type,
+                          const std::string& library_path,
+                          void (*register_node)(bt::NodeRegistry&));
+
+}  // namespace antipode

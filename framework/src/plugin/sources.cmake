@@ -1,0 +1,4 @@
+list(APPEND ANTIPODE_SOURCES
+  ${CMAKE_CURRENT_LIST_DIR}/plugin_host.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/plugin_kind.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/register_plugin_node.cpp)

@@ -1,0 +1,16 @@
+#pragma once
+// The pipeline nodes: behaviour-tree leaves that move clouds, hands and grasps through the
+// components of a tree (docs/trees.md, "Pipeline nodes"). One registration function per node.
+
+#include "antipode/bt/node_registry.hpp"
+
+namespace antipode::pipeline {
+
+void register_capture_cloud(bt::NodeRegistry& registry);
+void register_sample_hands(bt::NodeRegistry& registry);
+void register_classify_hands(bt::NodeRegistry& registry);
+void register_select_grasps(bt::NodeRegistry& registry);
+void register_plan_reach(bt::NodeRegistry& registry);
+void register_execute_grasp(bt::NodeRegistry& registry);
+
+}  // namespace antipode::pipeline

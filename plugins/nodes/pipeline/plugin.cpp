@@ -1,0 +1,19 @@
+// The pipeline_nodes plugin: the behaviour-tree nodes that connect components.
+#include "antipode/plugin/abi.hpp"
+#include "nodes.hpp"
+
+namespace {
+using namespace antipode::pipeline;
+
+const antipode::PluginFactory kFactories[] = {
+    {"node", "CaptureCloud", "captures a cloud from a cell", nullptr, &register_capture_cloud},
+    {"node", "SampleHands", "samples hand hypotheses", nullptr, &register_sample_hands},
+    {"node", "ClassifyHands", "scores and labels hands", nullptr, &register_classify_hands},
+    {"node", "SelectGrasps", "ranks grasps", nullptr, &register_select_grasps},
+    {"node", "PlanReach", "plans an arm motion to a grasp", nullptr, &register_plan_reach},
+    {"node", "ExecuteGrasp", "executes a grasp in a cell", nullptr, &register_execute_grasp},
+};
+
+}  // namespace
+
+ANTIPODE_PLUGIN("pipeline_nodes", "0.1.0", kFactories)

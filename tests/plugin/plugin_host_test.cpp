@@ -1,0 +1,206 @@
+#include "antipode/plugin/plugin_host.hpp"
+
+#include <gtest/gtest.h>
+
+#include "antipode/bt/node_registry.hpp"
+#include "antipode/core/error.hpp"
+#include "antipode/interfaces/cell.hpp"
+#include "antipode/interfaces/sampler.hpp"
+
+namespace antipode {
+namespace {
+
+const std::string kGood = std::string(FIXTURE_DIR) + "/good/libantipode_test_fixtures.so";
+const std::string kShadowDir = std::string(FIXTURE_DIR) + "/shadow";
+const std::string kGoodDir = std::string(FIXTURE_DIR) + "/good";
+
+std::string bad(const std::string& name) {
+  return std::string(FIXTURE_DIR) + "/bad/libantipode_" + name + ".so";
+}
+
+bool contains(const std::string& text, const std::string& part) {
+  return text.find(part) != std::string::npos;
+}
+
+Parameters params(const std::string& yaml) {
+  return Parameters(YAML::Load(yaml), "component 'c'", "t.yaml");
+}
+
+TEST(PluginHostTest, LoadsGoodPluginAndDescribesIt) {
+  PluginHost host(std::vector<std::string>{});
+  const PluginRecord& record = host.load_library(kGood);
+  ASSERT_EQ(record.state, PluginRecord::State::kLoaded) << record.reason;
+  EXPECT_EQ(record.name, "test_fixtures");
+  EXPECT_EQ(record.version, "1.2.3");
+  EXPECT_EQ(record.offers.size(), 6u);
+  EXPECT_EQ(host.kind_of("point_sampler"), ComponentKind::kSampler);
+  EXPECT_EQ(host.kind_of("line_cell"), ComponentKind::kCell);
+  EXPECT_EQ(host.kind_of("CountTicks"), std::nullopt);  // a node, not a component
+  EXPECT_EQ(host.kind_of("nothing"), std::nullopt);
+  EXPECT_EQ(host.component_types().size(), 5u);
+  EXPECT_EQ(host.node_types(), std::vector<std::string>{"CountTicks"});
+}
+
+TEST(PluginHostTest, CreatesComponentsWithTheirParameters) {
+  PluginHost host(std::vector<std::string>{});
+  host.load_library(kGood);
+  auto cell = std::dynamic_pointer_cast<Cell>(host.create("line_cell", params("points: 4")));
+  ASSERT_NE(cell, nullptr);
+  EXPECT_EQ(cell->capture({"front"}).size(), 4u);
+  auto sampler = std::dynamic_pointer_cast<Sampler>(host.create("point_sampler", params("")));
+  ASSERT_NE(sampler, nullptr);
+  EXPECT_EQ(sampler->sample(cell->capture({"front"}), RandomStream(1)).hands.size(), 4u);
+}
+
+TEST(PluginHostTest, FactoryErrorsReachTheCallerWithLocation) {
+  PluginHost host(std::vector<std::string>{});
+  host.load_library(kGood);
+  try {
+    host.create("line_cell", params("pionts: 4"));
+    FAIL() << "expected an error";
+  } catch (const Error& error) {
+    EXPECT_STREQ(error.what(),
+                 "t.yaml:1:1: unknown parameter 'pionts' of component 'c' (did you mean "
+                 "'points'?)");
+  }
+  try {
+    host.create("line_cel", params(""));
+    FAIL() << "expected an error";
+  } catch (const Error& error) {
+    EXPECT_TRUE(contains(error.what(), "unknown component type 'line_cel' (did you mean "
+                                       "'line_cell'?)"))
+        << error.what();
+  }
+}
+
+TEST(PluginHostTest, ComponentKeepsItsLibraryLoadedAfterTheHostIsGone) {
+  std::shared_ptr<Component> component;
+  {
+    PluginHost host(std::vector<std::string>{});
+    host.load_library(kGood);
+    component = host.create("line_cell", params("points: 2"));
+  }
+  // Calls into the plugin's code: would crash if the library had been unloaded.
+  EXPECT_EQ(std::static_pointer_cast<Cell>(component)->capture({}).size(), 2u);
+}
+
+TEST(PluginHostTest, MissingFileIsRefusedWithDlerrorText) {
+  PluginHost host(std::vector<std::string>{});
+  const std::string path = "/nonexistent/libantipode_ghost.so";
+  const PluginRecord& record = host.load_library(path);
+  EXPECT_EQ(record.state, PluginRecord::State::kRefused);
+  EXPECT_EQ(record.path, path);
+  EXPECT_TRUE(contains(record.reason, "cannot open shared object file: No such file or "
+                                      "directory"))
+      << record.reason;
+}
+
+TEST(PluginHostTest, NonLibraryFileIsRefused) {
+  PluginHost host(std::vector<std::string>{});
+  const PluginRecord& record = host.load_library(bad("not_elf"));
+  EXPECT_EQ(record.state, PluginRecord::State::kRefused);
+  EXPECT_TRUE(contains(record.reason, bad("not_elf"))) << record.reason;  // dlerror names it
+}
+
+TEST(PluginHostTest, UndefinedSymbolIsRefusedWithDlerrorText) {
+  PluginHost host(std::vector<std::string>{});
+  const PluginRecord& record = host.load_library(bad("undefined_symbol"));
+  EXPECT_EQ(record.state, PluginRecord::State::kRefused);
+  EXPECT_TRUE(contains(record.reason, "undefined symbol: antipode_function_that_does_not_exist"))
+      << record.reason;
+}
+
+TEST(PluginHostTest, MissingEntrySymbolIsRefused) {
+  PluginHost host(std::vector<std::string>{});
+  const PluginRecord& record = host.load_library(bad("no_entry"));
+  EXPECT_EQ(record.state, PluginRecord::State::kRefused);
+  EXPECT_TRUE(contains(record.reason, "no entry symbol 'antipode_plugin_descriptor'"))
+      << record.reason;
+}
+
+TEST(PluginHostTest, WrongAbiMajorIsRefusedNamingBothVersions) {
+  PluginHost host(std::vector<std::string>{});
+  const PluginRecord& record = host.load_library(bad("wrong_abi"));
+  EXPECT_EQ(record.state, PluginRecord::State::kRefused);
+  const std::string expected = "built for plugin ABI " + std::to_string(kAbiMajor + 1) +
+                               ".3, but this antipode provides ABI " +
+                               std::to_string(kAbiMajor) + "." + std::to_string(kAbiMinor);
+  EXPECT_TRUE(contains(record.reason, expected)) << record.reason;
+  EXPECT_EQ(host.kind_of("future_sampler"), std::nullopt);
+}
+
+TEST(PluginHostTest, DuplicateTypeIsRefusedNamingTheFirstLibrary) {
+  PluginHost host(std::vector<std::string>{});
+  host.load_library(kGood);
+  const PluginRecord& record = host.load_library(bad("duplicate"));
+  EXPECT_EQ(record.state, PluginRecord::State::kRefused);
+  EXPECT_EQ(record.reason, "type 'point_sampler' is already provided by " + kGood);
+  // The first library's factory is still the one used.
+  EXPECT_NO_THROW(host.create("point_sampler", params("width_m: 0.04")));
+}
+
+TEST(PluginHostTest, UnknownKindIsRefused) {
+  PluginHost host(std::vector<std::string>{});
+  const PluginRecord& record = host.load_library(bad("bad_kind"));
+  EXPECT_EQ(record.state, PluginRecord::State::kRefused);
+  EXPECT_TRUE(contains(record.reason, "unknown kind 'gripper'")) << record.reason;
+}
+
+TEST(PluginHostTest, ComponentOfTheWrongKindIsAnError) {
+  PluginHost host(std::vector<std::string>{});
+  ASSERT_EQ(host.load_library(bad("wrong_created_kind")).state, PluginRecord::State::kLoaded);
+  try {
+    host.create("liar_classifier", params(""));
+    FAIL() << "expected an error";
+  } catch (const Error& error) {
+    EXPECT_TRUE(contains(error.what(), "is declared as a classifier but creates a sampler"))
+        << error.what();
+  }
+}
+
+TEST(PluginHostTest, EarlierSearchDirectoryShadowsLaterOne) {
+  PluginHost host({kShadowDir, kGoodDir, "/nonexistent-dir"});
+  host.load_search_path();
+  ASSERT_EQ(host.records().size(), 2u);
+  EXPECT_EQ(host.records()[0].state, PluginRecord::State::kLoaded);
+  EXPECT_EQ(host.records()[0].version, "0.0.1");
+  EXPECT_EQ(host.records()[1].state, PluginRecord::State::kShadowed);
+  EXPECT_EQ(host.records()[1].reason, "shadowed by " + host.records()[0].path);
+}
+
+TEST(PluginHostTest, SearchPathStartsWithEnvironmentDirectories) {
+  setenv("ANTIPODE_PLUGIN_PATH", "/a:/b", 1);
+  const auto path = PluginHost::default_search_path();
+  unsetenv("ANTIPODE_PLUGIN_PATH");
+  ASSERT_GE(path.size(), 4u);
+  EXPECT_EQ(path[0], "/a");
+  EXPECT_EQ(path[1], "/b");
+  EXPECT_EQ(path[2], ANTIPODE_TEST_PLUGIN_DIR);
+}
+
+TEST(PluginHostTest, RegistersPluginNodes) {
+  PluginHost host(std::vector<std::string>{});
+  host.load_library(kGood);
+  bt::NodeRegistry registry = bt::builtin_node_registry();
+  host.register_nodes(registry);
+  EXPECT_TRUE(registry.has("CountTicks"));
+}
+
+TEST(PluginHostTest, PluginNodeClashingWithBuiltinIsAnError) {
+  PluginHost host(std::vector<std::string>{});
+  ASSERT_EQ(host.load_library(std::string(FIXTURE_DIR) + "/clash/libantipode_node_clash.so")
+                .state,
+            PluginRecord::State::kLoaded);
+  bt::NodeRegistry registry = bt::builtin_node_registry();
+  try {
+    host.register_nodes(registry);
+    FAIL() << "expected an error";
+  } catch (const Error& error) {
+    EXPECT_TRUE(contains(error.what(), "offers node type 'Sequence', which is already "
+                                       "registered"))
+        << error.what();
+  }
+}
+
+}  // namespace
+}  // namespace antipode
