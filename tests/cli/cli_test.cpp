@@ -1,0 +1,162 @@
+// The `antipode` command as a user meets it: exit codes, one-line errors, plugin listings.
+#include <sys/wait.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+namespace {
+namespace fs = std::filesystem;
+
+struct Result {
+  int exit_code = -1;
+  std::string out;  // stdout and stderr
+};
+
+// Runs the CLI with `arguments` (shell words) and `environment` ("A=b " prefixes).
+Result run(const std::string& arguments, const std::string& environment = "") {
+  const std::string command =
+      environment + " " + std::string(ANTIPODE_CLI) + " " + arguments + " 2>&1";
+  Result result;
+  FILE* pipe = popen(command.c_str(), "r");
+  if (pipe == nullptr) return result;
+  char buffer[4096];
+  while (std::fgets(buffer, sizeof(buffer), pipe) != nullptr) result.out += buffer;
+  const int status = pclose(pipe);
+  result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  return result;
+}
+
+class CliTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = fs::temp_directory_path() /
+           ("antipode_cli_test_" + std::to_string(::getpid()) + "_" +
+            ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    fs::create_directories(dir_);
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+
+  std::string write(const std::string& name, const std::string& text) {
+    const fs::path path = dir_ / name;
+    std::ofstream(path) << text;
+    return path.string();
+  }
+
+  fs::path dir_;
+};
+
+const std::string kGoodPlugins = "ANTIPODE_PLUGIN_PATH=" + std::string(FIXTURE_DIR) + "/good";
+
+TEST_F(CliTest, ValidateReportsMisspeltNodeWithLocationAndSuggestion) {
+  const std::string tree = write("x.yaml",
+                                 "main: t\n"
+                                 "trees:\n"
+                                 "  t:\n"
+                                 "    Sequnce:\n"
+                                 "      - AlwaysSuccess: {}\n");
+  const Result result = run("validate " + tree);
+  EXPECT_EQ(result.exit_code, 2);
+  EXPECT_EQ(result.out, "antipode: error: " + tree +
+                            ":4:5: unknown node 'Sequnce' (did you mean 'Sequence'?)\n");
+}
+
+TEST_F(CliTest, ValidateAcceptsAGoodTree) {
+  const std::string tree = write("ok.yaml", "main: t\ntrees:\n  t:\n    AlwaysSuccess: {}\n");
+  const Result result = run("validate " + tree);
+  EXPECT_EQ(result.exit_code, 0) << result.out;
+  EXPECT_EQ(result.out, tree + ": valid\n");
+}
+
+TEST_F(CliTest, RunUsesAPluginNodeAndReportsSuccess) {
+  const std::string tree = write("count.yaml",
+                                 "main: t\n"
+                                 "trees:\n"
+                                 "  t:\n"
+                                 "    Sequence:\n"
+                                 "      - CountTicks: { count: \"{n}\" }\n"
+                                 "      - Log: { message: \"ticked {n} time(s)\" }\n");
+  const Result result = run("run --quiet " + tree, kGoodPlugins);
+  EXPECT_EQ(result.exit_code, 0) << result.out;
+  EXPECT_NE(result.out.find("ticked 1 time(s)"), std::string::npos) << result.out;
+  EXPECT_NE(result.out.find(": SUCCESS"), std::string::npos) << result.out;
+}
+
+TEST_F(CliTest, FailingTreeExitsWithOne) {
+  const std::string tree = write("fail.yaml", "main: t\ntrees:\n  t:\n    AlwaysFailure: {}\n");
+  const Result result = run("run --quiet " + tree);
+  EXPECT_EQ(result.exit_code, 1) << result.out;
+  EXPECT_NE(result.out.find(": FAILURE"), std::string::npos) << result.out;
+}
+
+TEST_F(CliTest, TraceFileIsJsonLines) {
+  const std::string tree = write("trace.yaml",
+                                 "main: t\ntrees:\n  t:\n    Sequence:\n"
+                                 "      - AlwaysSuccess: {}\n      - AlwaysFailure: {}\n");
+  const std::string trace = (dir_ / "trace.jsonl").string();
+  const Result result = run("run --quiet --trace " + trace + " " + tree);
+  EXPECT_EQ(result.exit_code, 1) << result.out;
+  std::ifstream in(trace);
+  std::vector<nlohmann::json> events;
+  for (std::string line; std::getline(in, line);) {
+    events.push_back(nlohmann::json::parse(line));  // throws on a malformed line
+  }
+  // Both leaves finish at once, then the Sequence fails with the second one.
+  ASSERT_EQ(events.size(), 3u);
+  EXPECT_EQ(events[0]["node"], "AlwaysSuccess");
+  EXPECT_EQ(events[1]["to"], "FAILURE");
+  EXPECT_EQ(events[2]["node"], "Sequence");
+  EXPECT_EQ(events[2]["from"], "IDLE");
+  EXPECT_EQ(events[2]["to"], "FAILURE");
+}
+
+TEST_F(CliTest, MissingTreeFileIsOneLineError) {
+  const Result result = run("run /nonexistent/tree.yaml");
+  EXPECT_EQ(result.exit_code, 2);
+  EXPECT_EQ(std::count(result.out.begin(), result.out.end(), '\n'), 1) << result.out;
+  EXPECT_NE(result.out.find("/nonexistent/tree.yaml"), std::string::npos) << result.out;
+}
+
+TEST_F(CliTest, MalformedSetIsRejected) {
+  const std::string tree = write("ok.yaml", "main: t\ntrees:\n  t:\n    AlwaysSuccess: {}\n");
+  const Result result = run("run " + tree + " --set novalue");
+  EXPECT_EQ(result.exit_code, 2);
+  EXPECT_NE(result.out.find("--set 'novalue' must have the form key=value"), std::string::npos)
+      << result.out;
+}
+
+TEST_F(CliTest, UnknownNodeMentionsRefusedPlugins) {
+  const std::string tree = write("x.yaml", "main: t\ntrees:\n  t:\n    CountTick: {}\n");
+  const Result result =
+      run("validate " + tree, "ANTIPODE_PLUGIN_PATH=" + std::string(FIXTURE_DIR) + "/bad");
+  EXPECT_EQ(result.exit_code, 2);
+  EXPECT_NE(result.out.find("plugin libraries were refused; see 'antipode plugins'"),
+            std::string::npos)
+      << result.out;
+}
+
+TEST_F(CliTest, PluginsListsLoadedAndRefusedLibrariesWithReasons) {
+  const Result result = run("plugins", "ANTIPODE_PLUGIN_PATH=" + std::string(FIXTURE_DIR) +
+                                           "/good:" + std::string(FIXTURE_DIR) + "/bad");
+  EXPECT_EQ(result.exit_code, 0);
+  EXPECT_NE(result.out.find("test_fixtures 1.2.3"), std::string::npos) << result.out;
+  EXPECT_NE(result.out.find("provides node CountTicks"), std::string::npos);
+  EXPECT_NE(result.out.find("but this antipode provides ABI"), std::string::npos);
+  EXPECT_NE(result.out.find("undefined symbol: antipode_function_that_does_not_exist"),
+            std::string::npos);
+  EXPECT_NE(result.out.find("type 'point_sampler' is already provided by"), std::string::npos);
+}
+
+TEST_F(CliTest, VersionAndHelp) {
+  EXPECT_EQ(run("--version").out.rfind("antipode ", 0), 0u);
+  const Result help = run("--help");
+  EXPECT_EQ(help.exit_code, 0);
+  EXPECT_NE(help.out.find("Exit codes"), std::string::npos);
+  EXPECT_EQ(run("frobnicate").exit_code, 2);
+}
+
+}  // namespace
