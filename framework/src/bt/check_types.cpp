@@ -108,8 +108,9 @@ void convert_remap(RemapSpec& remap, const std::string& subtree, EntryClasses& c
   }
   auto value = converters.parse(use->type, remap.literal);
   if (!value) {
-    throw Error(port + " is " + used_as(*use) + ", but got " + describe_yaml(remap.literal),
-                remap.where);
+    const std::string got = remap.literal.IsScalar() ? "'" + remap.literal.Scalar() + "'"
+                                                     : describe_yaml(remap.literal);
+    throw Error(port + " is " + used_as(*use) + ", but got " + got, remap.where);
   }
   remap.value = std::move(*value);
 }
