@@ -6,11 +6,13 @@
 
 namespace antipode::pipeline {
 
+void register_load_cloud(bt::NodeRegistry& registry);
 void register_capture_cloud(bt::NodeRegistry& registry);
 void register_sample_hands(bt::NodeRegistry& registry);
 void register_classify_hands(bt::NodeRegistry& registry);
 void register_select_grasps(bt::NodeRegistry& registry);
 void register_plan_reach(bt::NodeRegistry& registry);
 void register_execute_grasp(bt::NodeRegistry& registry);
+void register_write_grasps(bt::NodeRegistry& registry);
 
 }  // namespace antipode::pipeline

@@ -6,12 +6,14 @@ namespace {
 using namespace antipode::pipeline;
 
 const antipode::PluginFactory kFactories[] = {
+    {"node", "LoadCloud", "reads a PCD or PLY file", nullptr, &register_load_cloud},
     {"node", "CaptureCloud", "captures a cloud from a cell", nullptr, &register_capture_cloud},
     {"node", "SampleHands", "samples hand hypotheses", nullptr, &register_sample_hands},
     {"node", "ClassifyHands", "scores and labels hands", nullptr, &register_classify_hands},
     {"node", "SelectGrasps", "ranks grasps", nullptr, &register_select_grasps},
     {"node", "PlanReach", "plans an arm motion to a grasp", nullptr, &register_plan_reach},
     {"node", "ExecuteGrasp", "executes a grasp in a cell", nullptr, &register_execute_grasp},
+    {"node", "WriteGrasps", "writes hands to JSON", nullptr, &register_write_grasps},
 };
 
 }  // namespace

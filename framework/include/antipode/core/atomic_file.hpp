@@ -1,0 +1,18 @@
+#pragma once
+/// @file
+/// Writing output files all-or-nothing, so that a failed run never leaves a half-written
+/// file behind.
+
+#include <functional>
+#include <string>
+
+namespace antipode {
+
+/// Calls `write(temporary_path)` to produce the file, then renames the temporary file (in the
+/// same directory, so the rename is atomic) to `path`. If `write` throws, or produces no
+/// file, the temporary file is removed, `path` is left as it was, and an antipode::Error
+/// naming `path` is thrown (the original message is kept).
+void write_file_atomically(const std::string& path,
+                           const std::function<void(const std::string& temporary_path)>& write);
+
+}  // namespace antipode

@@ -1,0 +1,111 @@
+// The pipeline nodes (plugins/nodes/pipeline) driving the fixture components through a tree.
+#include <gtest/gtest.h>
+
+#include "antipode/bt/loader.hpp"
+#include "antipode/plugin/plugin_host.hpp"
+
+namespace antipode {
+namespace {
+
+class PipelineNodesTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    host_ = std::make_unique<PluginHost>(
+        std::vector<std::string>{std::string(FIXTURE_DIR) + "/good", ANTIPODE_TEST_PLUGIN_DIR});
+    host_->load_search_path();
+    registry_ = bt::builtin_node_registry();
+    host_->register_nodes(registry_);
+  }
+
+  bt::Tree load(const std::string& yaml) {
+    bt::LoadOptions options;
+    options.registry = &registry_;
+    options.components = host_.get();
+    return bt::load_tree_string(yaml, "pipeline.yaml", options);
+  }
+
+  std::unique_ptr<PluginHost> host_;
+  bt::NodeRegistry registry_;
+};
+
+constexpr const char* kComponents = R"(
+components:
+  cell: { plugin: line_cell, points: 5 }
+  sampler: { plugin: point_sampler }
+  classifier: { plugin: height_classifier }
+  selector: { plugin: best_first }
+  planner: { plugin: still_planner }
+main: pick
+)";
+
+TEST_F(PipelineNodesTest, WholePipelinePicksTheBestGrasp) {
+  bt::Tree tree = load(std::string(kComponents) + R"(
+trees:
+  pick:
+    Sequence:
+      - CaptureCloud: { cell: cell, cloud: "{cloud}" }
+      - SampleHands: { sampler: sampler, cloud: "{cloud}", hands: "{hands}" }
+      - ClassifyHands: { classifier: classifier, hands: "{hands}", classified: "{scored}" }
+      - SelectGrasps: { selector: selector, hands: "{scored}", grasps: "{grasps}", best: "{best}" }
+      - PlanReach: { planner: planner, grasp: "{best}", start_rad: [0, 1], trajectory: "{path}" }
+      - ExecuteGrasp: { cell: cell, grasp: "{best}", trajectory: "{path}", outcome: "{outcome}" }
+)");
+  tree.set_log_sink([](const bt::Node&, const std::string&) {});
+  ASSERT_EQ(tree.tick_while_running(), bt::Status::kSuccess);
+  const auto& board = tree.blackboard();
+  EXPECT_EQ(board.get<CloudPtr>("cloud")->size(), 5u);
+  EXPECT_EQ(board.get<HandSetPtr>("hands")->hands.size(), 5u);
+  // The sampler's set is left untouched; the classifier wrote a new one.
+  EXPECT_EQ(board.get<HandSetPtr>("hands")->hands[4].score, 0.0);
+  const auto grasps = board.get<std::vector<Hand>>("grasps");
+  ASSERT_EQ(grasps.size(), 5u);
+  EXPECT_NEAR(board.get<Hand>("best").position_m().z(), 0.04, 1e-6);  // the highest point
+  EXPECT_EQ(board.get<Trajectory>("path").positions_rad.size(), 2u);
+  EXPECT_EQ(board.get<std::string>("outcome"), "success");
+}
+
+TEST_F(PipelineNodesTest, EmptyCaptureFailsWithReason) {
+  bt::Tree tree = load(R"(
+components:
+  cell: { plugin: line_cell, points: 0 }
+main: t
+trees:
+  t:
+    CaptureCloud: { cell: cell, cloud: "{cloud}" }
+)");
+  EXPECT_EQ(tree.tick_while_running(), bt::Status::kFailure);
+}
+
+TEST_F(PipelineNodesTest, ComponentOfWrongKindIsRejectedAtLoad) {
+  try {
+    load(std::string(kComponents) + R"(
+trees:
+  pick:
+    SampleHands: { sampler: classifier, cloud: "{cloud}", hands: "{hands}" }
+)");
+    FAIL() << "expected an error";
+  } catch (const Error& error) {
+    EXPECT_STREQ(error.what(),
+                 "pipeline.yaml:12:29: component 'classifier' is a classifier, but port "
+                 "'sampler' of SampleHands needs a sampler");
+  }
+}
+
+TEST_F(PipelineNodesTest, LoadCloudReportsAMissingFile) {
+  bt::Tree tree = load(R"(
+main: t
+trees:
+  t:
+    LoadCloud: { file: /nonexistent/cloud.pcd, cloud: "{cloud}" }
+)");
+  try {
+    tree.tick_while_running();
+    FAIL() << "expected an error";
+  } catch (const Error& error) {
+    EXPECT_NE(std::string(error.what()).find("/nonexistent/cloud.pcd"), std::string::npos)
+        << error.what();
+  }
+}
+
+}  // namespace
+}  // namespace antipode
