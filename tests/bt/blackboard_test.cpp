@@ -214,6 +214,20 @@ TEST_F(EntryTest, ErrorsThrownByATickAreLocatedAtTheNode) {
     EXPECT_STREQ(error.what(), "trees/t.yaml:4:31: Thrower: no finite point");
   }
   EXPECT_EQ(tree.root().status(), Status::kIdle);
+  // Nodes left RUNNING by the failed tick are halted.
+  Tree parallel = load(R"(
+main: t
+trees:
+  t:
+    Sequence:
+      - Parallel:
+          - Scripted: { id: a, script: [RUNNING] }
+          - Thrower
+)");
+  EXPECT_THROW(parallel.tick_once(), Error);
+  EXPECT_EQ(probes()["a"].halts, 1);
+  parallel.visit(
+      [](const Node& node, int) { EXPECT_EQ(node.status(), Status::kIdle) << node.path(); });
 }
 
 }  // namespace

@@ -31,25 +31,48 @@ Node::Node(const NodeConfig& config) : config_(config) {}
 Node::~Node() = default;
 
 Status Node::execute_tick() {
-  if (status_ != Status::kRunning) {
+  const Status previous = status_;
+  if (previous != Status::kRunning) {
     ++run_count_;
     failure_reason_.clear();
   }
   Status result = Status::kIdle;
   try {
     result = tick();
+    if (result == Status::kIdle) throw Error(describe() + " returned IDLE from its tick", where());
+    if (result == Status::kRunning && !may_return_running()) {
+      throw Error(describe() + " is synchronous but returned RUNNING", where());
+    }
+  } catch (...) {
+    abandon(previous);
+    rethrow_located();
+  }
+  set_status(result);
+  return result;
+}
+
+void Node::abandon(Status previous) noexcept {
+  try {
+    if (previous == Status::kRunning || !children_.empty()) halt();
+  } catch (...) {
+    // The error being propagated matters more than one from halting.
+  }
+  try {
+    set_status(Status::kIdle);
+  } catch (...) {
+    // An observer failing here must not replace the error being propagated.
+  }
+}
+
+void Node::rethrow_located() const {
+  try {
+    throw;
   } catch (const Error& error) {
     if (error.where().known()) throw;
     throw Error(describe() + ": " + error.message(), where(), error.hint());
   } catch (const std::exception& error) {
     throw Error(describe() + ": " + error.what(), where());
   }
-  if (result == Status::kIdle) throw Error(describe() + " returned IDLE from its tick", where());
-  if (result == Status::kRunning && !may_return_running()) {
-    throw Error(describe() + " is synchronous but returned RUNNING", where());
-  }
-  set_status(result);
-  return result;
 }
 
 void Node::halt_node() {

@@ -80,8 +80,9 @@ class Node {
   Node& operator=(const Node&) = delete;
 
   /// Ticks the node: calls tick(), records the status and reports a change to the tree's
-  /// observers. An antipode::Error without a location, or any other exception, thrown by
-  /// tick() is rethrown as an Error located at this node.
+  /// observers. An antipode::Error without a location, or any other std::exception, thrown
+  /// by tick() is rethrown as an Error located at this node, after halting what the tick
+  /// may have left RUNNING (the node is then IDLE).
   Status execute_tick();
 
   /// Calls halt() if the node is RUNNING, then resets it to IDLE.
@@ -190,6 +191,10 @@ class Node {
   void write_output(const std::string& port, std::any value);
   Component& component_base(const std::string& port, ComponentKind kind) const;
   void set_status(Status status);
+  // After tick() threw: halts whatever the tick may have left RUNNING, resets to IDLE.
+  void abandon(Status previous) noexcept;
+  // Rethrows the current exception as an Error located at this node (unless it has a place).
+  [[noreturn]] void rethrow_located() const;
 
   NodeConfig config_;
   Status status_ = Status::kIdle;
