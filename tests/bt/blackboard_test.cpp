@@ -60,6 +60,9 @@ TEST(BlackboardTest, TextEntriesConvertToTheRequestedType) {
   board.set<std::string>("m", "5");  // text written to an int entry is converted
   EXPECT_EQ(board.get_ref<int>("m"), 5);
   EXPECT_THROW(board.set<std::string>("m", "five"), Error);
+  board.set("n", 7);  // a typed write replaces text
+  EXPECT_EQ(board.type_of("n"), std::type_index(typeid(int)));
+  EXPECT_EQ(board.get<int>("n"), 7);
 }
 
 TEST(BlackboardTest, LargeValuesAreMovedInAndReadWithoutCopies) {

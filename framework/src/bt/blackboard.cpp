@@ -57,6 +57,10 @@ void Blackboard::set_any(const std::string& key, std::any value) {
     found->second = std::move(*converted);
     return;
   }
+  if (held == kStringType) {  // a text entry takes the type of the first typed write
+    found->second = std::move(value);
+    return;
+  }
   throw Error(entry(key) + " holds " + type_name(held) + "; cannot store " + type_name(incoming) +
               " in it");
 }

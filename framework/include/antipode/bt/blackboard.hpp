@@ -3,10 +3,11 @@
 /// The blackboard: typed entries shared by the nodes of one tree.
 ///
 /// Each entry holds one value (std::any) whose type is fixed by its first write; writing or
-/// reading it as another type throws antipode::Error. One exception keeps text useful: an
-/// entry holding a std::string (a `--set key=value`, a SetBlackboard literal) may be read as
-/// any type the converter table parses, and text written into an entry of another parseable
-/// type is converted to that type.
+/// reading it as another type throws antipode::Error. Text is the exception: an entry
+/// holding a std::string (a `--set key=value`, a SetBlackboard literal) may be read as any
+/// type the converter table parses and is replaced by the first value of another type
+/// written to it, and text written into an entry of another parseable type is converted to
+/// that type.
 ///
 /// Every tree instance (the main tree, each SubTree node) has its own blackboard. A subtree's
 /// blackboard sees its parent's entries only through explicit remapping: remap(key, parent,
