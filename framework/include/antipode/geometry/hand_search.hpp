@@ -1,0 +1,117 @@
+#pragma once
+/// @file
+/// The hand search of the paper (Algorithms 2 and 3): sample points of a preprocessed cloud,
+/// estimate each one's Darboux frame, and search a grid of hand poses around it for hands
+/// that do not collide with the cloud and hold part of it between their fingers.
+///
+/// The algorithm, its parameters and its rejection reasons are described in
+/// docs/sampling.md; the pose convention in docs/pose-convention.md.
+
+#include <cstddef>
+#include <cstdint>
+#include <optional>
+#include <vector>
+
+#include "antipode/core/cloud.hpp"
+#include "antipode/core/hand.hpp"
+#include "antipode/core/hand_geometry.hpp"
+#include "antipode/core/random.hpp"
+#include "antipode/geometry/axis_box.hpp"
+#include "antipode/geometry/local_frame.hpp"
+
+namespace antipode {
+
+struct HandSearchParameters {
+  HandGeometry hand;
+  /// Points sampled from the cloud (from those in `sample_region`), without replacement; all
+  /// of them when there are fewer.
+  std::size_t samples = 4000;
+  /// Where samples are drawn from; unset: anywhere. The whole cloud still counts for
+  /// collisions, so a region around the objects avoids hands on the artificial edges a
+  /// workspace crop leaves (e.g. at a table's cut border) without hiding obstacles.
+  std::optional<AxisBox> sample_region;
+  /// Radius of the ball the Darboux frame is fitted to (the paper's 3 cm).
+  double frame_radius_m = 0.03;
+  LocalFrameOptions frame;
+  /// Hand orientations about the curvature axis, evenly spaced over [-90, 90) degrees from
+  /// approaching against the surface normal.
+  int orientations = 8;
+  /// Hand positions along the closing direction, evenly spaced so that the sample lies
+  /// between the fingers in all of them.
+  int positions = 20;
+  /// Thickness of the palm box behind the palm face (HandGeometry has no such field).
+  double palm_thickness_m = 0.01;
+  /// How far the object must reach between the fingers (from the fingertips towards the
+  /// palm) once the hand has been pushed forward until contact. An object wider than the
+  /// aperture stops the fingertips early and reaches less far in: with the default, half
+  /// the finger depth, cylinders wider than about 7.3 cm give no hand for a 7.2 cm aperture.
+  double min_bite_m = 0.03;
+  /// How far the hand backs off from the contact that stopped it.
+  double clearance_m = 0.001;
+  /// A hand must approach from within this angle of the direction towards a sensor that saw
+  /// its sample (the side of the surface that was observed). 180 disables the check.
+  double max_view_angle_deg = 90.0;
+  /// Reject a hand when a part of a finger lies in space the sensors could not see: more than
+  /// `occlusion_margin_m` behind an observed surface in every view (see occlusion.hpp). A
+  /// single view shows only the front of an object; a finger placed behind it would meet
+  /// the unseen back (a 10 cm cylinder seen from the front "fits" a 7 cm hand approaching
+  /// from the side). Tested at three points along each finger's middle.
+  bool reject_hidden_fingers = true;
+  double occlusion_margin_m = 0.01;
+  /// Radius of the surface patch a cloud point stands for in the occlusion test (about the
+  /// voxel size).
+  double point_radius_m = 0.0025;
+  /// false: per sample and orientation, keep one hand, the middle position of the longest
+  /// run of consecutive acceptable positions (the hand best centred on the object);
+  /// true: keep every acceptable position.
+  bool keep_all_positions = false;
+  /// Worker threads (0: as many as the hardware has). Results do not depend on it.
+  int threads = 0;
+
+  /// Throws antipode::Error naming the first invalid field (including the hand geometry).
+  void validate() const;
+};
+
+/// What happened to the samples and hand poses of one search (for "why no hand?").
+struct HandSearchStats {
+  std::size_t samples = 0;              ///< points sampled
+  std::size_t frames_quadric = 0;       ///< samples with a Taubin-quadric frame
+  std::size_t frames_planar = 0;        ///< samples with a principal-component frame
+  std::size_t skipped_too_few = 0;      ///< samples skipped: too few neighbours
+  std::size_t skipped_collinear = 0;    ///< samples skipped: neighbours along a line
+  std::size_t orientations_unseen = 0;  ///< orientations approaching from the unobserved side
+  std::size_t poses = 0;                ///< hand poses searched (orientation x position)
+  std::size_t in_collision = 0;         ///< poses colliding before they could move forward
+  std::size_t empty = 0;                ///< poses with nothing between the fingers
+  std::size_t too_shallow = 0;          ///< poses where the object reaches less than min_bite
+  std::size_t hidden = 0;               ///< poses with a finger in space no sensor saw
+  std::size_t acceptable = 0;           ///< poses meeting every condition
+  std::size_t hands = 0;                ///< hands returned
+
+  HandSearchStats& operator+=(const HandSearchStats& other);
+};
+
+struct HandSearchResult {
+  /// In sample order, then orientation, then position. Each hand has: X_FrameHand, frame =
+  /// the cloud's frame, sample_index = the index in the cloud of the point that produced it,
+  /// closing_points = indices of the cloud's points in its closing region (never empty),
+  /// width_m = their extent along the closing direction, score = how far the object
+  /// reaches between the fingers (metres), label kUnknown, rejection kNone.
+  std::vector<Hand> hands;
+  /// Index in the cloud of each sampled point, in sample order.
+  std::vector<std::int32_t> sample_points;
+  HandSearchStats stats;
+};
+
+/// Runs the hand search on `cloud`, which should already be preprocessed (finite points,
+/// workspace, voxels: see preprocess.hpp). Normals are oriented towards the views in each
+/// point's view mask; a cloud without view masks or origins is taken as seen from the
+/// first view origin, or from (0, 0, 0) when it has none.
+///
+/// Deterministic: the result depends on the cloud, the parameters (not `threads`) and
+/// `random`'s seed only. Throws antipode::Error for invalid parameters, an empty cloud or a
+/// sample region without points.
+HandSearchResult search_hands(const Cloud& cloud, const HandSearchParameters& parameters,
+                              const RandomStream& random);
+
+}  // namespace antipode

@@ -1,0 +1,124 @@
+// Algorithm 2 (Sample_Hands) over a preprocessed cloud, parallel over samples.
+#include "antipode/geometry/hand_search.hpp"
+
+#include <tbb/blocked_range.h>
+#include <tbb/enumerable_thread_specific.h>
+#include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
+
+#include "antipode/core/error.hpp"
+#include "antipode/geometry/occlusion.hpp"
+#include "antipode/geometry/point_index.hpp"
+#include "grid_search.hpp"
+#include "sample_choice.hpp"
+
+namespace antipode {
+namespace {
+
+// Stream index of the sample choice; per-sample work uses random.derive(1 + sample).
+constexpr std::uint64_t kSampleChoiceStream = 0;
+
+struct SampleOutput {
+  std::vector<Hand> hands;
+  HandSearchStats stats;
+};
+
+// Steps 4-8 of Algorithm 2 for one sampled point.
+struct SearchContext {
+  const Cloud& cloud;
+  const PointIndex& index;
+  const HandSearchParameters& parameters;
+  const geometry::GridSpec& spec;
+  const OcclusionMap* occlusion;
+};
+
+void search_sample(const SearchContext& search, std::int32_t sample, geometry::GridScratch& scratch,
+                   SampleOutput& out) {
+  const Cloud& cloud = search.cloud;
+  const HandSearchParameters& p = search.parameters;
+  out.stats.samples = 1;
+  const Eigen::Vector3f& point = cloud.points_m[static_cast<std::size_t>(sample)];
+  search.index.radius_search(point, static_cast<float>(p.frame_radius_m), scratch.frame_neighbours);
+  const Eigen::Vector3f viewer = geometry::toward_viewer(cloud, static_cast<std::size_t>(sample));
+  const LocalFrame frame =
+      estimate_local_frame(cloud.points_m, scratch.frame_neighbours, point, viewer, p.frame);
+  switch (frame.status) {
+    case FrameStatus::kTooFewPoints:
+      ++out.stats.skipped_too_few;
+      return;
+    case FrameStatus::kCollinear:
+      ++out.stats.skipped_collinear;
+      return;
+    case FrameStatus::kQuadric:
+      ++out.stats.frames_quadric;
+      break;
+    case FrameStatus::kPlanar:
+      ++out.stats.frames_planar;
+      break;
+  }
+  search.index.radius_search(point, search.spec.reach_m, scratch.hand_neighbours);
+  const geometry::SampleContext context{cloud, frame, sample, viewer, search.occlusion};
+  geometry::grid_search(context, search.spec, scratch, out.hands, out.stats);
+}
+
+// Indices of the points samples may be drawn from.
+std::vector<std::int32_t> candidates(const Cloud& cloud, const std::optional<AxisBox>& region) {
+  std::vector<std::int32_t> indices;
+  indices.reserve(cloud.size());
+  for (std::size_t i = 0; i < cloud.size(); ++i) {
+    if (!region || region->contains(cloud.points_m[i])) {
+      indices.push_back(static_cast<std::int32_t>(i));
+    }
+  }
+  if (indices.empty()) throw Error("hand search: no point of the cloud lies in the sample region");
+  return indices;
+}
+
+HandSearchResult concatenate(std::vector<SampleOutput>& outputs,
+                             std::vector<std::int32_t> samples) {
+  HandSearchResult result;
+  result.sample_points = std::move(samples);
+  std::size_t total = 0;
+  for (const auto& out : outputs) total += out.hands.size();
+  result.hands.reserve(total);
+  for (auto& out : outputs) {
+    std::move(out.hands.begin(), out.hands.end(), std::back_inserter(result.hands));
+    result.stats += out.stats;
+  }
+  return result;
+}
+
+}  // namespace
+
+HandSearchResult search_hands(const Cloud& cloud, const HandSearchParameters& parameters,
+                              const RandomStream& random) {
+  parameters.validate();
+  if (cloud.empty()) throw Error("hand search: the cloud has no points");
+  cloud.validate();
+  const geometry::GridSpec spec(parameters);
+  const PointIndex index(cloud.points_m);
+  std::unique_ptr<OcclusionMap> occlusion;
+  if (parameters.reject_hidden_fingers) {
+    occlusion =
+        std::make_unique<OcclusionMap>(cloud, static_cast<float>(parameters.point_radius_m));
+  }
+  const SearchContext search{cloud, index, parameters, spec, occlusion.get()};
+  std::vector<std::int32_t> samples =
+      geometry::choose_samples(candidates(cloud, parameters.sample_region), parameters.samples,
+                               random.derive(kSampleChoiceStream));
+  std::vector<SampleOutput> outputs(samples.size());
+  tbb::enumerable_thread_specific<geometry::GridScratch> scratch;
+  tbb::task_arena arena(parameters.threads > 0 ? parameters.threads : tbb::task_arena::automatic);
+  arena.execute([&] {
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, samples.size(), 8),
+                      [&](const tbb::blocked_range<std::size_t>& range) {
+                        geometry::GridScratch& local = scratch.local();
+                        for (std::size_t i = range.begin(); i != range.end(); ++i) {
+                          search_sample(search, samples[i], local, outputs[i]);
+                        }
+                      });
+  });
+  return concatenate(outputs, std::move(samples));
+}
+
+}  // namespace antipode

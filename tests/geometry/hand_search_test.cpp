@@ -1,0 +1,182 @@
+// The hand search on synthetic single-view clouds (a sensor at the origin, objects 60 cm
+// away along z).
+#include "antipode/geometry/hand_search.hpp"
+
+#include <cmath>
+
+#include <gtest/gtest.h>
+
+#include "antipode/core/error.hpp"
+#include "antipode/geometry/preprocess.hpp"
+#include "hand_checks.hpp"
+#include "synthetic_shapes.hpp"
+
+namespace antipode {
+namespace {
+
+using testing::ShapeOptions;
+
+const Eigen::Vector3d kCentre(0.02, -0.01, 0.6);
+const Eigen::Vector3d kAxis = Eigen::Vector3d(0.2, 1.0, 0.1).normalized();
+
+HandSearchParameters small_search() {
+  HandSearchParameters parameters;
+  parameters.samples = 400;
+  parameters.threads = 2;
+  return parameters;
+}
+
+struct Search {
+  Cloud cloud;
+  HandSearchResult result;
+};
+
+Search search(const Cloud& raw, const HandSearchParameters& parameters, std::uint64_t seed = 7) {
+  Search s;
+  s.cloud = preprocess(raw, PreprocessOptions{});
+  s.result = search_hands(s.cloud, parameters, RandomStream(seed));
+  testing::expect_valid_hands(s.cloud, s.result, parameters);
+  return s;
+}
+
+ShapeOptions with_noise(double noise) {
+  ShapeOptions options;
+  options.noise_m = noise;
+  return options;
+}
+
+class NoiseTest : public ::testing::TestWithParam<double> {};
+
+TEST_P(NoiseTest, NarrowCylindersGiveHandsClosingAcrossThem) {
+  for (const double diameter : {0.04, 0.06}) {
+    SCOPED_TRACE(diameter);
+    const Search s =
+        search(testing::cylinder_cloud(kCentre, kAxis, diameter, 0.15, with_noise(GetParam())),
+               small_search());
+    ASSERT_GE(s.result.hands.size(), 40u);
+    std::size_t across = 0;
+    for (const Hand& hand : s.result.hands) {
+      if (std::abs(hand.closing().dot(kAxis)) < 0.2 && std::abs(hand.axis().dot(kAxis)) > 0.95) {
+        ++across;
+      }
+    }
+    EXPECT_GE(across, s.result.hands.size() * 8 / 10);
+  }
+}
+
+TEST_P(NoiseTest, BoxAndSphereGiveHands) {
+  const Eigen::Matrix3d rotation =
+      Eigen::AngleAxisd(0.5, Eigen::Vector3d(0.3, 1.0, 0.2).normalized()).toRotationMatrix();
+  const Search box = search(testing::box_cloud(kCentre, rotation, Eigen::Vector3d(0.05, 0.12, 0.06),
+                                               with_noise(GetParam())),
+                            small_search());
+  EXPECT_GE(box.result.hands.size(), 40u);
+  const Search sphere =
+      search(testing::sphere_cloud(kCentre, 0.06, with_noise(GetParam())), small_search());
+  EXPECT_GE(sphere.result.hands.size(), 40u);
+}
+
+TEST_P(NoiseTest, WideCylinderGivesNoHand) {
+  const Search s = search(
+      testing::cylinder_cloud(kCentre, kAxis, 0.10, 0.15, with_noise(GetParam())), small_search());
+  EXPECT_EQ(s.result.hands.size(), 0u);
+  EXPECT_GT(s.result.stats.too_shallow + s.result.stats.hidden, 0u);
+}
+
+TEST_P(NoiseTest, InsideOfAPlaneGivesNoHand) {
+  const Eigen::Vector3d normal = Eigen::Vector3d(0.0, -0.3, -1.0).normalized();
+  HandSearchParameters parameters = small_search();
+  parameters.sample_region =
+      AxisBox{Eigen::Vector3f(-0.15f, -0.15f, 0.0f), Eigen::Vector3f(0.15f, 0.15f, 2.0f)};
+  const Search s =
+      search(testing::plane_cloud(kCentre, normal, 0.6, with_noise(GetParam())), parameters);
+  EXPECT_EQ(s.result.hands.size(), 0u);
+  EXPECT_EQ(s.result.stats.samples, 400u);
+}
+
+INSTANTIATE_TEST_SUITE_P(WithAndWithoutNoise, NoiseTest, ::testing::Values(0.0, 0.001));
+
+TEST(HandSearchTest, CylinderStandingOnATableGivesHandsOnTheCylinderOnly) {
+  // A table seen from above at 45 degrees, a 5 cm can standing on it.
+  const Eigen::Vector3d up = Eigen::Vector3d(0.0, -1.0, -1.0).normalized();
+  const Eigen::Vector3d on_table(0.0, 0.0, 0.7);
+  Cloud cloud = testing::plane_cloud(on_table, up, 0.5);
+  testing::append(cloud, testing::cylinder_cloud(on_table + 0.06 * up, up, 0.05, 0.12));
+  HandSearchParameters parameters = small_search();
+  parameters.samples = 1000;
+  // Samples away from the table's border: a plate's edge can be grasped.
+  parameters.sample_region =
+      AxisBox{Eigen::Vector3f(-0.1f, -0.1f, 0.5f), Eigen::Vector3f(0.1f, 0.1f, 0.9f)};
+  const Search s = search(cloud, parameters);
+  ASSERT_GE(s.result.hands.size(), 20u);
+  for (const Hand& hand : s.result.hands) {
+    const Eigen::Vector3d sample = s.cloud.points_m[hand.sample_index].cast<double>();
+    EXPECT_GT((sample - on_table).dot(up), 0.005)
+        << "a hand on the table: sample " << sample.transpose() << " approach.up "
+        << hand.approach().dot(up) << " closing.up " << hand.closing().dot(up) << " width "
+        << hand.width_m << " bite " << hand.score << " from the can's axis "
+        << ((sample - on_table) - (sample - on_table).dot(up) * up).norm();
+  }
+}
+
+TEST(HandSearchTest, ResultDoesNotDependOnThreadCount) {
+  const Cloud cloud = preprocess(
+      testing::cylinder_cloud(kCentre, kAxis, 0.05, 0.15, with_noise(0.001)), PreprocessOptions{});
+  HandSearchParameters parameters = small_search();
+  parameters.threads = 1;
+  const HandSearchResult one = search_hands(cloud, parameters, RandomStream(11));
+  parameters.threads = 2;
+  const HandSearchResult two = search_hands(cloud, parameters, RandomStream(11));
+  ASSERT_GT(one.hands.size(), 0u);
+  EXPECT_TRUE(testing::same_hands(one, two));
+  const HandSearchResult other_seed = search_hands(cloud, parameters, RandomStream(12));
+  EXPECT_NE(one.sample_points, other_seed.sample_points);
+}
+
+TEST(HandSearchTest, SamplesAreDistinctAndCappedByTheCloud) {
+  const Cloud cloud = preprocess(testing::sphere_cloud(kCentre, 0.06), PreprocessOptions{});
+  HandSearchParameters parameters = small_search();
+  parameters.samples = 100;
+  HandSearchResult result = search_hands(cloud, parameters, RandomStream(1));
+  std::vector<std::int32_t> sorted = result.sample_points;
+  std::sort(sorted.begin(), sorted.end());
+  EXPECT_EQ(std::unique(sorted.begin(), sorted.end()), sorted.end());
+  EXPECT_EQ(sorted.size(), 100u);
+  parameters.samples = cloud.size() + 10;
+  result = search_hands(cloud, parameters, RandomStream(1));
+  EXPECT_EQ(result.sample_points.size(), cloud.size());
+}
+
+TEST(HandSearchTest, KeepingAllPositionsGivesMoreHands) {
+  const Cloud cloud =
+      preprocess(testing::cylinder_cloud(kCentre, kAxis, 0.04, 0.15), PreprocessOptions{});
+  HandSearchParameters parameters = small_search();
+  const std::size_t one_per_orientation =
+      search_hands(cloud, parameters, RandomStream(3)).hands.size();
+  parameters.keep_all_positions = true;
+  const HandSearchResult all = search_hands(cloud, parameters, RandomStream(3));
+  testing::expect_valid_hands(cloud, all, parameters);
+  EXPECT_GT(all.hands.size(), 2 * one_per_orientation);
+}
+
+TEST(HandSearchTest, InvalidInputIsAnError) {
+  const Cloud cloud = preprocess(testing::sphere_cloud(kCentre, 0.06), PreprocessOptions{});
+  HandSearchParameters parameters;
+  parameters.orientations = 0;
+  EXPECT_THROW(search_hands(cloud, parameters, RandomStream(1)), Error);
+  parameters = HandSearchParameters{};
+  parameters.hand.min_aperture_m = 0.1;
+  EXPECT_THROW(search_hands(cloud, parameters, RandomStream(1)), Error);
+  parameters = HandSearchParameters{};
+  parameters.sample_region = AxisBox{Eigen::Vector3f(5, 5, 5), Eigen::Vector3f(6, 6, 6)};
+  try {
+    search_hands(cloud, parameters, RandomStream(1));
+    FAIL();
+  } catch (const Error& error) {
+    EXPECT_STREQ(error.what(), "hand search: no point of the cloud lies in the sample region");
+  }
+  EXPECT_THROW(search_hands(Cloud{}, HandSearchParameters{}, RandomStream(1)), Error);
+}
+
+}  // namespace
+}  // namespace antipode
