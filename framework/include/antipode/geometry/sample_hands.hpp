@@ -1,0 +1,31 @@
+#pragma once
+/// @file
+/// The whole sampling stage of the paper (Algorithm 2) as one call: preprocess a raw cloud,
+/// then search it for hands. The antipodal_sampler plugin is a thin wrapper around it.
+
+#include <Eigen/Core>
+
+#include "antipode/core/cloud.hpp"
+#include "antipode/core/random.hpp"
+#include "antipode/geometry/hand_search.hpp"
+#include "antipode/geometry/preprocess.hpp"
+#include "antipode/interfaces/hand_set.hpp"
+
+namespace antipode {
+
+struct HandSamplingOptions {
+  PreprocessOptions preprocess;
+  HandSearchParameters search;
+  /// The sensor origin assumed for a cloud that has no view origins (view 0 for every
+  /// point), e.g. a cloud in a depth sensor's own frame.
+  Eigen::Vector3f default_view_origin_m = Eigen::Vector3f::Zero();
+};
+
+/// preprocess() then search_hands(). The returned set's cloud is the preprocessed cloud the
+/// hands' closing_points and sample_index refer to; every hand's frame is its frame.
+/// `stats`, when given, receives the search's counts. Throws antipode::Error for unusable
+/// input (see preprocess() and search_hands()) or an invalid cloud (Cloud::validate).
+HandSet sample_hands(const Cloud& cloud, const HandSamplingOptions& options,
+                     const RandomStream& random, HandSearchStats* stats = nullptr);
+
+}  // namespace antipode

@@ -1,0 +1,119 @@
+#include "sampler_settings.hpp"
+
+#include <cmath>
+#include <vector>
+
+namespace antipode::samplers {
+namespace {
+
+Eigen::Vector3f vector3(const Parameters& params, const std::string& key,
+                        const Eigen::Vector3f& fallback) {
+  if (!params.has(key)) {
+    params.get<std::vector<double>>(key, {});  // marks the key as known
+    return fallback;
+  }
+  const auto values = params.get<std::vector<double>>(key, {});
+  if (values.size() != 3) params.fail(key, "parameter '" + key + "' must be a list [x, y, z]");
+  for (const double v : values) {
+    if (!std::isfinite(v)) params.fail(key, "parameter '" + key + "' must be finite");
+  }
+  return Eigen::Vector3d(values[0], values[1], values[2]).cast<float>();
+}
+
+std::optional<AxisBox> box(const Parameters& params, const std::string& key) {
+  const Parameters child = params.child(key);
+  if (!params.has(key)) return std::nullopt;
+  for (const char* corner : {"min", "max"}) {
+    if (!child.has(corner)) params.fail(key, "parameter '" + key + "' needs min and max");
+  }
+  AxisBox result{vector3(child, "min", Eigen::Vector3f::Zero()),
+                 vector3(child, "max", Eigen::Vector3f::Zero())};
+  child.reject_unknown();
+  for (int axis = 0; axis < 3; ++axis) {
+    if (result.min_m[axis] > result.max_m[axis]) {
+      params.fail(key,
+                  "parameter '" + key + "': min " + "xyz"[axis] + " is above max " + "xyz"[axis]);
+    }
+  }
+  return result;
+}
+
+// A number with a lower bound (inclusive or not).
+double number(const Parameters& params, const std::string& key, double fallback, double lower,
+              bool inclusive) {
+  const double value = params.get<double>(key, fallback);
+  if (!std::isfinite(value) || value < lower || (!inclusive && value == lower)) {
+    params.fail(key, "parameter '" + key + "' must be " + (inclusive ? ">= " : "> ") +
+                         std::to_string(lower) + ", got " + std::to_string(value));
+  }
+  return value;
+}
+
+int integer(const Parameters& params, const std::string& key, int fallback, int lower) {
+  const int value = params.get<int>(key, fallback);
+  if (value < lower) {
+    params.fail(key, "parameter '" + key + "' must be at least " + std::to_string(lower) +
+                         ", got " + std::to_string(value));
+  }
+  return value;
+}
+
+HandGeometry hand_geometry(const Parameters& params) {
+  const Parameters p = params.child("hand");
+  HandGeometry h;
+  h.finger_width_m = number(p, "finger_width_m", h.finger_width_m, 0.0, false);
+  h.outer_diameter_m = number(p, "outer_diameter_m", h.outer_diameter_m, 0.0, false);
+  h.depth_m = number(p, "depth_m", h.depth_m, 0.0, false);
+  h.height_m = number(p, "height_m", h.height_m, 0.0, false);
+  h.init_bite_m = number(p, "init_bite_m", h.init_bite_m, 0.0, false);
+  h.min_aperture_m = number(p, "min_aperture_m", h.min_aperture_m, 0.0, false);
+  h.max_aperture_m = number(p, "max_aperture_m", h.max_aperture_m, 0.0, false);
+  p.reject_unknown();
+  try {
+    h.validate();
+  } catch (const Error& error) {
+    params.fail("hand", error.message());
+  }
+  return h;
+}
+
+HandSearchParameters search_parameters(const Parameters& params) {
+  HandSearchParameters s;
+  s.hand = hand_geometry(params);
+  s.samples = static_cast<std::size_t>(integer(params, "samples", 4000, 1));
+  s.frame_radius_m = number(params, "neighbourhood_radius_m", s.frame_radius_m, 0.0, false);
+  s.frame.min_points = static_cast<std::size_t>(integer(params, "min_neighbours", 10, 9));
+  s.orientations = integer(params, "orientations", s.orientations, 1);
+  s.positions = integer(params, "positions", s.positions, 1);
+  s.palm_thickness_m = number(params, "palm_thickness_m", s.palm_thickness_m, 0.0, true);
+  s.min_bite_m = number(params, "min_bite_m", s.min_bite_m, 0.0, true);
+  s.clearance_m = number(params, "clearance_m", s.clearance_m, 0.0, true);
+  s.max_view_angle_deg = number(params, "max_view_angle_deg", s.max_view_angle_deg, 0.0, false);
+  s.reject_hidden_fingers = params.get<bool>("reject_hidden_fingers", s.reject_hidden_fingers);
+  s.occlusion_margin_m = number(params, "occlusion_margin_m", s.occlusion_margin_m, 0.0, true);
+  s.point_radius_m = number(params, "point_radius_m", s.point_radius_m, 0.0, false);
+  s.keep_all_positions = params.get<bool>("keep_all_positions", s.keep_all_positions);
+  s.threads = integer(params, "threads", 0, 0);
+  s.sample_region = box(params, "sample_region");
+  return s;
+}
+
+}  // namespace
+
+HandSamplingOptions read_sampler_settings(const Parameters& params) {
+  HandSamplingOptions options;
+  options.preprocess.voxel_size_m = static_cast<float>(
+      number(params, "voxel_size_m", options.preprocess.voxel_size_m, 0.0, true));
+  options.preprocess.workspace = box(params, "workspace");
+  options.search = search_parameters(params);
+  options.default_view_origin_m = vector3(params, "view_origin", Eigen::Vector3f::Zero());
+  params.reject_unknown();
+  try {
+    options.search.validate();
+  } catch (const Error& error) {
+    params.fail("", error.message());
+  }
+  return options;
+}
+
+}  // namespace antipode::samplers

@@ -1,0 +1,146 @@
+#include <gtest/gtest.h>
+
+#include "antipode/core/error.hpp"
+#include "antipode/geometry/sample_hands.hpp"
+#include "antipode/interfaces/sampler.hpp"
+#include "antipode/plugin/plugin_host.hpp"
+#include "synthetic_shapes.hpp"
+
+namespace antipode {
+namespace {
+
+Parameters params(const std::string& yaml) {
+  return Parameters(YAML::Load(yaml), "component 'sampler'", "tree.yaml");
+}
+
+class AntipodalSamplerTest : public ::testing::Test {
+ protected:
+  AntipodalSamplerTest() : host_(std::vector<std::string>{}) {
+    host_.load_library(std::string(ANTIPODE_TEST_PLUGIN_DIR) + "/" +
+                       plugin_file_name("antipodal_sampler"));
+  }
+
+  std::shared_ptr<Sampler> create(const std::string& yaml) {
+    return std::dynamic_pointer_cast<Sampler>(host_.create("antipodal_sampler", params(yaml)));
+  }
+
+  std::string creation_error(const std::string& yaml) {
+    try {
+      create(yaml);
+    } catch (const Error& error) {
+      return error.what();
+    }
+    return "";
+  }
+
+  PluginHost host_;
+};
+
+Cloud cylinder() { return testing::cylinder_cloud({0.0, 0.0, 0.6}, {0.1, 1.0, 0.0}, 0.05, 0.15); }
+
+TEST_F(AntipodalSamplerTest, LoadsAsASampler) {
+  ASSERT_EQ(host_.records().size(), 1u);
+  EXPECT_EQ(host_.records()[0].state, PluginRecord::State::kLoaded) << host_.records()[0].reason;
+  EXPECT_EQ(host_.kind_of("antipodal_sampler"), ComponentKind::kSampler);
+  EXPECT_NE(create(""), nullptr);
+}
+
+TEST_F(AntipodalSamplerTest, SamplesHandsOnAPreprocessedCloud) {
+  const auto sampler = create("samples: 300\nvoxel_size_m: 0.004\nthreads: 2");
+  const Cloud raw = cylinder();
+  const HandSet set = sampler->sample(raw, RandomStream(5));
+  ASSERT_NE(set.cloud, nullptr);
+  EXPECT_LT(set.cloud->size(), raw.size());
+  ASSERT_GT(set.hands.size(), 20u);
+  for (const Hand& hand : set.hands) {
+    EXPECT_EQ(hand.frame, raw.frame);
+    EXPECT_FALSE(hand.closing_points.empty());
+    EXPECT_LT(static_cast<std::size_t>(hand.sample_index), set.cloud->size());
+  }
+}
+
+TEST_F(AntipodalSamplerTest, SameResultAsTheFrameworkFunctionForAnyThreadCount) {
+  const Cloud raw = cylinder();
+  HandSamplingOptions options;
+  options.search.samples = 200;
+  options.search.threads = 1;
+  const HandSet direct = sample_hands(raw, options, RandomStream(9));
+  for (const char* threads : {"1", "2"}) {
+    const HandSet via_plugin =
+        create(std::string("samples: 200\nthreads: ") + threads)->sample(raw, RandomStream(9));
+    ASSERT_EQ(via_plugin.hands.size(), direct.hands.size()) << threads << " threads";
+    for (std::size_t i = 0; i < direct.hands.size(); ++i) {
+      EXPECT_EQ(via_plugin.hands[i].X_FrameHand.matrix(), direct.hands[i].X_FrameHand.matrix());
+      EXPECT_EQ(via_plugin.hands[i].closing_points, direct.hands[i].closing_points);
+    }
+  }
+}
+
+TEST_F(AntipodalSamplerTest, ReadsEveryDocumentedParameter) {
+  const std::string yaml = R"(
+samples: 100
+voxel_size_m: 0.003
+neighbourhood_radius_m: 0.03
+min_neighbours: 12
+orientations: 6
+positions: 10
+workspace: {min: [-0.5, -0.5, 0.0], max: [0.5, 0.5, 1.5]}
+sample_region: {min: [-0.1, -0.1, 0.4], max: [0.1, 0.1, 0.8]}
+hand: {finger_width_m: 0.01, outer_diameter_m: 0.1, depth_m: 0.06, height_m: 0.02,
+       init_bite_m: 0.01, min_aperture_m: 0.02, max_aperture_m: 0.08}
+palm_thickness_m: 0.02
+min_bite_m: 0.02
+clearance_m: 0.002
+max_view_angle_deg: 80
+reject_hidden_fingers: false
+occlusion_margin_m: 0.02
+point_radius_m: 0.003
+keep_all_positions: true
+threads: 1
+view_origin: [0, 0, 0]
+)";
+  const auto sampler = create(yaml);
+  ASSERT_NE(sampler, nullptr);
+  EXPECT_FALSE(sampler->sample(cylinder(), RandomStream(1)).hands.empty());
+}
+
+TEST_F(AntipodalSamplerTest, BadParametersAreLocatedErrors) {
+  EXPECT_EQ(creation_error("sampels: 10"),
+            "tree.yaml:1:1: unknown parameter 'sampels' of component 'sampler' (did you mean "
+            "'samples'?)");
+  EXPECT_EQ(creation_error("a: 1\nsamples: 0"),
+            "tree.yaml:2:1: parameter 'samples' must be at least 1, got 0");
+  EXPECT_EQ(creation_error("workspace: {min: [0, 0], max: [1, 1, 1]}"),
+            "tree.yaml:1:13: parameter 'min' must be a list [x, y, z]");
+  EXPECT_EQ(creation_error("workspace: {min: [0, 2, 0], max: [1, 1, 1]}"),
+            "tree.yaml:1:1: parameter 'workspace': min y is above max y");
+  EXPECT_EQ(creation_error("hand: {max_aperture_m: 0.2}"),
+            "tree.yaml:1:1: hand geometry: max_aperture_m + 2 * finger_width_m exceeds "
+            "outer_diameter_m");
+  EXPECT_EQ(creation_error("hand: {depht_m: 0.05}"),
+            "tree.yaml:1:8: unknown parameter 'depht_m' of component 'sampler'.hand (did you "
+            "mean 'depth_m'?)");
+  EXPECT_EQ(creation_error("min_bite_m: 0.5"),
+            "tree.yaml:1:1: hand search: min_bite_m must be in [0, depth_m], got 0.500000");
+}
+
+TEST_F(AntipodalSamplerTest, UnusableCloudsAreErrors) {
+  const auto sampler = create("workspace: {min: [5, 5, 5], max: [6, 6, 6]}");
+  EXPECT_THROW(sampler->sample(cylinder(), RandomStream(1)), Error);
+  EXPECT_THROW(create("")->sample(Cloud{}, RandomStream(1)), Error);
+}
+
+TEST_F(AntipodalSamplerTest, CloudsWithoutViewsUseTheConfiguredOrigin) {
+  Cloud raw = cylinder();
+  raw.view_origins_m.clear();
+  raw.view_masks.clear();
+  const HandSet seen_from_origin = create("samples: 200")->sample(raw, RandomStream(4));
+  EXPECT_FALSE(seen_from_origin.hands.empty());
+  ASSERT_EQ(seen_from_origin.cloud->view_origins_m.size(), 1u);
+  const HandSet seen_from_elsewhere =
+      create("samples: 200\nview_origin: [0, 0, 2]")->sample(raw, RandomStream(4));
+  EXPECT_TRUE(seen_from_elsewhere.cloud->view_origins_m[0].isApprox(Eigen::Vector3f(0, 0, 2)));
+}
+
+}  // namespace
+}  // namespace antipode
