@@ -22,15 +22,20 @@ struct GridSpec {
 
   float half_aperture_m, finger_width_m, body_half_width_m, depth_m, half_height_m;
   float palm_thickness_m, start_m, clearance_m, min_bite_m;
-  float max_lateral_m;    ///< largest |closing coordinate| a colliding point can have
-  float reach_m;          ///< radius of the ball holding every point that can matter
-  float min_view_cosine;  ///< cosine of max_view_angle_deg
+  float slab_half_thickness_m;  ///< half height of the hand plus the search margin
+  float max_lateral_m;          ///< largest |closing coordinate| a colliding point can have
+  float reach_m;                ///< radius of the ball holding every point that can matter
+  float min_view_cosine;        ///< cosine of max_view_angle_deg
   bool keep_all_positions;
   float occlusion_margin_m;
   std::vector<Eigen::Vector3f> finger_probes;  ///< hand-frame points tested for occlusion
   std::vector<float> cos_phi, sin_phi;         ///< per orientation
   std::vector<float> offsets_m;                ///< per position: hand centre along closing
 };
+
+/// Cell size of the SlabGrid that finds each sample's hand neighbourhood: about the hand's
+/// height, so the grid visits few cells outside the slab.
+constexpr float kSlabCell_m = 0.02f;
 
 /// What one (orientation, position) pose gave.
 struct PoseOutcome {
@@ -67,8 +72,9 @@ struct SampleContext {
 };
 
 /// Searches the orientation x position grid around the sample's frame using the cloud points
-/// `scratch.hand_neighbours` (the ball of radius spec.reach_m around the sample); appends
-/// the hands it keeps and counts outcomes.
+/// `scratch.hand_neighbours` (those within spec.reach_m of the sample and within
+/// spec.slab_half_thickness_m of its closing plane); appends the hands it keeps and counts
+/// outcomes.
 void grid_search(const SampleContext& context, const GridSpec& spec, GridScratch& scratch,
                  std::vector<Hand>& hands, HandSearchStats& stats);
 

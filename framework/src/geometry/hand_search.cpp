@@ -1,6 +1,8 @@
 // Algorithm 2 (Sample_Hands) over a preprocessed cloud, parallel over samples.
 #include "antipode/geometry/hand_search.hpp"
 
+#include <algorithm>
+
 #include <tbb/blocked_range.h>
 #include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_for.h>
@@ -11,6 +13,7 @@
 #include "antipode/geometry/point_index.hpp"
 #include "grid_search.hpp"
 #include "sample_choice.hpp"
+#include "slab_grid.hpp"
 
 namespace antipode {
 namespace {
@@ -27,6 +30,7 @@ struct SampleOutput {
 struct SearchContext {
   const Cloud& cloud;
   const PointIndex& index;
+  const geometry::SlabGrid& slabs;
   const HandSearchParameters& parameters;
   const geometry::GridSpec& spec;
   const OcclusionMap* occlusion;
@@ -56,7 +60,8 @@ void search_sample(const SearchContext& search, std::int32_t sample, geometry::G
       ++out.stats.frames_planar;
       break;
   }
-  search.index.radius_search(point, search.spec.reach_m, scratch.hand_neighbours);
+  search.slabs.query(point, frame.axis, search.spec.slab_half_thickness_m, search.spec.reach_m,
+                     scratch.hand_neighbours);
   const geometry::SampleContext context{cloud, frame, sample, viewer, search.occlusion};
   geometry::grid_search(context, search.spec, scratch, out.hands, out.stats);
 }
@@ -102,7 +107,8 @@ HandSearchResult search_hands(const Cloud& cloud, const HandSearchParameters& pa
     occlusion =
         std::make_unique<OcclusionMap>(cloud, static_cast<float>(parameters.point_radius_m));
   }
-  const SearchContext search{cloud, index, parameters, spec, occlusion.get()};
+  const geometry::SlabGrid slabs(cloud.points_m, geometry::kSlabCell_m);
+  const SearchContext search{cloud, index, slabs, parameters, spec, occlusion.get()};
   std::vector<std::int32_t> samples =
       geometry::choose_samples(candidates(cloud, parameters.sample_region), parameters.samples,
                                random.derive(kSampleChoiceStream));
