@@ -87,8 +87,13 @@ TEST_F(TracerTest, JsonlTracerWritesValidJsonLines) {
   }
   std::ifstream in(path);
   std::vector<nlohmann::json> lines;
-  for (std::string text; std::getline(in, text);) lines.push_back(nlohmann::json::parse(text));
+  std::string first;
+  for (std::string text; std::getline(in, text);) {
+    if (first.empty()) first = text;
+    lines.push_back(nlohmann::json::parse(text));
+  }
   ASSERT_EQ(lines.size(), 5u);
+  EXPECT_EQ(first.rfind("{\"time_s\":", 0), 0u) << first;
   EXPECT_EQ(lines[0]["node"], "slow");
   EXPECT_EQ(lines[0]["type"], "Scripted");
   EXPECT_EQ(lines[0]["path"], "t/Sequence/Scripted#0");
@@ -96,6 +101,8 @@ TEST_F(TracerTest, JsonlTracerWritesValidJsonLines) {
   EXPECT_EQ(lines[0]["from"], "IDLE");
   EXPECT_EQ(lines[0]["to"], "RUNNING");
   EXPECT_FALSE(lines[0].contains("reason"));
+  EXPECT_EQ(lines[1]["node"], "Sequence");
+  EXPECT_EQ(lines[3]["node"], "FailWithReason");
   EXPECT_EQ(lines[3]["reason"], "no hands");
   EXPECT_LE(lines[0]["time_s"].get<double>(), lines[4]["time_s"].get<double>());
   std::remove(path.c_str());

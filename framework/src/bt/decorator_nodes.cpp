@@ -128,7 +128,7 @@ NodeManifest Timeout::manifest() {
 
 Status Timeout::tick() {
   const auto now = std::chrono::steady_clock::now();
-  if (status() != Status::kRunning) {
+  if (starting()) {
     limit_ = get_input<std::chrono::milliseconds>("msec");
     deadline_ = now + limit_;
   }

@@ -15,7 +15,7 @@ JsonlTracer::JsonlTracer(const std::string& path)
 
 void JsonlTracer::on_status_change(const Node& node, Status previous, Status current,
                                    std::chrono::steady_clock::time_point when) {
-  nlohmann::json line = {
+  nlohmann::ordered_json line = {
       {"time_s", std::chrono::duration<double>(when - start_).count()},
       {"node", node.name()},
       {"type", node.type()},
@@ -27,7 +27,7 @@ void JsonlTracer::on_status_change(const Node& node, Status previous, Status cur
   if (current == Status::kFailure && !node.failure_reason().empty()) {
     line["reason"] = node.failure_reason();
   }
-  out_ << line.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace) << '\n';
+  out_ << line.dump(-1, ' ', false, nlohmann::ordered_json::error_handler_t::replace) << '\n';
   out_.flush();
   if (!out_) throw Error("cannot write trace file '" + path_ + "'");
 }

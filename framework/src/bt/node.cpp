@@ -32,7 +32,8 @@ Node::~Node() = default;
 
 Status Node::execute_tick() {
   const Status previous = status_;
-  if (previous != Status::kRunning) {
+  starting_ = previous != Status::kRunning;
+  if (starting_) {
     ++run_count_;
     failure_reason_.clear();
   }

@@ -37,7 +37,7 @@ class StatefulActionNode : public Node {
   virtual void on_halted() {}
 
  private:
-  Status tick() final { return status() == Status::kRunning ? on_running() : on_start(); }
+  Status tick() final { return starting() ? on_start() : on_running(); }
   void halt() final { on_halted(); }
 };
 

@@ -80,9 +80,9 @@ class Node {
   Node& operator=(const Node&) = delete;
 
   /// Ticks the node: calls tick(), records the status and reports a change to the tree's
-  /// observers. An antipode::Error without a location, or any other std::exception, thrown
-  /// by tick() is rethrown as an Error located at this node, after halting what the tick
-  /// may have left RUNNING (the node is then IDLE).
+  /// observers. An antipode::Error without a location, or any
+  /// other std::exception, thrown by tick() is rethrown as an Error located at this node, after
+  /// halting what the tick may have left RUNNING (the node is then IDLE).
   Status execute_tick();
 
   /// Calls halt() if the node is RUNNING, then resets it to IDLE.
@@ -108,6 +108,9 @@ class Node {
  protected:
   /// Does the node's work; returns kRunning, kSuccess or kFailure, never kIdle.
   virtual Status tick() = 0;
+  /// True during a tick that starts a new run (the node was not RUNNING before it).
+  bool starting() const { return starting_; }
+
   /// Stops work in progress; called by halt_node() only while RUNNING.
   virtual void halt() {}
   /// False for node types whose tick must complete (SyncActionNode, ConditionNode); a
@@ -200,6 +203,7 @@ class Node {
   Status status_ = Status::kIdle;
   std::string failure_reason_;
   std::uint64_t run_count_ = 0;
+  bool starting_ = false;
   std::vector<std::unique_ptr<Node>> children_;
   mutable std::map<std::string, std::any> converted_;
 };
