@@ -16,9 +16,10 @@ namespace antipode {
 /// must not change while the index is used. Queries are const and thread-safe.
 ///
 /// Built on nanoflann rather than PCL's KdTreeFLANN: on table_mug.pcd after 3 mm voxels,
-/// bench/sampling's BM_RadiusSearch* measure nanoflann's 3 cm ball queries at well under half
-/// the time of FLANN's (no sorting, no per-query allocation, a compact single-tree layout),
-/// and nanoflann is a header-only Debian package that keeps PCL out of the geometry code.
+/// bench/sampling's BM_RadiusSearch* measure 1,000 unsorted 3 cm ball queries at 4.1 ms
+/// against FLANN's 7.0 ms (10 cm balls: 18 ms against 40 ms) - no per-query allocation, no
+/// distance vector - and nanoflann is a header-only Debian package that keeps PCL out of
+/// the geometry code.
 class PointIndex {
  public:
   explicit PointIndex(const std::vector<Eigen::Vector3f>& points);
