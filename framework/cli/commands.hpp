@@ -13,11 +13,23 @@ struct RunOptions {
   std::string tree_path;
   std::vector<std::string> set;  ///< "key=value" overrides
   std::uint64_t seed = 0;
-  std::string trace_path;        ///< JSON-lines trace file; "" for none
-  bool quiet = false;            ///< no per-node console trace
+  std::string trace_path;  ///< JSON-lines trace file; "" for none
+  bool quiet = false;      ///< no per-node console trace
+};
+
+struct DetectOptions {
+  std::string cloud_path;
+  std::string tree_path = "trees/detect.yaml";
+  std::string out_path;    ///< grasps JSON; "" for none
+  std::string image_path;  ///< PNG picture; "" for none
+  std::vector<std::string> set;
+  std::uint64_t seed = 0;
+  bool verbose = false;                ///< per-node console trace
+  std::string hands_entry = "grasps";  ///< the entry whose hands are summarised
 };
 
 int run_command(const RunOptions& options);
+int detect_command(const DetectOptions& options);
 int validate_command(const std::string& tree_path);
 int plugins_command();
 

@@ -14,6 +14,7 @@ constexpr const char* kExamples = R"(Examples:
   antipode run trees/demo.yaml
   antipode run trees/detect.yaml --set sampler.samples=500 --seed 3 --trace run.jsonl
   antipode validate trees/detect.yaml
+  antipode detect ../shared/data/clouds/table_mug.pcd --out grasps.json --image grasps.png
   antipode plugins
 
 Exit codes: 0 success, 1 the tree returned FAILURE, 2 invalid input (command line, tree,
@@ -21,6 +22,7 @@ parameters, data file), 3 internal error. See docs/cli.md.)";
 
 struct Commands {
   antipode::cli::RunOptions run;
+  antipode::cli::DetectOptions detect;
   std::string validate_path;
 };
 
@@ -35,8 +37,21 @@ void add_run(CLI::App& app, Commands& commands) {
   run->add_flag("-q,--quiet", commands.run.quiet, "No per-node trace on the console");
 }
 
+void add_detect(CLI::App& app, Commands& commands) {
+  auto& options = commands.detect;
+  CLI::App* detect = app.add_subcommand("detect", "Detect grasps in a PCD or PLY cloud");
+  detect->add_option("cloud", options.cloud_path, "PCD or PLY file")->required();
+  detect->add_option("--tree", options.tree_path, "Detection tree")->capture_default_str();
+  detect->add_option("--out", options.out_path, "Write the grasps as JSON");
+  detect->add_option("--image", options.image_path, "Draw the cloud and grasps into a PNG");
+  detect->add_option("--set", options.set, "Override, as for 'run' (repeatable)");
+  detect->add_option("--seed", options.seed, "Seed of every random stream (default 0)");
+  detect->add_flag("-v,--verbose", options.verbose, "Print every node's status changes");
+}
+
 int dispatch(const CLI::App& app, const Commands& commands) {
   if (app.got_subcommand("run")) return antipode::cli::run_command(commands.run);
+  if (app.got_subcommand("detect")) return antipode::cli::detect_command(commands.detect);
   if (app.got_subcommand("validate")) {
     return antipode::cli::validate_command(commands.validate_path);
   }
@@ -54,6 +69,7 @@ int main(int argc, char** argv) {
   app.set_version_flag("--version", std::string("antipode ") + ANTIPODE_VERSION);
   Commands commands;
   add_run(app, commands);
+  add_detect(app, commands);
   CLI::App* validate = app.add_subcommand("validate", "Check a tree file without running it");
   validate->add_option("tree", commands.validate_path, "YAML tree file")->required();
   app.add_subcommand("plugins", "List plugin libraries found, loaded and refused, and why");

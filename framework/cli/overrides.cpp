@@ -9,8 +9,8 @@ std::vector<std::pair<std::string, std::string>> parse_overrides(
   for (const auto& entry : entries) {
     const auto equals = entry.find('=');
     if (equals == std::string::npos || equals == 0) {
-      throw Error("--set '" + entry + "' must have the form key=value",
-                  {}, "e.g. --set sampler.samples=500");
+      throw Error("--set '" + entry + "' must have the form key=value", {},
+                  "e.g. --set sampler.samples=500");
     }
     overrides.emplace_back(entry.substr(0, equals), entry.substr(equals + 1));
   }

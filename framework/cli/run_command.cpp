@@ -27,8 +27,9 @@ bt::LoadOptions load_options(const Session& session, const RunOptions& options) 
   return load;
 }
 
-// Loads the tree; unknown-name errors mention refused plugins, which are often the cause.
-bt::Tree load_tree(const Session& session, const RunOptions& options) {
+}  // namespace
+
+bt::Tree load_tree_for(const Session& session, const RunOptions& options) {
   try {
     return bt::load_tree_file(options.tree_path, load_options(session, options));
   } catch (const Error& error) {
@@ -38,11 +39,9 @@ bt::Tree load_tree(const Session& session, const RunOptions& options) {
   }
 }
 
-}  // namespace
-
 int run_command(const RunOptions& options) {
   Session session = open_session();
-  bt::Tree tree = load_tree(session, options);
+  bt::Tree tree = load_tree_for(session, options);
   std::unique_ptr<bt::ConsoleTracer> console;
   std::unique_ptr<bt::JsonlTracer> trace_file;
   if (!options.quiet) {

@@ -16,8 +16,7 @@ std::string refused_plugins_note(const PluginHost& host) {
   }
   if (refused == 0) return {};
   return " - note: " + std::to_string(refused) + " plugin " +
-         (refused == 1 ? "library was" : "libraries were") +
-         " refused; see 'antipode plugins'";
+         (refused == 1 ? "library was" : "libraries were") + " refused; see 'antipode plugins'";
 }
 
 }  // namespace antipode::cli

@@ -5,6 +5,7 @@
 #include <memory>
 
 #include "antipode/bt/node_registry.hpp"
+#include "antipode/bt/tree.hpp"
 #include "antipode/plugin/plugin_host.hpp"
 
 namespace antipode::cli {
@@ -16,6 +17,12 @@ struct Session {
 
 /// Loads every plugin on the search path and registers built-in and plugin nodes.
 Session open_session();
+
+struct RunOptions;
+
+/// Loads `options.tree_path` with the session's registry and components; unknown-name errors
+/// get a note when plugins were refused (a refused plugin is the usual cause).
+bt::Tree load_tree_for(const Session& session, const RunOptions& options);
 
 /// " - note: N plugin libraries were refused; see 'antipode plugins'", or "" when none were.
 std::string refused_plugins_note(const PluginHost& host);

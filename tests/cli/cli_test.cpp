@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <sstream>
 
 #include <gtest/gtest.h>
@@ -149,6 +150,79 @@ TEST_F(CliTest, PluginsListsLoadedAndRefusedLibrariesWithReasons) {
   EXPECT_NE(result.out.find("undefined symbol: antipode_function_that_does_not_exist"),
             std::string::npos);
   EXPECT_NE(result.out.find("type 'point_sampler' is already provided by"), std::string::npos);
+}
+
+// Detection on real data, through trees/detect.yaml and the build tree's plugins.
+class DetectTest : public CliTest {
+ protected:
+  const std::string krylon_ = std::string(ANTIPODE_TEST_DATA_DIR) + "/clouds/krylon.pcd";
+  const std::string tree_ = std::string(ANTIPODE_TEST_SOURCE_DIR) + "/trees/detect.yaml";
+  std::string detect(const std::string& cloud, const std::string& extra = "") {
+    return "detect " + cloud + " --tree " + tree_ + " --out " + (dir_ / "g.json").string() +
+           " --image " + (dir_ / "g.png").string() + " " + extra;
+  }
+  bool wrote_nothing() const {
+    return !fs::exists(dir_ / "g.json") && !fs::exists(dir_ / "g.png") &&
+           std::distance(fs::directory_iterator(dir_), fs::directory_iterator()) <= 1;
+  }
+};
+
+TEST_F(DetectTest, WritesGraspsAndPicture) {
+  if (!fs::exists(krylon_)) GTEST_SKIP() << "no " << krylon_ << " (../shared/data is absent)";
+  const Result result = run(detect(krylon_, "--set sampler.samples=200"));
+  ASSERT_EQ(result.exit_code, 0) << result.out;
+  std::ifstream in(dir_ / "g.json");
+  const auto document = nlohmann::json::parse(in);
+  EXPECT_EQ(document["frame"], "sensor");
+  ASSERT_GT(document["count"].get<int>(), 0);
+  const auto& hand = document["hands"][0];
+  for (const char* key :
+       {"position_m", "quaternion_xyzw", "approach", "closing", "axis", "width_m", "score"}) {
+    EXPECT_TRUE(hand.contains(key)) << key;
+  }
+  std::ifstream png(dir_ / "g.png", std::ios::binary);
+  char magic[4] = {};
+  png.read(magic, 4);
+  EXPECT_EQ(std::string(magic + 1, 3), "PNG");
+}
+
+TEST_F(DetectTest, TruncatedCloudIsOneLineErrorAndNoOutput) {
+  if (!fs::exists(krylon_)) GTEST_SKIP() << "no " << krylon_ << " (../shared/data is absent)";
+  std::ifstream in(krylon_, std::ios::binary);
+  std::string bytes((std::istreambuf_iterator<char>(in)), {});
+  const std::string cloud = write("cut.pcd", bytes.substr(0, bytes.size() / 2));
+  const Result result = run(detect(cloud));
+  EXPECT_EQ(result.exit_code, 2) << result.out;
+  EXPECT_EQ(result.out.rfind("antipode: error: ", 0), 0u) << result.out;
+  EXPECT_EQ(std::count(result.out.begin(), result.out.end(), '\n'), 1) << result.out;
+  fs::remove(cloud);
+  EXPECT_TRUE(wrote_nothing());
+}
+
+TEST_F(DetectTest, NanOnlyAndEmptyCloudsAreErrors) {
+  const std::string header =
+      "VERSION .7\nFIELDS x y z\nSIZE 4 4 4\nTYPE F F F\nCOUNT 1 1 1\nWIDTH 2\nHEIGHT 1\n"
+      "VIEWPOINT 0 0 0 1 0 0 0\nPOINTS 2\nDATA ascii\n";
+  const std::string nan_cloud = write("nan.pcd", header + "nan nan nan\nnan 1 2\n");
+  Result result = run(detect(nan_cloud));
+  EXPECT_EQ(result.exit_code, 2) << result.out;
+  EXPECT_NE(result.out.find("finite"), std::string::npos) << result.out;
+  fs::remove(nan_cloud);
+  EXPECT_TRUE(wrote_nothing());
+  const std::string empty = write("empty.pcd", "");
+  result = run(detect(empty));
+  EXPECT_EQ(result.exit_code, 2) << result.out;
+  fs::remove(empty);
+  EXPECT_TRUE(wrote_nothing());
+}
+
+TEST_F(DetectTest, WorkspaceOutsideTheCloudIsAnError) {
+  if (!fs::exists(krylon_)) GTEST_SKIP() << "no " << krylon_ << " (../shared/data is absent)";
+  const Result result =
+      run(detect(krylon_, "--set 'sampler.workspace={min: [5, 5, 5], max: [6, 6, 6]}'"));
+  EXPECT_EQ(result.exit_code, 2) << result.out;
+  EXPECT_NE(result.out.find("workspace"), std::string::npos) << result.out;
+  EXPECT_TRUE(wrote_nothing());
 }
 
 TEST_F(CliTest, VersionAndHelp) {

@@ -44,9 +44,7 @@ TEST(ParametersTest, BadTypeAndMissingKeyAreClearErrors) {
   EXPECT_THROW(params.require<double>("radius_m"), Error);
 }
 
-TEST(ParametersTest, NonMappingIsRejected) {
-  EXPECT_THROW(parse("[1, 2]"), Error);
-}
+TEST(ParametersTest, NonMappingIsRejected) { EXPECT_THROW(parse("[1, 2]"), Error); }
 
 }  // namespace
 }  // namespace antipode

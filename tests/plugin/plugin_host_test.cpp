@@ -67,8 +67,9 @@ TEST(PluginHostTest, FactoryErrorsReachTheCallerWithLocation) {
     host.create("line_cel", params(""));
     FAIL() << "expected an error";
   } catch (const Error& error) {
-    EXPECT_TRUE(contains(error.what(), "unknown component type 'line_cel' (did you mean "
-                                       "'line_cell'?)"))
+    EXPECT_TRUE(contains(error.what(),
+                         "unknown component type 'line_cel' (did you mean "
+                         "'line_cell'?)"))
         << error.what();
   }
 }
@@ -90,8 +91,9 @@ TEST(PluginHostTest, MissingFileIsRefusedWithDlerrorText) {
   const PluginRecord& record = host.load_library(path);
   EXPECT_EQ(record.state, PluginRecord::State::kRefused);
   EXPECT_EQ(record.path, path);
-  EXPECT_TRUE(contains(record.reason, "cannot open shared object file: No such file or "
-                                      "directory"))
+  EXPECT_TRUE(contains(record.reason,
+                       "cannot open shared object file: No such file or "
+                       "directory"))
       << record.reason;
 }
 
@@ -123,8 +125,8 @@ TEST(PluginHostTest, WrongAbiMajorIsRefusedNamingBothVersions) {
   const PluginRecord& record = host.load_library(bad("wrong_abi"));
   EXPECT_EQ(record.state, PluginRecord::State::kRefused);
   const std::string expected = "built for plugin ABI " + std::to_string(kAbiMajor + 1) +
-                               ".3, but this antipode provides ABI " +
-                               std::to_string(kAbiMajor) + "." + std::to_string(kAbiMinor);
+                               ".3, but this antipode provides ABI " + std::to_string(kAbiMajor) +
+                               "." + std::to_string(kAbiMinor);
   EXPECT_TRUE(contains(record.reason, expected)) << record.reason;
   EXPECT_EQ(host.kind_of("future_sampler"), std::nullopt);
 }
@@ -188,16 +190,16 @@ TEST(PluginHostTest, RegistersPluginNodes) {
 
 TEST(PluginHostTest, PluginNodeClashingWithBuiltinIsAnError) {
   PluginHost host(std::vector<std::string>{});
-  ASSERT_EQ(host.load_library(std::string(FIXTURE_DIR) + "/clash/libantipode_node_clash.so")
-                .state,
+  ASSERT_EQ(host.load_library(std::string(FIXTURE_DIR) + "/clash/libantipode_node_clash.so").state,
             PluginRecord::State::kLoaded);
   bt::NodeRegistry registry = bt::builtin_node_registry();
   try {
     host.register_nodes(registry);
     FAIL() << "expected an error";
   } catch (const Error& error) {
-    EXPECT_TRUE(contains(error.what(), "offers node type 'Sequence', which is already "
-                                       "registered"))
+    EXPECT_TRUE(contains(error.what(),
+                         "offers node type 'Sequence', which is already "
+                         "registered"))
         << error.what();
   }
 }

@@ -19,9 +19,8 @@ void write_file_atomically(const std::string& path,
                 "' does not exist");
   }
   // Keep the extension last: some writers (OpenCV) choose the format from it.
-  const fs::path temporary =
-      directory / ("." + target.stem().string() + ".partial-" + std::to_string(::getpid()) +
-                   target.extension().string());
+  const fs::path temporary = directory / ("." + target.stem().string() + ".partial-" +
+                                          std::to_string(::getpid()) + target.extension().string());
   try {
     write(temporary.string());
     if (!fs::exists(temporary)) throw Error("nothing was written");

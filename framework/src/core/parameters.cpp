@@ -5,8 +5,7 @@ namespace antipode {
 Parameters::Parameters(YAML::Node node, std::string owner, std::string file)
     : node_(std::move(node)), owner_(std::move(owner)), file_(std::move(file)) {
   if (node_.IsDefined() && !node_.IsNull() && !node_.IsMap()) {
-    throw Error("parameters of " + owner_ + " must be a mapping of key: value",
-                location(""));
+    throw Error("parameters of " + owner_ + " must be a mapping of key: value", location(""));
   }
 }
 

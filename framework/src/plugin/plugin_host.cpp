@@ -51,8 +51,7 @@ bool is_plugin_file(const fs::path& path) {
 std::vector<fs::path> plugin_files_in(const std::string& directory) {
   std::vector<fs::path> files;
   std::error_code error;
-  for (fs::directory_iterator it(directory, error), end; !error && it != end;
-       it.increment(error)) {
+  for (fs::directory_iterator it(directory, error), end; !error && it != end; it.increment(error)) {
     if (is_plugin_file(it->path())) files.push_back(it->path());
   }
   std::sort(files.begin(), files.end());
@@ -67,8 +66,7 @@ constexpr std::size_t kDescriptorBytesRead =
 // works from whatever prefix it was installed to.
 std::string installed_plugin_dir() {
   Dl_info info{};
-  if (dladdr(reinterpret_cast<void*>(&split_path_list), &info) == 0 ||
-      info.dli_fname == nullptr) {
+  if (dladdr(reinterpret_cast<void*>(&split_path_list), &info) == 0 || info.dli_fname == nullptr) {
     return ANTIPODE_PLUGIN_DIR_BESIDE_LIBRARY;
   }
   const fs::path library_dir = fs::path(info.dli_fname).parent_path();
@@ -79,9 +77,12 @@ std::string installed_plugin_dir() {
 
 const char* to_string(PluginRecord::State state) {
   switch (state) {
-    case PluginRecord::State::kLoaded: return "loaded";
-    case PluginRecord::State::kRefused: return "refused";
-    case PluginRecord::State::kShadowed: return "shadowed";
+    case PluginRecord::State::kLoaded:
+      return "loaded";
+    case PluginRecord::State::kRefused:
+      return "refused";
+    case PluginRecord::State::kShadowed:
+      return "shadowed";
   }
   return "?";
 }
@@ -106,13 +107,16 @@ void PluginHost::load_search_path() {
   std::map<std::string, std::string> first_seen;  // file name -> path that won
   for (const auto& directory : search_path_) {
     for (const auto& file : plugin_files_in(directory)) {
-      const auto [winner, inserted] =
-          first_seen.emplace(file.filename().string(), file.string());
+      const auto [winner, inserted] = first_seen.emplace(file.filename().string(), file.string());
       if (inserted) {
         load_library(file.string());
       } else {
-        records_.push_back({file.string(), PluginRecord::State::kShadowed,
-                            "shadowed by " + winner->second, "", "", {}});
+        records_.push_back({file.string(),
+                            PluginRecord::State::kShadowed,
+                            "shadowed by " + winner->second,
+                            "",
+                            "",
+                            {}});
       }
     }
   }
@@ -164,15 +168,16 @@ const PluginRecord& PluginHost::load_library(const std::string& path) {
   library->path = path;
   void* symbol = dlsym(handle, "antipode_plugin_descriptor");
   if (symbol == nullptr) {
-    record.reason = "no entry symbol 'antipode_plugin_descriptor' (did the plugin use "
-                    "ANTIPODE_PLUGIN(...)?)";
+    record.reason =
+        "no entry symbol 'antipode_plugin_descriptor' (did the plugin use "
+        "ANTIPODE_PLUGIN(...)?)";
     records_.push_back(std::move(record));
     return records_.back();
   }
   const auto entry = reinterpret_cast<antipode_plugin_entry_fn>(symbol);
   const PluginDescriptor* descriptor = entry();
-  record.reason = descriptor == nullptr ? "entry symbol returned no descriptor"
-                                        : refuse_reason(*descriptor);
+  record.reason =
+      descriptor == nullptr ? "entry symbol returned no descriptor" : refuse_reason(*descriptor);
   if (!record.reason.empty()) {
     records_.push_back(std::move(record));
     return records_.back();
@@ -239,9 +244,8 @@ std::shared_ptr<Component> PluginHost::create(const std::string& type,
     throw Error("plugin " + offer.library->path + " returned no object for '" + type + "'");
   }
   // The deleter keeps the library loaded for as long as the component lives.
-  std::shared_ptr<Component> component(raw, [library = offer.library](Component* object) {
-    delete object;
-  });
+  std::shared_ptr<Component> component(
+      raw, [library = offer.library](Component* object) { delete object; });
   const auto declared = parse_component_kind(offer.factory->kind);
   if (!declared || component->kind() != *declared) {
     throw Error("plugin " + offer.library->path + ": '" + type + "' is declared as a " +

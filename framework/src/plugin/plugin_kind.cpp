@@ -21,12 +21,13 @@ std::string factory_problem(const PluginFactory& factory) {
   }
   const std::string kind = factory.kind;
   if (kind == "node") {
-    if (factory.register_node == nullptr) return "node '" + std::string(factory.type) +
-                                                 "' has no register_node function";
+    if (factory.register_node == nullptr)
+      return "node '" + std::string(factory.type) + "' has no register_node function";
     return {};
   }
   if (!parse_component_kind(kind)) {
-    return "unknown kind '" + kind + "' (expected sampler, classifier, selector, planner, "
+    return "unknown kind '" + kind +
+           "' (expected sampler, classifier, selector, planner, "
            "cell or node)";
   }
   if (factory.create == nullptr) {

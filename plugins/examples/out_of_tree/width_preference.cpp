@@ -55,20 +55,15 @@ class CountGrasps final : public bt::SyncActionNode {
  protected:
   bt::Status tick() override {
     const HandSetPtr set = get_input<HandSetPtr>("hands");
-    const auto count = std::count_if(set->hands.begin(), set->hands.end(), [](const Hand& h) {
-      return h.label == HandLabel::kPositive;
-    });
+    const auto count = std::count_if(set->hands.begin(), set->hands.end(),
+                                     [](const Hand& h) { return h.label == HandLabel::kPositive; });
     set_output("count", static_cast<int>(count));
     return bt::Status::kSuccess;
   }
 };
 
-Component* create_width_preference(const Parameters& params) {
-  return new WidthPreference(params);
-}
-void register_count_grasps(bt::NodeRegistry& registry) {
-  registry.register_node<CountGrasps>();
-}
+Component* create_width_preference(const Parameters& params) { return new WidthPreference(params); }
+void register_count_grasps(bt::NodeRegistry& registry) { registry.register_node<CountGrasps>(); }
 
 const PluginFactory kFactories[] = {
     {"classifier", "width_preference", "scores hands by closeness to a preferred width",

@@ -14,7 +14,7 @@ class CaptureCloud final : public bt::SyncActionNode {
             bt::NodeCategory::kAction,
             {bt::component_port<Cell>("cell", "the cell whose sensors capture"),
              bt::input_port<std::vector<std::string>>("views", std::vector<std::string>{},
-                                                       "view names; empty = every view"),
+                                                      "view names; empty = every view"),
              bt::output_port<CloudPtr>("cloud", "the captured cloud, in the cell's base frame")},
             0,
             0,
@@ -41,8 +41,6 @@ class CaptureCloud final : public bt::SyncActionNode {
 
 }  // namespace
 
-void register_capture_cloud(bt::NodeRegistry& registry) {
-  registry.register_node<CaptureCloud>();
-}
+void register_capture_cloud(bt::NodeRegistry& registry) { registry.register_node<CaptureCloud>(); }
 
 }  // namespace antipode::pipeline

@@ -27,8 +27,9 @@ class ClassifyHands final : public bt::SyncActionNode {
   bt::Status tick() override {
     auto classified = std::make_shared<HandSet>(*get_input<HandSetPtr>("hands"));
     component<Classifier>("classifier").classify(*classified);
-    const auto grasps = std::count_if(classified->hands.begin(), classified->hands.end(),
-                                      [](const Hand& hand) { return hand.label == HandLabel::kPositive; });
+    const auto grasps =
+        std::count_if(classified->hands.begin(), classified->hands.end(),
+                      [](const Hand& hand) { return hand.label == HandLabel::kPositive; });
     log(std::to_string(grasps) + " of " + std::to_string(classified->hands.size()) +
         " hands classified as grasps");
     set_output("classified", HandSetPtr(std::move(classified)));

@@ -38,8 +38,6 @@ class ExecuteGrasp final : public bt::SyncActionNode {
 
 }  // namespace
 
-void register_execute_grasp(bt::NodeRegistry& registry) {
-  registry.register_node<ExecuteGrasp>();
-}
+void register_execute_grasp(bt::NodeRegistry& registry) { registry.register_node<ExecuteGrasp>(); }
 
 }  // namespace antipode::pipeline

@@ -1,5 +1,5 @@
-#include "antipode/bt/action_node.hpp"
 #include "antipode/io/load_cloud.hpp"
+#include "antipode/bt/action_node.hpp"
 #include "nodes.hpp"
 
 namespace antipode::pipeline {
@@ -12,8 +12,9 @@ class LoadCloud final : public bt::SyncActionNode {
   static bt::NodeManifest manifest() {
     return {"LoadCloud",
             bt::NodeCategory::kAction,
-            {bt::input_port<std::string>("file", "PCD or PLY file, relative to the working "
-                                                 "directory"),
+            {bt::input_port<std::string>("file",
+                                         "PCD or PLY file, relative to the working "
+                                         "directory"),
              bt::input_port<std::vector<double>>(
                  "view_origin_m", std::vector<double>{},
                  "sensor origin [x, y, z]; empty = the file's VIEWPOINT, else the origin"),
@@ -33,8 +34,8 @@ class LoadCloud final : public bt::SyncActionNode {
     if (origin.size() == 3) {
       options.view_origin_m = Eigen::Vector3d(origin[0], origin[1], origin[2]).cast<float>();
     } else if (!origin.empty()) {
-      fail("view_origin_m", "view_origin_m must have 3 numbers, got " +
-                                std::to_string(origin.size()));
+      fail("view_origin_m",
+           "view_origin_m must have 3 numbers, got " + std::to_string(origin.size()));
     }
     auto cloud = std::make_shared<Cloud>(load_cloud(get_input<std::string>("file"), options));
     log(std::to_string(cloud->size()) + " points loaded");

@@ -38,8 +38,6 @@ class SampleHands final : public bt::SyncActionNode {
 
 }  // namespace
 
-void register_sample_hands(bt::NodeRegistry& registry) {
-  registry.register_node<SampleHands>();
-}
+void register_sample_hands(bt::NodeRegistry& registry) { registry.register_node<SampleHands>(); }
 
 }  // namespace antipode::pipeline

@@ -39,8 +39,6 @@ class SelectGrasps final : public bt::SyncActionNode {
 
 }  // namespace
 
-void register_select_grasps(bt::NodeRegistry& registry) {
-  registry.register_node<SelectGrasps>();
-}
+void register_select_grasps(bt::NodeRegistry& registry) { registry.register_node<SelectGrasps>(); }
 
 }  // namespace antipode::pipeline

@@ -37,7 +37,7 @@ class WriteGrasps final : public bt::SyncActionNode {
     return {"WriteGrasps",
             bt::NodeCategory::kAction,
             {bt::input_port<HandSetPtr>("hands", "the hands to write"),
-             bt::input_port<std::string>("file", "output JSON file"),
+             bt::input_port<std::string>("file", std::string(), "output JSON file; empty = none"),
              bt::input_port<bool>("include_rejected", false,
                                   "also write hands a stage rejected, with the reason")},
             0,
@@ -48,6 +48,8 @@ class WriteGrasps final : public bt::SyncActionNode {
 
  protected:
   bt::Status tick() override {
+    const std::string file = get_input<std::string>("file");
+    if (file.empty()) return bt::Status::kSuccess;
     const HandSetPtr set = get_input<HandSetPtr>("hands");
     const bool include_rejected = get_input<bool>("include_rejected");
     nlohmann::json hands = nlohmann::json::array();
@@ -56,7 +58,6 @@ class WriteGrasps final : public bt::SyncActionNode {
     }
     const std::string frame = set->cloud ? set->cloud->frame : std::string();
     const nlohmann::json document = {{"frame", frame}, {"count", hands.size()}, {"hands", hands}};
-    const std::string file = get_input<std::string>("file");
     write_file_atomically(file, [&](const std::string& temporary) {
       std::ofstream out(temporary);
       out << document.dump(1) << "\n";
@@ -69,8 +70,6 @@ class WriteGrasps final : public bt::SyncActionNode {
 
 }  // namespace
 
-void register_write_grasps(bt::NodeRegistry& registry) {
-  registry.register_node<WriteGrasps>();
-}
+void register_write_grasps(bt::NodeRegistry& registry) { registry.register_node<WriteGrasps>(); }
 
 }  // namespace antipode::pipeline

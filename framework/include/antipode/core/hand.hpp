@@ -37,8 +37,8 @@ const char* to_string(Rejection reason);
 struct Hand {
   Eigen::Isometry3d X_FrameHand = Eigen::Isometry3d::Identity();
   std::string frame = "base";
-  double width_m = 0.0;   ///< extent of the object between the fingers along closing
-  double score = 0.0;     ///< higher is better; meaning set by the last stage that scored it
+  double width_m = 0.0;  ///< extent of the object between the fingers along closing
+  double score = 0.0;    ///< higher is better; meaning set by the last stage that scored it
   HandLabel label = HandLabel::kUnknown;
   Rejection rejection = Rejection::kNone;
   std::int32_t sample_index = -1;            ///< which surface sample produced this hand

@@ -18,15 +18,15 @@
 namespace antipode {
 
 struct HandGeometry {
-  double finger_width_m = 0.01;     ///< finger thickness along the closing direction
+  double finger_width_m = 0.01;  ///< finger thickness along the closing direction
   /// Outer distance across both fingers when fully open: the 0.072 m aperture plus two
   /// 0.01 m fingers (agile_grasp rounds this to 0.09).
   double outer_diameter_m = 0.092;
-  double depth_m = 0.06;            ///< finger length along the approach direction
-  double height_m = 0.02;           ///< finger and palm extent along the hand axis (z)
-  double init_bite_m = 0.01;        ///< how far points must reach into the closing region
-  double min_aperture_m = 0.029;    ///< inner distance between fingers when fully closed
-  double max_aperture_m = 0.072;    ///< inner distance between fingers when fully open
+  double depth_m = 0.06;          ///< finger length along the approach direction
+  double height_m = 0.02;         ///< finger and palm extent along the hand axis (z)
+  double init_bite_m = 0.01;      ///< how far points must reach into the closing region
+  double min_aperture_m = 0.029;  ///< inner distance between fingers when fully closed
+  double max_aperture_m = 0.072;  ///< inner distance between fingers when fully open
 
   /// Throws antipode::Error naming the offending field when any value is non-positive or
   /// inconsistent (min >= max aperture, max aperture + 2 fingers > outer diameter + 1 mm,

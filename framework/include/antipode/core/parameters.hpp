@@ -63,8 +63,8 @@ class Parameters {
     try {
       return node_[key].as<T>();
     } catch (const YAML::Exception&) {
-      fail(key, "parameter '" + key + "' of " + owner_ + " must be " + type_name<T>() +
-                    ", got '" + scalar_text(key) + "'");
+      fail(key, "parameter '" + key + "' of " + owner_ + " must be " + type_name<T>() + ", got '" +
+                    scalar_text(key) + "'");
     }
   }
   std::string scalar_text(const std::string& key) const;
@@ -79,11 +79,16 @@ class Parameters {
 
 template <typename T>
 const char* Parameters::type_name() {
-  if constexpr (std::is_same_v<T, bool>) return "true or false";
-  else if constexpr (std::is_integral_v<T>) return "an integer";
-  else if constexpr (std::is_floating_point_v<T>) return "a number";
-  else if constexpr (std::is_same_v<T, std::string>) return "a string";
-  else return "a list or mapping of the documented form";
+  if constexpr (std::is_same_v<T, bool>)
+    return "true or false";
+  else if constexpr (std::is_integral_v<T>)
+    return "an integer";
+  else if constexpr (std::is_floating_point_v<T>)
+    return "a number";
+  else if constexpr (std::is_same_v<T, std::string>)
+    return "a string";
+  else
+    return "a list or mapping of the documented form";
 }
 
 }  // namespace antipode

@@ -63,12 +63,16 @@ typedef const antipode::PluginDescriptor* (*antipode_plugin_entry_fn)();
 /// PluginFactory array FACTORIES (a static array in the plugin):
 ///   static const antipode::PluginFactory kFactories[] = {{...}, {...}};
 ///   ANTIPODE_PLUGIN("my_plugin", "1.0.0", kFactories)
-#define ANTIPODE_PLUGIN(NAME, VERSION, FACTORIES)                                            \
-  extern "C" __attribute__((visibility("default"))) const antipode::PluginDescriptor*       \
-  antipode_plugin_descriptor() {                                                              \
-    static const antipode::PluginDescriptor descriptor = {                                   \
-        antipode::kAbiMajor, antipode::kAbiMinor, sizeof(antipode::PluginDescriptor), NAME,   \
-        VERSION, static_cast<std::uint32_t>(sizeof(FACTORIES) / sizeof((FACTORIES)[0])),      \
-        FACTORIES};                                                                           \
-    return &descriptor;                                                                       \
+#define ANTIPODE_PLUGIN(NAME, VERSION, FACTORIES)                                     \
+  extern "C" __attribute__((visibility("default"))) const antipode::PluginDescriptor* \
+  antipode_plugin_descriptor() {                                                      \
+    static const antipode::PluginDescriptor descriptor = {                            \
+        antipode::kAbiMajor,                                                          \
+        antipode::kAbiMinor,                                                          \
+        sizeof(antipode::PluginDescriptor),                                           \
+        NAME,                                                                         \
+        VERSION,                                                                      \
+        static_cast<std::uint32_t>(sizeof(FACTORIES) / sizeof((FACTORIES)[0])),       \
+        FACTORIES};                                                                   \
+    return &descriptor;                                                               \
   }

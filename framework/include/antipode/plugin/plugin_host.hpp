@@ -30,9 +30,9 @@ struct PluginRecord {
   enum class State { kLoaded, kRefused, kShadowed };
   std::string path;
   State state = State::kRefused;
-  std::string reason;    ///< why refused or shadowed; empty when loaded
-  std::string name;      ///< from the descriptor, when it could be read
-  std::string version;   ///< from the descriptor, when it could be read
+  std::string reason;               ///< why refused or shadowed; empty when loaded
+  std::string name;                 ///< from the descriptor, when it could be read
+  std::string version;              ///< from the descriptor, when it could be read
   std::vector<std::string> offers;  ///< "kind type" for each factory of a loaded library
 };
 

@@ -1,0 +1,67 @@
+#include "draw.hpp"
+
+#include <algorithm>
+#include <array>
+#include <numeric>
+
+#include <opencv2/imgproc.hpp>
+
+namespace antipode::pictures {
+namespace {
+
+cv::Point2d pixel(const ProjectedPoint& p) { return {p.u_px, p.v_px}; }
+
+void draw_box(cv::Mat& image, const OrthoView& view, const HandBox& box,
+              const Eigen::Isometry3d& X_FrameHand, const cv::Scalar& colour, int thickness) {
+  std::array<cv::Point2d, 8> corners;
+  for (int i = 0; i < 8; ++i) {
+    const Eigen::Vector3d p_hand((i & 1) ? box.max_m.x() : box.min_m.x(),
+                                 (i & 2) ? box.max_m.y() : box.min_m.y(),
+                                 (i & 4) ? box.max_m.z() : box.min_m.z());
+    corners[i] = pixel(view.project(X_FrameHand * p_hand));
+  }
+  // The 12 edges join corners that differ in exactly one coordinate bit.
+  for (int a = 0; a < 8; ++a) {
+    for (int bit : {1, 2, 4}) {
+      const int b = a | bit;
+      if (b != a) cv::line(image, corners[a], corners[b], colour, thickness, cv::LINE_AA);
+    }
+  }
+}
+
+}  // namespace
+
+void draw_cloud(cv::Mat& image, const OrthoView& view, const Cloud& cloud) {
+  std::vector<ProjectedPoint> projected(cloud.size());
+  for (std::size_t i = 0; i < cloud.size(); ++i) {
+    projected[i] = view.project(cloud.points_m[i].cast<double>());
+  }
+  std::vector<std::size_t> order(cloud.size());
+  std::iota(order.begin(), order.end(), 0);
+  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+    return projected[a].depth_m > projected[b].depth_m;
+  });
+  double near_m = 0.0, far_m = 0.0;
+  if (!order.empty()) {
+    near_m = projected[order.back()].depth_m;
+    far_m = projected[order.front()].depth_m;
+  }
+  const double range_m = std::max(far_m - near_m, 1e-6);
+  for (const std::size_t i : order) {
+    const ProjectedPoint& p = projected[i];
+    if (p.u_px < 0 || p.v_px < 0 || p.u_px >= image.cols || p.v_px >= image.rows) continue;
+    const double nearness = 1.0 - (p.depth_m - near_m) / range_m;  // 1 = nearest
+    const double shade = 90.0 + 140.0 * nearness;
+    cv::rectangle(image, cv::Rect(static_cast<int>(p.u_px), static_cast<int>(p.v_px), 2, 2),
+                  cv::Scalar(shade, 0.85 * shade, 0.7 * shade), cv::FILLED);
+  }
+}
+
+void draw_hand(cv::Mat& image, const OrthoView& view, const HandBody& body, const Hand& hand,
+               const cv::Scalar& colour, int thickness) {
+  for (const HandBox* box : {&body.finger_minus_y, &body.finger_plus_y, &body.palm}) {
+    draw_box(image, view, *box, hand.X_FrameHand, colour, thickness);
+  }
+}
+
+}  // namespace antipode::pictures

@@ -1,0 +1,150 @@
+#include <algorithm>
+
+#include <opencv2/imgcodecs.hpp>
+#include <opencv2/imgproc.hpp>
+
+#include "antipode/bt/action_node.hpp"
+#include "antipode/bt/node_registry.hpp"
+#include "antipode/core/atomic_file.hpp"
+#include "antipode/plugin/abi.hpp"
+#include "draw.hpp"
+
+namespace antipode::pictures {
+namespace {
+
+// The best `count` candidate hands (no rejection), best first; ties keep their order.
+std::vector<const Hand*> best_hands(const HandSet& set, std::size_t count) {
+  std::vector<const Hand*> hands;
+  for (const Hand& hand : set.hands) {
+    if (hand.rejection == Rejection::kNone) hands.push_back(&hand);
+  }
+  std::stable_sort(hands.begin(), hands.end(),
+                   [](const Hand* a, const Hand* b) { return a->score > b->score; });
+  if (hands.size() > count) hands.resize(count);
+  return hands;
+}
+
+Eigen::Vector3d centroid(const Cloud& cloud) {
+  Eigen::Vector3d sum = Eigen::Vector3d::Zero();
+  for (const auto& p : cloud.points_m) sum += p.cast<double>();
+  return cloud.empty() ? sum : Eigen::Vector3d(sum / static_cast<double>(cloud.size()));
+}
+
+// Where the picture looks and how much it shows: around the hands, else the whole cloud.
+std::pair<Eigen::Vector3d, double> framing(const Cloud& cloud,
+                                           const std::vector<const Hand*>& hands) {
+  Eigen::Vector3d target = Eigen::Vector3d::Zero();
+  for (const Hand* hand : hands) target += hand->position_m();
+  if (hands.empty())
+    target = centroid(cloud);
+  else
+    target /= static_cast<double>(hands.size());
+  double radius_m = 0.0;
+  if (hands.empty()) {
+    for (const auto& p : cloud.points_m)
+      radius_m = std::max(radius_m, (p.cast<double>() - target).norm());
+    return {target, std::max(radius_m, 0.05)};
+  }
+  for (const Hand* hand : hands)
+    radius_m = std::max(radius_m, (hand->position_m() - target).norm());
+  return {target, std::clamp(radius_m + 0.1, 0.12, 1.0)};
+}
+
+/// Draws the cloud and the best hands from the sensor's viewpoint and from the side.
+class DrawGrasps final : public bt::SyncActionNode {
+ public:
+  using SyncActionNode::SyncActionNode;
+  static bt::NodeManifest manifest() {
+    const HandGeometry baxter;
+    return {"DrawGrasps",
+            bt::NodeCategory::kAction,
+            {bt::input_port<HandSetPtr>("hands", "hands and the cloud they came from"),
+             bt::input_port<std::string>("file", std::string(), "output PNG file; empty = none"),
+             bt::input_port<int>("max_hands", 30, "draw at most this many, best score first"),
+             bt::input_port<int>("size_px", 700, "side of each of the two square views"),
+             bt::input_port<std::vector<double>>(
+                 "up", std::vector<double>{},
+                 "up direction [x, y, z]; empty = -y for frame 'sensor', else +z"),
+             bt::input_port<double>("max_aperture_m", baxter.max_aperture_m, "drawn opening"),
+             bt::input_port<double>("finger_width_m", baxter.finger_width_m, "drawn finger"),
+             bt::input_port<double>("depth_m", baxter.depth_m, "drawn finger length"),
+             bt::input_port<double>("height_m", baxter.height_m, "drawn finger height")},
+            0,
+            0,
+            "Draws a cloud with hands as grippers into a PNG (two viewpoints).",
+            {}};
+  }
+
+ protected:
+  bt::Status tick() override {
+    const std::string file = get_input<std::string>("file");
+    if (file.empty()) return bt::Status::kSuccess;
+    const HandSetPtr set = get_input<HandSetPtr>("hands");
+    if (!set->cloud) fail("hands", "the hand set has no cloud to draw");
+    const int size_px = get_input<int>("size_px");
+    if (size_px < 64 || size_px > 4096) fail("size_px", "size_px must be in [64, 4096]");
+    const auto hands =
+        best_hands(*set, static_cast<std::size_t>(std::max(0, get_input<int>("max_hands"))));
+    const auto [target, extent_m] = framing(*set->cloud, hands);
+    Eigen::Vector3d origin = Eigen::Vector3d::Zero();
+    if (!set->cloud->view_origins_m.empty()) origin = set->cloud->view_origins_m[0].cast<double>();
+    Eigen::Vector3d forward = target - origin;
+    if (forward.norm() < 1e-6) forward = Eigen::Vector3d::UnitZ();
+    const OrthoView sensor_view(forward, up_direction(*set->cloud), target, extent_m, size_px);
+    cv::Mat image(size_px, 2 * size_px, CV_8UC3, cv::Scalar(255, 255, 255));
+    cv::Mat left = image(cv::Rect(0, 0, size_px, size_px));
+    cv::Mat right = image(cv::Rect(size_px, 0, size_px, size_px));
+    render(left, sensor_view, *set, hands, "sensor view");
+    render(right, sensor_view.side_view(), *set, hands, "side view");
+    write_file_atomically(file, [&](const std::string& temporary) {
+      if (!cv::imwrite(temporary, image)) throw Error("OpenCV could not write a PNG");
+    });
+    log("picture of " + std::to_string(hands.size()) + " hands written to " + file);
+    return bt::Status::kSuccess;
+  }
+
+ private:
+  Eigen::Vector3d up_direction(const Cloud& cloud) const {
+    const auto up = get_input<std::vector<double>>("up");
+    if (up.size() == 3) return {up[0], up[1], up[2]};
+    if (!up.empty()) fail("up", "up must have 3 numbers");
+    return cloud.frame == "sensor" ? Eigen::Vector3d(0, -1, 0) : Eigen::Vector3d(0, 0, 1);
+  }
+
+  HandBody body() const {
+    HandGeometry geometry;
+    geometry.max_aperture_m = get_input<double>("max_aperture_m");
+    geometry.finger_width_m = get_input<double>("finger_width_m");
+    geometry.depth_m = get_input<double>("depth_m");
+    geometry.height_m = get_input<double>("height_m");
+    geometry.outer_diameter_m = geometry.max_aperture_m + 2 * geometry.finger_width_m;
+    return make_hand_body(geometry, geometry.finger_width_m);
+  }
+
+  void render(cv::Mat& image, const OrthoView& view, const HandSet& set,
+              const std::vector<const Hand*>& hands, const std::string& title) const {
+    draw_cloud(image, view, *set.cloud);
+    const HandBody hand_body = body();
+    // Worst first so the best ends on top; the best in green, the others in orange.
+    for (std::size_t i = hands.size(); i-- > 0;) {
+      const bool best = i == 0;
+      draw_hand(image, view, hand_body, *hands[i],
+                best ? cv::Scalar(40, 170, 40) : cv::Scalar(0, 140, 255), best ? 2 : 1);
+    }
+    const std::string caption = title + ": " + std::to_string(hands.size()) + " of " +
+                                std::to_string(set.hands.size()) + " hands";
+    cv::putText(image, caption, {10, 24}, cv::FONT_HERSHEY_SIMPLEX, 0.6, cv::Scalar(0, 0, 0), 1,
+                cv::LINE_AA);
+  }
+};
+
+void register_draw_grasps(bt::NodeRegistry& registry) { registry.register_node<DrawGrasps>(); }
+
+const PluginFactory kFactories[] = {
+    {"node", "DrawGrasps", "draws a cloud and hands into a PNG", nullptr, &register_draw_grasps},
+};
+
+}  // namespace
+}  // namespace antipode::pictures
+
+ANTIPODE_PLUGIN("picture_nodes", "0.1.0", antipode::pictures::kFactories)
