@@ -105,12 +105,13 @@ struct HandSearchResult {
 
 /// Runs the hand search on `cloud`, which should already be preprocessed (finite points,
 /// workspace, voxels: see preprocess.hpp). Normals are oriented towards the views in each
-/// point's view mask; a cloud without view masks or origins is taken as seen from the
-/// first view origin, or from (0, 0, 0) when it has none.
+/// point's view mask. A cloud without view masks counts as seen by view 0 alone; a cloud
+/// without view origins as seen from (0, 0, 0), with no occlusion test (sample_hands()
+/// supplies a configurable origin instead).
 ///
 /// Deterministic: the result depends on the cloud, the parameters (not `threads`) and
-/// `random`'s seed only. Throws antipode::Error for invalid parameters, an empty cloud or a
-/// sample region without points.
+/// `random`'s seed only. Throws antipode::Error for invalid parameters, an empty or invalid
+/// cloud (Cloud::validate) or a sample region without points.
 HandSearchResult search_hands(const Cloud& cloud, const HandSearchParameters& parameters,
                               const RandomStream& random);
 
