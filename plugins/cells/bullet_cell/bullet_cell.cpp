@@ -1,0 +1,117 @@
+#include "bullet_cell.hpp"
+
+#include <cmath>
+
+#include "antipode/core/error.hpp"
+
+namespace antipode::cells {
+namespace {
+
+bool is_rotation(const Eigen::Matrix3d& r) {
+  return r.allFinite() && (r.transpose() * r - Eigen::Matrix3d::Identity()).norm() < 1e-3 &&
+         r.determinant() > 0.0;
+}
+
+double in_range(const Parameters& p, const std::string& key, double fallback, double lo,
+                double hi) {
+  const double value = p.get<double>(key, fallback);
+  if (!(value >= lo && value <= hi))
+    p.fail(key,
+           "'" + key + "' must be in [" + std::to_string(lo) + ", " + std::to_string(hi) + "]");
+  return value;
+}
+
+SceneSpec scene_of(const Parameters& params) {
+  const std::string path = params.require<std::string>("scene");
+  try {
+    return read_scene(resolve_path(path, params.file()));
+  } catch (const Error& error) {
+    if (std::string(error.what()).find(path) != std::string::npos) throw;
+    params.fail("scene", std::string("scene: ") + error.what());
+  }
+}
+
+}  // namespace
+
+CellOptions read_cell_options(const Parameters& p, const SceneSpec& scene) {
+  CellOptions o;
+  o.seed = p.get<std::uint64_t>("seed", scene.seed);
+  o.sensor.scale = in_range(p, "noise", 1.0, 0.0, 10.0);
+  o.physics.time_step_s = 1.0 / in_range(p, "physics_hz", 240.0, 60.0, 2000.0);
+  o.physics.solver_iterations = int(in_range(p, "solver_iterations", 50, 1, 1000));
+  AttemptOptions& a = o.attempt;
+  a.standoff_m = in_range(p, "standoff_m", a.standoff_m, 0.0, 0.5);
+  a.approach_step_m = in_range(p, "approach_step_m", a.approach_step_m, 0.0005, 0.02);
+  a.lift_m = in_range(p, "lift_m", a.lift_m, 0.02, 0.5);
+  a.hold_s = in_range(p, "hold_s", a.hold_s, 0.0, 10.0);
+  a.gripper.finger_force_n = in_range(p, "finger_force_n", a.gripper.finger_force_n, 0.1, 500.0);
+  a.gripper.friction = in_range(p, "gripper_friction", a.gripper.friction, 0.05, 1.0);
+  a.gripper.palm_thickness_m = in_range(p, "palm_thickness_m", 0.02, 0.001, 0.2);
+  a.table_top_z_m = scene.table.top_z_m;
+  return o;
+}
+
+BulletCell::BulletCell(const Parameters& params) : scene_(scene_of(params)) {
+  options_ = read_cell_options(params, scene_);
+  params.reject_unknown();
+  reset(options_.seed);
+}
+
+BulletCell::BulletCell(SceneSpec scene, const CellOptions& options)
+    : scene_(std::move(scene)), options_(options) {
+  reset(options_.seed);
+}
+
+std::vector<std::string> BulletCell::view_names() const {
+  std::vector<std::string> names;
+  for (const auto& camera : scene_.cameras) names.push_back(camera.name);
+  return names;
+}
+
+Cloud BulletCell::capture(const std::vector<std::string>& views) {
+  if (views.size() > 32) throw Error("a cloud holds at most 32 views");
+  renderer_.set_scene(world_->visuals());
+  const RandomStream random = RandomStream(seed_).derive(1000 + std::uint64_t(captures_++));
+  Cloud cloud;
+  for (std::size_t v = 0; v < views.size(); ++v) {
+    const CameraSpec* camera = nullptr;
+    for (const auto& c : scene_.cameras)
+      if (c.name == views[v]) camera = &c;
+    if (!camera) throw Error("the cell has no view '" + views[v] + "'");
+    renderer_.render(*camera, options_.sensor, random.derive(v), std::uint32_t(v), cloud);
+    cloud.view_origins_m.push_back(camera->position_m.cast<float>());
+  }
+  return cloud;
+}
+
+GraspOutcome BulletCell::execute(const Hand& grasp, const Trajectory&) {
+  if (grasp.frame != "base" || !is_rotation(grasp.X_FrameHand.linear()) ||
+      !grasp.X_FrameHand.translation().allFinite())
+    return GraspOutcome::kNotExecuted;
+  ++attempts_;
+  const std::size_t before = objects().size();
+  const AttemptResult result = attempt_grasp(*world_, grasp.X_FrameHand, options_.attempt);
+  if (result.outcome == GraspOutcome::kSuccess) world_->remove_body(result.held_object);
+  world_->settle(1.0);
+  remove_fallen_objects();
+  const std::size_t expected = before - (result.outcome == GraspOutcome::kSuccess ? 1 : 0);
+  if (result.outcome != GraspOutcome::kSuccess &&
+      result.outcome != GraspOutcome::kCollisionOnApproach && objects().size() < expected)
+    return GraspOutcome::kObjectKnockedOut;
+  return result.outcome;
+}
+
+void BulletCell::remove_fallen_objects() {
+  for (int id : objects())
+    if (world_->pose(id).translation().z() < scene_.table.top_z_m - 0.01) world_->remove_body(id);
+}
+
+void BulletCell::reset(std::uint64_t seed) {
+  seed_ = seed;
+  captures_ = 0;
+  attempts_ = 0;
+  world_ = std::make_unique<PhysicsWorld>(options_.physics);
+  build_scene(scene_, seed, meshes_, *world_);
+}
+
+}  // namespace antipode::cells

@@ -1,0 +1,54 @@
+#pragma once
+// The bullet_cell component: a simulated table-top cell (Bullet physics, Embree depth views).
+
+#include <memory>
+
+#include "antipode/core/parameters.hpp"
+#include "antipode/interfaces/cell.hpp"
+#include "depth_renderer.hpp"
+#include "grasp_attempt.hpp"
+#include "scene_builder.hpp"
+
+namespace antipode::cells {
+
+struct CellOptions {
+  PhysicsOptions physics;
+  AttemptOptions attempt;
+  SensorModel sensor;
+  std::uint64_t seed = 0;
+};
+
+/// Reads the cell's parameters (docs/cell.md); throws antipode::Error located in the file.
+CellOptions read_cell_options(const Parameters& params, const SceneSpec& scene);
+
+class BulletCell final : public Cell {
+ public:
+  /// From tree parameters: `scene` (a scene file) and the options of docs/cell.md.
+  explicit BulletCell(const Parameters& params);
+  BulletCell(SceneSpec scene, const CellOptions& options);
+
+  std::vector<std::string> view_names() const override;
+  Cloud capture(const std::vector<std::string>& views) override;
+  GraspOutcome execute(const Hand& grasp, const Trajectory& trajectory) override;
+  void reset(std::uint64_t seed) override;
+
+  /// Ground truth, for tests and tools.
+  const PhysicsWorld& world() const { return *world_; }
+  std::vector<int> objects() const { return world_->ids(BodyRole::kObject); }
+  const SceneSpec& scene() const { return scene_; }
+  int attempts() const { return attempts_; }
+
+ private:
+  void remove_fallen_objects();
+
+  SceneSpec scene_;
+  CellOptions options_;
+  MeshCache meshes_;
+  std::unique_ptr<PhysicsWorld> world_;
+  DepthRenderer renderer_;
+  std::uint64_t seed_ = 0;
+  int captures_ = 0;
+  int attempts_ = 0;
+};
+
+}  // namespace antipode::cells

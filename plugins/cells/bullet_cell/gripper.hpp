@@ -1,0 +1,55 @@
+#pragma once
+// The simulated parallel gripper: a kinematic palm carried along the commanded hand poses
+// and two dynamic fingers on prismatic joints whose motors are force-limited.
+
+#include <set>
+
+#include "antipode/core/hand_geometry.hpp"
+#include "physics_world.hpp"
+
+class btSliderConstraint;
+
+namespace antipode::cells {
+
+struct GripperOptions {
+  HandGeometry geometry;           ///< finger sizes and apertures (the Baxter defaults)
+  double palm_thickness_m = 0.02;  ///< palm box behind the palm face
+  double finger_mass_kg = 0.05;
+  double finger_force_n = 20.0;  ///< per finger, like the VGN/GIGA benchmark's motors
+  double finger_speed_m_s = 0.1;
+  double friction = 1.0;
+};
+
+/// Adds itself to a world at a hand pose (fingers fully open) and removes itself when
+/// destroyed. Hand frame as in hand_geometry.hpp: x approach, y closing, origin at the
+/// centre of the palm face.
+class Gripper {
+ public:
+  Gripper(PhysicsWorld& world, const GripperOptions& options, const Eigen::Isometry3d& X_BaseHand);
+  ~Gripper();
+  Gripper(const Gripper&) = delete;
+  Gripper& operator=(const Gripper&) = delete;
+
+  /// Commands the palm to `X_BaseHand`; it gets there over the next world step.
+  void move_to(const Eigen::Isometry3d& X_BaseHand);
+  const Eigen::Isometry3d& pose() const { return X_BaseHand_; }
+  /// Drives both fingers: negative closes, positive opens (m/s), force-limited.
+  void drive_fingers(double velocity_m_s);
+  /// Inner distance between the fingers now.
+  double aperture_m() const;
+
+  /// Non-gripper bodies touching any part of the gripper now.
+  std::set<int> touching(double tolerance_m = 0.0) const;
+  /// Objects touching both fingers now.
+  std::set<int> pinched(double tolerance_m) const;
+
+ private:
+  PhysicsWorld& world_;
+  GripperOptions options_;
+  Eigen::Isometry3d X_BaseHand_;
+  int palm_ = -1;
+  int fingers_[2] = {-1, -1};  // at -y, at +y
+  btSliderConstraint* sliders_[2] = {nullptr, nullptr};
+};
+
+}  // namespace antipode::cells

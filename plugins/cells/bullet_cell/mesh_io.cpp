@@ -1,0 +1,81 @@
+#include "mesh_io.hpp"
+
+#include <cstdint>
+#include <cstring>
+#include <fstream>
+#include <map>
+#include <sstream>
+#include <tuple>
+
+#include "antipode/core/error.hpp"
+
+namespace antipode::cells {
+namespace {
+
+// The vertex index of an OBJ face token "v", "v/vt", "v//vn" or "v/vt/vn" (1-based or
+// negative = relative to the end), as a 0-based index.
+int face_index(const std::string& token, int vertex_count, const std::string& path) {
+  const int raw = std::stoi(token.substr(0, token.find('/')));
+  const int index = raw < 0 ? vertex_count + raw : raw - 1;
+  if (index < 0 || index >= vertex_count)
+    throw Error(path + ": face refers to vertex " + std::to_string(raw) + " of " +
+                std::to_string(vertex_count));
+  return index;
+}
+
+}  // namespace
+
+TriangleMesh read_obj(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw Error(path + ": cannot open");
+  TriangleMesh mesh;
+  std::string line;
+  while (std::getline(in, line)) {
+    std::istringstream fields(line);
+    std::string tag;
+    fields >> tag;
+    if (tag == "v") {
+      Eigen::Vector3f v;
+      if (!(fields >> v.x() >> v.y() >> v.z()))
+        throw Error(path + ": bad vertex line '" + line + "'");
+      mesh.vertices.push_back(v);
+    } else if (tag == "f") {
+      std::vector<int> face;
+      for (std::string token; fields >> token;)
+        face.push_back(face_index(token, int(mesh.vertices.size()), path));
+      for (std::size_t k = 2; k < face.size(); ++k)
+        mesh.triangles.emplace_back(face[0], face[k - 1], face[k]);
+    }
+  }
+  if (mesh.empty()) throw Error(path + ": no faces");
+  return mesh;
+}
+
+TriangleMesh read_binary_stl(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw Error(path + ": cannot open");
+  char header[80];
+  std::uint32_t count = 0;
+  if (!in.read(header, 80) || !in.read(reinterpret_cast<char*>(&count), 4))
+    throw Error(path + ": truncated STL header");
+  TriangleMesh mesh;
+  std::map<std::tuple<float, float, float>, int> welded;
+  for (std::uint32_t i = 0; i < count; ++i) {
+    char record[50];
+    if (!in.read(record, 50)) throw Error(path + ": truncated at triangle " + std::to_string(i));
+    Eigen::Vector3i triangle;
+    for (int k = 0; k < 3; ++k) {
+      float xyz[3];
+      std::memcpy(xyz, record + 12 + 12 * k, 12);
+      const auto key = std::make_tuple(xyz[0], xyz[1], xyz[2]);
+      auto [it, inserted] = welded.emplace(key, int(mesh.vertices.size()));
+      if (inserted) mesh.vertices.emplace_back(xyz[0], xyz[1], xyz[2]);
+      triangle[k] = it->second;
+    }
+    mesh.triangles.push_back(triangle);
+  }
+  if (mesh.empty()) throw Error(path + ": no triangles");
+  return mesh;
+}
+
+}  // namespace antipode::cells

@@ -1,0 +1,69 @@
+#include "mesh_objects.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+
+#include "antipode/core/error.hpp"
+#include "mesh_io.hpp"
+
+namespace fs = std::filesystem;
+
+namespace antipode::cells {
+namespace {
+
+double smallest_width(const TriangleMesh& mesh) {
+  const Eigen::Vector3f size = mesh.bounds().sizes();
+  return std::min(size.x(), size.y());
+}
+
+// Mass from the enclosed volume; scans that are not closed fall back to half their box.
+double mass_of(const TriangleMesh& mesh, double density) {
+  double volume = std::abs(mesh.volume());
+  const double box = double(mesh.bounds().volume());
+  if (!(volume > 0.05 * box)) volume = 0.5 * box;
+  return std::max(0.005, volume * density);
+}
+
+}  // namespace
+
+std::vector<std::string> list_mesh_objects(const std::string& folder) {
+  if (!fs::is_directory(folder)) throw Error("mesh object folder '" + folder + "' not found");
+  std::vector<std::string> names;
+  for (const auto& entry : fs::directory_iterator(folder)) {
+    if (entry.is_directory() && fs::exists(entry.path() / "visual.obj"))
+      names.push_back(entry.path().filename().string());
+    else if (entry.path().extension() == ".obj")
+      names.push_back(entry.path().stem().string());
+  }
+  std::sort(names.begin(), names.end());
+  if (names.empty()) throw Error("mesh object folder '" + folder + "' holds no object");
+  return names;
+}
+
+ObjectModel load_mesh_object(const std::string& folder, const std::string& name, double scale,
+                             double density, double friction) {
+  const fs::path dir = fs::path(folder) / name;
+  const bool nested = fs::exists(dir / "visual.obj");
+  TriangleMesh visual = read_obj(nested ? (dir / "visual.obj").string() : dir.string() + ".obj");
+  std::vector<TriangleMesh> hulls;
+  if (nested && fs::exists(dir / "collision.stl"))
+    hulls = connected_pieces(read_binary_stl((dir / "collision.stl").string()));
+  else
+    hulls = {visual};
+  const Eigen::Affine3f scaling(Eigen::Scaling(float(scale)));
+  visual.transform(scaling);
+  for (auto& hull : hulls) hull.transform(scaling);
+  centre_on_mass(visual, hulls);
+  ObjectModel model;
+  model.name = name;
+  model.mass_kg = mass_of(visual, density);
+  model.graspable_width_m = smallest_width(visual);
+  model.visual = std::make_shared<const TriangleMesh>(std::move(visual));
+  model.collision.kind = CollisionKind::kHulls;
+  model.collision.hulls = std::move(hulls);
+  model.friction = friction;
+  return model;
+}
+
+}  // namespace antipode::cells

@@ -1,0 +1,40 @@
+#pragma once
+// A graspable object: what the sensor sees (visual mesh), what the physics touches
+// (collision shape) and its mass and friction. Both shapes share the object's frame, whose
+// origin is the centre of mass.
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "triangle_mesh.hpp"
+
+namespace antipode::cells {
+
+enum class CollisionKind { kBox, kCylinder, kSphere, kCapsule, kHulls };
+
+/// The collision shape. Primitives use Bullet's exact shapes (axis along z); everything else
+/// is one convex hull per piece of `hulls`.
+struct CollisionSpec {
+  CollisionKind kind = CollisionKind::kHulls;
+  Eigen::Vector3d half_extents_m = Eigen::Vector3d::Zero();  ///< box
+  double radius_m = 0.0;                                     ///< cylinder, sphere, capsule
+  double half_height_m = 0.0;  ///< cylinder; capsule: half the straight part
+  std::vector<TriangleMesh> hulls;
+};
+
+struct ObjectModel {
+  std::string name;
+  std::shared_ptr<const TriangleMesh> visual;
+  CollisionSpec collision;
+  double mass_kg = 0.1;
+  double friction = 0.8;
+  /// The smallest extent across the object's z axis: what a gripper closing sideways on an
+  /// upright object must span.
+  double graspable_width_m = 0.0;
+};
+
+/// Moves `visual` and every hull so that the visual mesh's volume centroid is the origin.
+void centre_on_mass(TriangleMesh& visual, std::vector<TriangleMesh>& hulls);
+
+}  // namespace antipode::cells

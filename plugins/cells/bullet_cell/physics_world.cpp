@@ -1,0 +1,223 @@
+#include "physics_world.hpp"
+
+#include <algorithm>
+
+#include "antipode/core/error.hpp"
+#include "bullet_convert.hpp"
+#include "collision_shape.hpp"
+#include "primitive_meshes.hpp"
+
+namespace antipode::cells {
+
+struct PhysicsWorld::Engine {
+  btDefaultCollisionConfiguration configuration;
+  btCollisionDispatcher dispatcher{&configuration};
+  btDbvtBroadphase broadphase;
+  btSequentialImpulseConstraintSolver solver;
+  btDiscreteDynamicsWorld world{&dispatcher, &broadphase, &solver, &configuration};
+};
+
+struct PhysicsWorld::Entry {
+  BodyRole role = BodyRole::kFixture;
+  std::string name;
+  ShapeHolder shape;
+  std::unique_ptr<btDefaultMotionState> motion;
+  std::unique_ptr<btRigidBody> body;
+  std::shared_ptr<const TriangleMesh> visual;  // null = not rendered
+};
+
+namespace {
+
+std::unique_ptr<btRigidBody> make_body(ShapeHolder& shape, btDefaultMotionState* motion,
+                                       double mass_kg, double friction) {
+  btVector3 inertia(0, 0, 0);
+  if (mass_kg > 0.0) shape.root->calculateLocalInertia(btScalar(mass_kg), inertia);
+  btRigidBody::btRigidBodyConstructionInfo info(btScalar(mass_kg), motion, shape.root.get(),
+                                                inertia);
+  info.m_friction = btScalar(friction);
+  info.m_restitution = 0.0f;
+  auto body = std::make_unique<btRigidBody>(info);
+  body->setRollingFriction(0.0005f);
+  body->setSpinningFriction(0.0005f);
+  return body;
+}
+
+// The id stored in a body's user index, -1 for bodies this world did not create.
+int id_of(const btCollisionObject* object) { return object->getUserIndex(); }
+
+}  // namespace
+
+PhysicsWorld::PhysicsWorld(const PhysicsOptions& options)
+    : options_(options), engine_(std::make_unique<Engine>()) {
+  engine_->world.setGravity(btVector3(0, 0, -9.81f));
+  engine_->world.getSolverInfo().m_numIterations = options.solver_iterations;
+}
+
+PhysicsWorld::~PhysicsWorld() {
+  remove_constraints();
+  for (auto& [id, entry] : bodies_) engine_->world.removeRigidBody(entry->body.get());
+}
+
+int PhysicsWorld::insert(std::unique_ptr<Entry> entry) {
+  const int id = next_id_++;
+  entry->body->setUserIndex(id);
+  engine_->world.addRigidBody(entry->body.get());
+  bodies_[id] = std::move(entry);
+  return id;
+}
+
+int PhysicsWorld::add_fixture_box(const Eigen::Isometry3d& pose, const Eigen::Vector3d& half,
+                                  double friction, bool visible) {
+  auto entry = std::make_unique<Entry>();
+  entry->name = "fixture";
+  entry->shape = make_box_shape(half, options_.margin_m);
+  entry->motion = std::make_unique<btDefaultMotionState>(to_bullet(pose));
+  entry->body = make_body(entry->shape, entry->motion.get(), 0.0, friction);
+  if (visible) entry->visual = std::make_shared<const TriangleMesh>(box_mesh(half.cast<float>()));
+  return insert(std::move(entry));
+}
+
+int PhysicsWorld::add_object(const ObjectModel& model, const Eigen::Isometry3d& pose) {
+  auto entry = std::make_unique<Entry>();
+  entry->role = BodyRole::kObject;
+  entry->name = model.name;
+  entry->shape = make_collision_shape(model.collision, options_.margin_m);
+  entry->motion = std::make_unique<btDefaultMotionState>(to_bullet(pose));
+  entry->body = make_body(entry->shape, entry->motion.get(), model.mass_kg, model.friction);
+  entry->visual = model.visual;
+  return insert(std::move(entry));
+}
+
+int PhysicsWorld::add_gripper_box(const Eigen::Isometry3d& pose, const Eigen::Vector3d& half,
+                                  double mass_kg, double friction) {
+  auto entry = std::make_unique<Entry>();
+  entry->role = BodyRole::kGripper;
+  entry->name = "gripper";
+  entry->shape = make_box_shape(half, options_.margin_m);
+  entry->motion = std::make_unique<btDefaultMotionState>(to_bullet(pose));
+  entry->body = make_body(entry->shape, entry->motion.get(), mass_kg, friction);
+  btRigidBody& body = *entry->body;
+  body.setActivationState(DISABLE_DEACTIVATION);
+  if (mass_kg <= 0.0)
+    body.setCollisionFlags(body.getCollisionFlags() | btCollisionObject::CF_KINEMATIC_OBJECT);
+  else
+    body.setFlags(body.getFlags() | BT_DISABLE_WORLD_GRAVITY);
+  return insert(std::move(entry));
+}
+
+void PhysicsWorld::remove_body(int id) {
+  auto it = bodies_.find(id);
+  if (it == bodies_.end()) return;
+  engine_->world.removeRigidBody(it->second->body.get());
+  bodies_.erase(it);
+}
+
+void PhysicsWorld::add_constraint(btTypedConstraint* constraint) {
+  constraints_.emplace_back(constraint);
+  engine_->world.addConstraint(constraint, true);
+}
+
+void PhysicsWorld::remove_constraints() {
+  for (auto& c : constraints_) engine_->world.removeConstraint(c.get());
+  constraints_.clear();
+}
+
+btRigidBody& PhysicsWorld::body(int id) const {
+  auto it = bodies_.find(id);
+  if (it == bodies_.end()) throw Error("physics body " + std::to_string(id) + " does not exist");
+  return *it->second->body;
+}
+
+BodyRole PhysicsWorld::role(int id) const { return bodies_.at(id)->role; }
+const std::string& PhysicsWorld::name(int id) const { return bodies_.at(id)->name; }
+
+std::vector<int> PhysicsWorld::ids(BodyRole role) const {
+  std::vector<int> out;
+  for (const auto& [id, entry] : bodies_)
+    if (entry->role == role) out.push_back(id);
+  return out;
+}
+
+Eigen::Isometry3d PhysicsWorld::pose(int id) const {
+  return from_bullet(body(id).getWorldTransform());
+}
+
+void PhysicsWorld::move_kinematic(int id, const Eigen::Isometry3d& pose) {
+  bodies_.at(id)->motion->setWorldTransform(to_bullet(pose));
+}
+
+void PhysicsWorld::step(int steps) {
+  const btScalar dt = btScalar(options_.time_step_s);
+  for (int i = 0; i < steps; ++i) engine_->world.stepSimulation(dt, 0, dt);
+  steps_ += steps;
+}
+
+void PhysicsWorld::settle(double max_s, double speed_m_s) {
+  const int check_every = 12;
+  for (double t = 0.0; t < max_s; t += check_every * options_.time_step_s) {
+    step(check_every);
+    bool resting = true;
+    for (int id : ids(BodyRole::kObject)) {
+      const btRigidBody& b = body(id);
+      if (b.getLinearVelocity().length() > speed_m_s ||
+          b.getAngularVelocity().length() > 20.0 * speed_m_s)
+        resting = false;
+    }
+    if (resting) return;
+  }
+}
+
+std::set<std::pair<int, int>> PhysicsWorld::contacts(double tolerance_m) const {
+  std::set<std::pair<int, int>> pairs;
+  btDispatcher* dispatcher = engine_->world.getDispatcher();
+  for (int m = 0; m < dispatcher->getNumManifolds(); ++m) {
+    const btPersistentManifold* manifold = dispatcher->getManifoldByIndexInternal(m);
+    for (int c = 0; c < manifold->getNumContacts(); ++c) {
+      if (manifold->getContactPoint(c).getDistance() > tolerance_m) continue;
+      const int a = id_of(manifold->getBody0()), b = id_of(manifold->getBody1());
+      pairs.emplace(std::min(a, b), std::max(a, b));
+      break;
+    }
+  }
+  return pairs;
+}
+
+std::set<int> PhysicsWorld::touching(int id, double tolerance_m) const {
+  struct Collector : btCollisionWorld::ContactResultCallback {
+    double tolerance;
+    std::set<int> found;
+    btScalar addSingleResult(btManifoldPoint& point, const btCollisionObjectWrapper* a, int, int,
+                             const btCollisionObjectWrapper* b, int, int) override {
+      if (point.getDistance() <= tolerance) {
+        found.insert(id_of(a->getCollisionObject()));
+        found.insert(id_of(b->getCollisionObject()));
+      }
+      return 0;
+    }
+  } collector;
+  collector.tolerance = tolerance_m;
+  collector.m_closestDistanceThreshold = btScalar(std::max(0.0, tolerance_m));
+  engine_->world.contactTest(&body(id), collector);
+  collector.found.erase(id);
+  return collector.found;
+}
+
+double PhysicsWorld::deepest_penetration() const {
+  double deepest = 0.0;
+  btDispatcher* dispatcher = engine_->world.getDispatcher();
+  for (int m = 0; m < dispatcher->getNumManifolds(); ++m) {
+    const btPersistentManifold* manifold = dispatcher->getManifoldByIndexInternal(m);
+    for (int c = 0; c < manifold->getNumContacts(); ++c)
+      deepest = std::max(deepest, -double(manifold->getContactPoint(c).getDistance()));
+  }
+  return deepest;
+}
+
+std::vector<PhysicsWorld::Visual> PhysicsWorld::visuals() const {
+  std::vector<Visual> out;
+  for (const auto& [id, entry] : bodies_)
+    if (entry->visual) out.push_back({entry->visual, pose(id)});
+  return out;
+}
+
+}  // namespace antipode::cells

@@ -1,0 +1,91 @@
+#pragma once
+// One Bullet world (Bullet is not thread-safe across a shared world: one per cell instance).
+// Bodies are named by integer ids that stay valid until removed.
+
+#include <map>
+#include <memory>
+#include <set>
+#include <vector>
+
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+
+#include "object_model.hpp"
+
+class btRigidBody;
+class btCollisionShape;
+class btDiscreteDynamicsWorld;
+class btTypedConstraint;
+
+namespace antipode::cells {
+
+struct PhysicsOptions {
+  double time_step_s = 1.0 / 240.0;  ///< VGN/GIGA step at 240 Hz
+  int solver_iterations = 50;
+  double margin_m = 0.001;  ///< convex margin; Bullet's 0.04 m default would float objects
+};
+
+enum class BodyRole { kFixture, kObject, kGripper };
+
+class PhysicsWorld {
+ public:
+  explicit PhysicsWorld(const PhysicsOptions& options);
+  ~PhysicsWorld();
+  PhysicsWorld(const PhysicsWorld&) = delete;
+  PhysicsWorld& operator=(const PhysicsWorld&) = delete;
+
+  /// A static box (table, box walls), rendered unless `visible` is false.
+  int add_fixture_box(const Eigen::Isometry3d& pose, const Eigen::Vector3d& half_extents_m,
+                      double friction, bool visible = true);
+  int add_object(const ObjectModel& model, const Eigen::Isometry3d& pose);
+  /// A box body of the gripper: dynamic with `mass_kg` > 0 (no gravity), kinematic with 0.
+  int add_gripper_box(const Eigen::Isometry3d& pose, const Eigen::Vector3d& half_extents_m,
+                      double mass_kg, double friction);
+  void remove_body(int id);
+  void add_constraint(btTypedConstraint* constraint);  // the world takes ownership
+  void remove_constraints();
+
+  btRigidBody& body(int id) const;
+  BodyRole role(int id) const;
+  bool has(int id) const { return bodies_.count(id) != 0; }
+  std::vector<int> ids(BodyRole role) const;
+  const std::string& name(int id) const;
+
+  Eigen::Isometry3d pose(int id) const;
+  /// Moves a kinematic body; it reaches `pose` over the next step.
+  void move_kinematic(int id, const Eigen::Isometry3d& pose);
+
+  void step(int steps = 1);
+  /// Steps until every object moves slower than `speed_m_s` (or `max_s` has passed).
+  void settle(double max_s, double speed_m_s = 0.005);
+  double time_s() const { return steps_ * options_.time_step_s; }
+  const PhysicsOptions& options() const { return options_; }
+
+  /// Pairs of body ids in contact (distance below `tolerance_m`) after the last step.
+  std::set<std::pair<int, int>> contacts(double tolerance_m = 0.0) const;
+  /// Ids of bodies touching body `id` now (a fresh collision query, no stepping).
+  std::set<int> touching(int id, double tolerance_m = 0.0) const;
+  /// The deepest interpenetration (m, >= 0) between any two bodies after the last step.
+  double deepest_penetration() const;
+
+  /// What the renderer draws: a mesh and its pose per visible body.
+  struct Visual {
+    std::shared_ptr<const TriangleMesh> mesh;
+    Eigen::Isometry3d pose;
+  };
+  std::vector<Visual> visuals() const;
+
+ private:
+  struct Entry;
+  int insert(std::unique_ptr<Entry> entry);
+
+  PhysicsOptions options_;
+  struct Engine;
+  std::unique_ptr<Engine> engine_;
+  std::map<int, std::unique_ptr<Entry>> bodies_;
+  std::vector<std::unique_ptr<btTypedConstraint>> constraints_;
+  int next_id_ = 0;
+  long steps_ = 0;
+};
+
+}  // namespace antipode::cells

@@ -1,0 +1,211 @@
+#include "scene_spec.hpp"
+
+#include <filesystem>
+
+#include "antipode/core/error.hpp"
+#include "antipode/core/parameters.hpp"
+
+namespace fs = std::filesystem;
+
+namespace antipode::cells {
+namespace {
+
+Eigen::VectorXd vector_at(const Parameters& p, const std::string& key, std::size_t n,
+                          const Eigen::VectorXd& fallback) {
+  if (!p.has(key)) {
+    p.get<std::vector<double>>(key, {});
+    return fallback;
+  }
+  const auto values = p.require<std::vector<double>>(key);
+  if (values.size() != n) p.fail(key, "'" + key + "' needs " + std::to_string(n) + " numbers");
+  return Eigen::Map<const Eigen::VectorXd>(values.data(), Eigen::Index(n));
+}
+
+double positive(const Parameters& p, const std::string& key, double fallback) {
+  const double value = p.get<double>(key, fallback);
+  if (!(value > 0.0)) p.fail(key, "'" + key + "' must be positive");
+  return value;
+}
+
+double friction_at(const Parameters& p, double fallback) {
+  const double value = p.get<double>("friction", fallback);
+  if (!(value > 0.0 && value <= 1.0)) p.fail("friction", "'friction' must be in (0, 1]");
+  return value;
+}
+
+TableSpec parse_table(const Parameters& p) {
+  TableSpec t;
+  t.top_z_m = p.get<double>("top_z_m", t.top_z_m);
+  t.center_m = vector_at(p, "center_m", 2, t.center_m);
+  t.size_m = vector_at(p, "size_m", 2, t.size_m);
+  t.friction = friction_at(p, t.friction);
+  p.reject_unknown();
+  return t;
+}
+
+BoxSpec parse_box(const Parameters& p, const TableSpec& table) {
+  BoxSpec b;
+  b.present = true;
+  b.center_m = vector_at(p, "center_m", 2, table.center_m);
+  b.inner_size_m = vector_at(p, "inner_size_m", 2, b.inner_size_m);
+  b.wall_height_m = positive(p, "wall_height_m", b.wall_height_m);
+  b.wall_thickness_m = positive(p, "wall_thickness_m", b.wall_thickness_m);
+  p.reject_unknown();
+  return b;
+}
+
+Eigen::Isometry3d pose_from(const Eigen::Vector3d& position, const Eigen::Vector3d& rpy) {
+  Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
+  pose.linear() = (Eigen::AngleAxisd(rpy.z(), Eigen::Vector3d::UnitZ()) *
+                   Eigen::AngleAxisd(rpy.y(), Eigen::Vector3d::UnitY()) *
+                   Eigen::AngleAxisd(rpy.x(), Eigen::Vector3d::UnitX()))
+                      .toRotationMatrix();
+  pose.translation() = position;
+  return pose;
+}
+
+ObjectEntry parse_object(const Parameters& p, const std::string& scene_file) {
+  ObjectEntry e;
+  e.shape = p.get<std::string>("shape", "");
+  e.size_m = p.get<std::vector<double>>("size_m", {});
+  e.mesh = p.get<std::string>("mesh", "");
+  e.folder = p.get<std::string>("folder", "");
+  if (e.shape.empty() == e.mesh.empty())
+    p.fail("shape", "an object needs exactly one of 'shape' and 'mesh'");
+  if (!e.mesh.empty()) {
+    if (e.folder.empty()) p.fail("folder", "a mesh object needs 'folder'");
+    e.folder = resolve_path(e.folder, scene_file);
+  }
+  e.scale = positive(p, "scale", 1.0);
+  e.density_kg_m3 = positive(p, "density_kg_m3", e.density_kg_m3);
+  e.friction = friction_at(p, e.friction);
+  const Eigen::Vector3d rpy = vector_at(p, "rpy_rad", 3, Eigen::Vector3d::Zero());
+  if (p.has("position_m")) {
+    const auto xyz = p.require<std::vector<double>>("position_m");
+    if (xyz.size() != 2 && xyz.size() != 3)
+      p.fail("position_m", "'position_m' needs [x, y] (resting on the table) or [x, y, z]");
+    e.rest_on_table = xyz.size() == 2;
+    e.pose = pose_from({xyz[0], xyz[1], xyz.size() == 3 ? xyz[2] : 0.0}, rpy);
+  }
+  p.reject_unknown();
+  return e;
+}
+
+RandomObjects parse_random(const Parameters& p, const std::string& scene_file) {
+  RandomObjects r;
+  r.count = p.require<int>("count");
+  if (r.count < 0 || r.count > 100) p.fail("count", "'count' must be in [0, 100]");
+  r.shapes = p.get<std::vector<std::string>>("shapes", {});
+  r.folder = p.get<std::string>("folder", "");
+  r.names = p.get<std::vector<std::string>>("names", {});
+  if (r.shapes.empty() == r.folder.empty())
+    p.fail("shapes", "random objects need exactly one of 'shapes' and 'folder'");
+  if (!r.folder.empty()) r.folder = resolve_path(r.folder, scene_file);
+  const Eigen::Vector2d scale = vector_at(p, "scale", 2, Eigen::Vector2d(1.0, 1.0));
+  if (!(scale[0] > 0.0 && scale[1] >= scale[0])) p.fail("scale", "'scale' needs 0 < lo <= hi");
+  r.min_scale = scale[0];
+  r.max_scale = scale[1];
+  r.ranges.graspable_share = p.get<double>("graspable_share", r.ranges.graspable_share);
+  p.reject_unknown();
+  return r;
+}
+
+CameraSpec parse_camera(const std::string& name, const Parameters& p) {
+  CameraSpec c;
+  c.name = name;
+  c.position_m = vector_at(p, "position_m", 3, c.position_m);
+  c.look_at_m = vector_at(p, "look_at_m", 3, c.look_at_m);
+  c.width_px = p.get<int>("width_px", c.width_px);
+  c.height_px = p.get<int>("height_px", c.height_px);
+  if (c.width_px < 1 || c.height_px < 1 || c.width_px > 4096 || c.height_px > 4096)
+    p.fail("width_px", "camera image sizes must be in [1, 4096]");
+  c.fx_px = positive(p, "fx_px", c.fx_px);
+  c.fy_px = positive(p, "fy_px", c.fy_px);
+  c.cx_px = p.get<double>("cx_px", (c.width_px - 1) / 2.0);
+  c.cy_px = p.get<double>("cy_px", (c.height_px - 1) / 2.0);
+  c.min_range_m = positive(p, "min_range_m", c.min_range_m);
+  c.max_range_m = positive(p, "max_range_m", c.max_range_m);
+  p.reject_unknown();
+  return c;
+}
+
+Placement parse_placement(const Parameters& p) {
+  const std::string text = p.get<std::string>("placement", "pile");
+  if (text == "isolated") return Placement::kIsolated;
+  if (text == "pile") return Placement::kPile;
+  if (text == "packed") return Placement::kPacked;
+  p.fail("placement", "'placement' must be isolated, pile or packed, got '" + text + "'");
+}
+
+}  // namespace
+
+std::string resolve_path(const std::string& path, const std::string& scene_file) {
+  if (fs::path(path).is_absolute() || fs::exists(path) || scene_file.empty()) return path;
+  const fs::path dir = fs::path(scene_file).parent_path();
+  for (const fs::path& base : {dir, dir.parent_path()})
+    if (fs::exists(base / path)) return (base / path).string();
+  return path;
+}
+
+std::vector<CameraSpec> default_cameras(const TableSpec& table) {
+  const Eigen::Vector3d centre(table.center_m.x(), table.center_m.y(), table.top_z_m);
+  auto camera = [&](const char* name, const Eigen::Vector3d& offset) {
+    CameraSpec c;
+    c.name = name;
+    c.position_m = centre + offset;
+    c.look_at_m = centre;
+    return c;
+  };
+  return {camera("left", {-0.28, 0.58, 0.55}), camera("right", {-0.28, -0.58, 0.55}),
+          camera("top", {0.0, 0.0, 0.75}), camera("front", {0.62, 0.0, 0.5})};
+}
+
+SceneSpec parse_scene(const Parameters& p) {
+  SceneSpec s;
+  s.file = p.file();
+  s.seed = p.get<std::uint64_t>("seed", 0);
+  s.table = parse_table(p.child("table"));
+  if (p.has("box")) s.box = parse_box(p.child("box"), s.table);
+  s.placement = parse_placement(p);
+  if (p.has("region")) {
+    const Parameters r = p.child("region");
+    s.region = Eigen::AlignedBox2d(vector_at(r, "min_m", 2, s.region.min()),
+                                   vector_at(r, "max_m", 2, s.region.max()));
+    r.reject_unknown();
+  }
+  s.drop_height_m = positive(p, "drop_height_m", s.drop_height_m);
+  if (p.has("objects")) {
+    const YAML::Node list = p.yaml()["objects"];
+    p.get<YAML::Node>("objects", {});
+    if (!list.IsSequence()) p.fail("objects", "'objects' must be a list");
+    for (std::size_t i = 0; i < list.size(); ++i)
+      s.objects.push_back(parse_object(
+          Parameters(list[i], "object " + std::to_string(i + 1) + " of the scene", s.file),
+          s.file));
+  }
+  if (p.has("random_objects")) s.random = parse_random(p.child("random_objects"), s.file);
+  if (p.has("cameras")) {
+    const Parameters cams = p.child("cameras");
+    for (const auto& item : cams.yaml())
+      s.cameras.push_back(
+          parse_camera(item.first.as<std::string>(), cams.child(item.first.as<std::string>())));
+  } else {
+    s.cameras = default_cameras(s.table);
+  }
+  if (s.placement == Placement::kIsolated && s.objects.size() + s.random.count != 1)
+    p.fail("placement", "an isolated scene holds exactly one object");
+  p.reject_unknown();
+  return s;
+}
+
+SceneSpec read_scene(const std::string& path) {
+  YAML::Node root;
+  try {
+    root = YAML::LoadFile(path);
+  } catch (const YAML::Exception& e) {
+    throw Error("scene '" + path + "': " + e.what());
+  }
+  return parse_scene(Parameters(root, "scene '" + path + "'", path));
+}
+
+}  // namespace antipode::cells

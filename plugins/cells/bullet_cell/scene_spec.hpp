@@ -1,0 +1,87 @@
+#pragma once
+// A scene description as read from YAML (grammar in docs/cell.md).
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+
+#include "camera.hpp"
+#include "procedural_objects.hpp"
+
+namespace antipode {
+class Parameters;
+}
+
+namespace antipode::cells {
+
+struct TableSpec {
+  double top_z_m = -0.295;  ///< Baxter's base frame is 0.924 m above the floor
+  Eigen::Vector2d center_m{0.725, -0.135};
+  Eigen::Vector2d size_m{0.9, 1.0};
+  double friction = 0.8;
+};
+
+/// The shallow box that clutter is dumped into (its floor is the table).
+struct BoxSpec {
+  bool present = false;
+  Eigen::Vector2d center_m{0.725, -0.135};
+  Eigen::Vector2d inner_size_m{0.3, 0.3};
+  double wall_height_m = 0.06;
+  double wall_thickness_m = 0.01;
+};
+
+/// One listed object: a primitive (`shape` + `size_m`) or a mesh object (`mesh` in `folder`).
+struct ObjectEntry {
+  std::string shape;
+  std::vector<double> size_m;
+  std::string mesh;
+  std::string folder;
+  double scale = 1.0;
+  double density_kg_m3 = 700.0;
+  double friction = 0.8;
+  /// Explicit pose; with `rest_on_table` only x, y and the orientation are used.
+  std::optional<Eigen::Isometry3d> pose;
+  bool rest_on_table = false;
+};
+
+/// Objects drawn at random: procedural `shapes`, or meshes from `folder` (all or `names`).
+struct RandomObjects {
+  int count = 0;
+  std::vector<std::string> shapes;
+  std::string folder;
+  std::vector<std::string> names;
+  double min_scale = 1.0;
+  double max_scale = 1.0;
+  ProceduralRanges ranges;
+};
+
+enum class Placement { kIsolated, kPile, kPacked };
+
+struct SceneSpec {
+  std::string file;  ///< where the scene was read from ("" if built in code)
+  std::uint64_t seed = 0;
+  TableSpec table;
+  BoxSpec box;
+  Placement placement = Placement::kPile;
+  Eigen::AlignedBox2d region{Eigen::Vector2d(0.62, -0.25), Eigen::Vector2d(0.83, -0.02)};
+  double drop_height_m = 0.2;
+  std::vector<ObjectEntry> objects;
+  RandomObjects random;
+  std::vector<CameraSpec> cameras;
+};
+
+/// Reads a scene; throws antipode::Error located in the file for any bad or unknown key.
+SceneSpec read_scene(const std::string& path);
+/// Parses a scene from parameters (the mapping of a scene file).
+SceneSpec parse_scene(const Parameters& params);
+/// The default cameras: left and right of the table like the paper's two sensors, plus a
+/// top and a front view.
+std::vector<CameraSpec> default_cameras(const TableSpec& table);
+/// `path` as written, or relative to the scene file's folder or its parent when that exists.
+std::string resolve_path(const std::string& path, const std::string& scene_file);
+
+}  // namespace antipode::cells

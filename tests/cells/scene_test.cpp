@@ -1,0 +1,110 @@
+#include <gtest/gtest.h>
+
+#include <btBulletDynamicsCommon.h>
+
+#include "antipode/core/error.hpp"
+#include "antipode/core/parameters.hpp"
+#include "scene_builder.hpp"
+
+namespace antipode::cells {
+namespace {
+
+SceneSpec parse(const std::string& yaml) {
+  return parse_scene(Parameters(YAML::Load(yaml), "scene 'test.yaml'", "test.yaml"));
+}
+
+const char* kPile = R"(
+box: { inner_size_m: [0.3, 0.3], wall_height_m: 0.06 }
+placement: pile
+random_objects: { count: 6, shapes: [box, cylinder, sphere, capsule, ellipsoid] }
+)";
+
+TEST(Scene, PileSettlesInsideTheBoxWithoutInterpenetration) {
+  const SceneSpec spec = parse(kPile);
+  PhysicsWorld world(PhysicsOptions{});
+  MeshCache meshes;
+  const std::vector<int> ids = build_scene(spec, 5, meshes, world);
+  ASSERT_EQ(ids.size(), 6u);
+  world.step();
+  EXPECT_LT(world.deepest_penetration(), 0.003);
+  const Eigen::Vector2d lo = spec.box.center_m - spec.box.inner_size_m / 2;
+  const Eigen::Vector2d hi = spec.box.center_m + spec.box.inner_size_m / 2;
+  for (int id : ids) {
+    const Eigen::Vector3d p = world.pose(id).translation();
+    EXPECT_GT(p.x(), lo.x());
+    EXPECT_LT(p.x(), hi.x());
+    EXPECT_GT(p.y(), lo.y());
+    EXPECT_LT(p.y(), hi.y());
+    EXPECT_GT(p.z(), spec.table.top_z_m);
+    EXPECT_LT(p.z(), spec.table.top_z_m + 0.25);
+    EXPECT_LT(world.body(id).getLinearVelocity().length(), 0.05);
+  }
+}
+
+TEST(Scene, SameSeedSameSceneOtherSeedOtherScene) {
+  const SceneSpec spec = parse(kPile);
+  auto poses = [&](std::uint64_t seed) {
+    PhysicsWorld world(PhysicsOptions{});
+    MeshCache meshes;
+    std::vector<Eigen::Matrix4d> out;
+    for (int id : build_scene(spec, seed, meshes, world)) out.push_back(world.pose(id).matrix());
+    return out;
+  };
+  const auto a = poses(9), b = poses(9), c = poses(10);
+  ASSERT_EQ(a.size(), b.size());
+  for (std::size_t i = 0; i < a.size(); ++i) EXPECT_EQ(a[i], b[i]);
+  EXPECT_NE(a.front(), c.front());
+}
+
+TEST(Scene, PackedObjectsStandUprightOnTheTable) {
+  const SceneSpec spec = parse(R"(
+placement: packed
+random_objects: { count: 4, shapes: [cylinder, box] }
+)");
+  PhysicsWorld world(PhysicsOptions{});
+  MeshCache meshes;
+  const std::vector<int> ids = build_scene(spec, 2, meshes, world);
+  ASSERT_EQ(ids.size(), 4u);
+  for (int id : ids) EXPECT_GT(world.pose(id).linear().col(2).z(), 0.95);
+}
+
+TEST(Scene, ListedObjectRestsWhereItIsPut) {
+  const SceneSpec spec = parse(R"(
+placement: isolated
+objects:
+  - { shape: cylinder, size_m: [0.05, 0.1], position_m: [0.7, -0.1] }
+)");
+  PhysicsWorld world(PhysicsOptions{});
+  MeshCache meshes;
+  const std::vector<int> ids = build_scene(spec, 0, meshes, world);
+  ASSERT_EQ(ids.size(), 1u);
+  const Eigen::Vector3d p = world.pose(ids[0]).translation();
+  EXPECT_NEAR(p.x(), 0.7, 0.002);
+  EXPECT_NEAR(p.y(), -0.1, 0.002);
+  EXPECT_NEAR(p.z(), spec.table.top_z_m + 0.05, 0.003);
+}
+
+TEST(Scene, ReportsBadKeysWithTheirPlace) {
+  try {
+    parse("placement: pile\nrandom_objects: { count: 2, shapes: [box], shapez: [box] }\n");
+    FAIL() << "no error";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("shapez"), std::string::npos) << e.what();
+  }
+  EXPECT_THROW(parse("placement: heap\n"), Error);
+  EXPECT_THROW(parse("placement: isolated\nrandom_objects: { count: 2, shapes: [box] }\n"), Error);
+  EXPECT_THROW(parse("objects:\n  - { shape: box, size_m: [0.1, 0.1, 0.1], friction: 1.5 }\n"),
+               Error);
+}
+
+TEST(Scene, DefaultCamerasLookAtTheTableFromTwoSides) {
+  const SceneSpec spec = parse("placement: pile\n");
+  ASSERT_GE(spec.cameras.size(), 2u);
+  EXPECT_EQ(spec.cameras[0].name, "left");
+  EXPECT_EQ(spec.cameras[1].name, "right");
+  EXPECT_GT(spec.cameras[0].position_m.y(), 0.2);
+  EXPECT_LT(spec.cameras[1].position_m.y(), -0.4);
+}
+
+}  // namespace
+}  // namespace antipode::cells
