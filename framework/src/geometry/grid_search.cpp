@@ -32,36 +32,39 @@ constexpr float kFar = 1e30f;
 // The hand neighbours (already within the hand's half height of the sample's closing plane,
 // the only points the hand can touch in any orientation) in local coordinates.
 void collect_slab(const Cloud& cloud, const LocalFrame& frame, GridScratch& s) {
-  s.slab_n.clear(), s.slab_b.clear(), s.slab_a.clear(), s.slab_index.clear();
-  for (const std::int32_t i : s.hand_neighbours) {
+  const std::size_t n = s.hand_neighbours.size();
+  s.slab_n.resize(n), s.slab_b.resize(n), s.slab_a.resize(n), s.slab_index.resize(n);
+  for (std::size_t j = 0; j < n; ++j) {
+    const std::int32_t i = s.hand_neighbours[j];
     const Eigen::Vector3f d = cloud.points_m[static_cast<std::size_t>(i)] - frame.origin_m;
-    const float a = d.dot(frame.axis);
-    s.slab_n.push_back(d.dot(frame.normal));
-    s.slab_b.push_back(d.dot(frame.binormal));
-    s.slab_a.push_back(a);
-    s.slab_index.push_back(i);
+    s.slab_n[j] = d.dot(frame.normal);
+    s.slab_b[j] = d.dot(frame.binormal);
+    s.slab_a[j] = d.dot(frame.axis);
+    s.slab_index[j] = i;
   }
 }
 
 // Approach and closing coordinates of the slab points that can touch the hand in the
-// orientation (cos_phi, sin_phi): approach = -(c n + s b), closing = s n - c b.
+// orientation (cos_phi, sin_phi): approach = -(c n + s b), closing = s n - c b. Every point is
+// written and the write position advances only for the kept ones (no branch to mispredict).
 void orient(const GridSpec& spec, float c, float s, GridScratch& g) {
-  g.u.clear(), g.v.clear(), g.w.clear(), g.index.clear();
+  const std::size_t n = g.slab_index.size();
+  g.u.resize(n + 4), g.v.resize(n + 4), g.w.resize(n + 4), g.index.resize(n + 4);
   const float u_min = spec.start_m - spec.palm_thickness_m - kMargin;
   const float u_max = spec.depth_m + kMargin;
-  for (std::size_t j = 0; j < g.slab_index.size(); ++j) {
+  std::size_t kept = 0;
+  for (std::size_t j = 0; j < n; ++j) {
     const float u = -(c * g.slab_n[j] + s * g.slab_b[j]);
     const float v = s * g.slab_n[j] - c * g.slab_b[j];
-    if (u < u_min || u > u_max || std::fabs(v) > spec.max_lateral_m) continue;
-    g.u.push_back(u);
-    g.v.push_back(v);
-    g.w.push_back(g.slab_a[j]);
-    g.index.push_back(g.slab_index[j]);
+    g.u[kept] = u, g.v[kept] = v, g.w[kept] = g.slab_a[j], g.index[kept] = g.slab_index[j];
+    kept += static_cast<std::size_t>((u >= u_min) & (u <= u_max) &
+                                     (std::fabs(v) <= spec.max_lateral_m));
   }
   // Padding for the four-wide loop: points far to the side touch nothing.
-  while (g.u.size() % 4 != 0) {
-    g.u.push_back(0.0f), g.v.push_back(kFar), g.w.push_back(kFar), g.index.push_back(-1);
+  for (; kept % 4 != 0; ++kept) {
+    g.u[kept] = 0.0f, g.v[kept] = kFar, g.w[kept] = kFar, g.index[kept] = -1;
   }
+  g.u.resize(kept), g.v.resize(kept), g.w.resize(kept), g.index.resize(kept);
 }
 
 // The nearest contact of the hand body and the nearest point between the fingers along the

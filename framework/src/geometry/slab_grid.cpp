@@ -86,13 +86,17 @@ void SlabGrid::query(const Eigen::Vector3f& centre, const Eigen::Vector3f& axis,
 void SlabGrid::collect(std::size_t cell, const Eigen::Vector3f& centre, const Eigen::Vector3f& axis,
                        float half_thickness_m, float squared_radius,
                        std::vector<std::int32_t>& out) const {
+  // Every point is written; the end advances only for those inside (branch-free).
+  std::size_t end = out.size();
+  out.resize(end + (start_[cell + 1] - start_[cell]));
   for (std::uint32_t e = start_[cell]; e < start_[cell + 1]; ++e) {
     const std::int32_t index = order_[e];
     const Eigen::Vector3f q = points_[static_cast<std::size_t>(index)] - centre;
-    if (std::abs(q.dot(axis)) <= half_thickness_m && q.squaredNorm() <= squared_radius) {
-      out.push_back(index);
-    }
+    out[end] = index;
+    end += static_cast<std::size_t>((std::abs(q.dot(axis)) <= half_thickness_m) &
+                                    (q.squaredNorm() <= squared_radius));
   }
+  out.resize(end);
 }
 
 }  // namespace antipode::geometry
