@@ -1,2 +1,114 @@
 #include <gtest/gtest.h>
-TEST(Placeholder, Builds) {}
+
+#include "antipode/core/parameters.hpp"
+#include "bullet_cell.hpp"
+
+namespace antipode::cells {
+namespace {
+
+SceneSpec parse(const std::string& yaml) {
+  return parse_scene(Parameters(YAML::Load(yaml), "scene 'test.yaml'", "test.yaml"));
+}
+
+// One upright cylinder of `diameter` and 10 cm height at (0.72, -0.12) on the table.
+BulletCell cylinder_cell(double diameter) {
+  CellOptions options;
+  options.sensor.scale = 0.0;
+  return BulletCell(parse("placement: isolated\nobjects:\n  - { shape: cylinder, size_m: [" +
+                          std::to_string(diameter) + ", 0.1], position_m: [0.72, -0.12] }\n"),
+                    options);
+}
+
+// A hand approaching straight down, closing along base x, palm face at (x, y, z).
+Hand top_down(double x, double y, double z) {
+  Hand hand;
+  Eigen::Matrix3d r;
+  r.col(0) = -Eigen::Vector3d::UnitZ();
+  r.col(1) = Eigen::Vector3d::UnitX();
+  r.col(2) = r.col(0).cross(r.col(1));
+  hand.X_FrameHand.linear() = r;
+  hand.X_FrameHand.translation() << x, y, z;
+  return hand;
+}
+
+double top_of_cylinder(const BulletCell& cell) { return cell.scene().table.top_z_m + 0.1; }
+
+TEST(Grasp, HandAroundA5cmCylinderLiftsIt) {
+  BulletCell cell = cylinder_cell(0.05);
+  const Hand hand = top_down(0.72, -0.12, top_of_cylinder(cell) + 0.005);
+  EXPECT_EQ(cell.execute(hand, {}), GraspOutcome::kSuccess);
+  EXPECT_TRUE(cell.objects().empty()) << "a grasped object is removed";
+}
+
+TEST(Grasp, HandBesideTheCylinderClosesOnNothing) {
+  BulletCell cell = cylinder_cell(0.05);
+  const Hand hand = top_down(0.72, -0.22, top_of_cylinder(cell) + 0.005);
+  EXPECT_EQ(cell.execute(hand, {}), GraspOutcome::kEmptyGrasp);
+  EXPECT_EQ(cell.objects().size(), 1u);
+}
+
+TEST(Grasp, CylinderTooWideForTheGripperIsNotLifted) {
+  BulletCell cell = cylinder_cell(0.09);
+  const Hand hand = top_down(0.72, -0.12, top_of_cylinder(cell) + 0.005);
+  const GraspOutcome outcome = cell.execute(hand, {});
+  EXPECT_NE(outcome, GraspOutcome::kSuccess) << to_string(outcome);
+  EXPECT_EQ(cell.objects().size(), 1u);
+}
+
+TEST(Grasp, StartingInCollisionIsACollisionFailure) {
+  BulletCell cell = cylinder_cell(0.05);
+  // The stand-off pose, 10 cm back along the approach, has the palm inside the cylinder.
+  const Hand hand = top_down(0.72, -0.12, top_of_cylinder(cell) - 0.05 - 0.1);
+  EXPECT_EQ(cell.execute(hand, {}), GraspOutcome::kCollisionOnApproach);
+}
+
+TEST(Grasp, HandsInAnotherFrameOrMalformedAreNotExecuted) {
+  BulletCell cell = cylinder_cell(0.05);
+  Hand hand = top_down(0.72, -0.12, top_of_cylinder(cell) + 0.005);
+  hand.frame = "camera";
+  EXPECT_EQ(cell.execute(hand, {}), GraspOutcome::kNotExecuted);
+  hand.frame = "base";
+  hand.X_FrameHand.linear() *= 2.0;
+  EXPECT_EQ(cell.execute(hand, {}), GraspOutcome::kNotExecuted);
+  EXPECT_EQ(cell.attempts(), 0);
+}
+
+// Top-down grasps at every object of a pile, in id order; outcomes and the remaining poses.
+std::pair<std::vector<GraspOutcome>, std::vector<Eigen::Matrix4d>> clear_pile(std::uint64_t seed) {
+  CellOptions options;
+  options.seed = seed;
+  BulletCell cell(parse(R"(
+box: { inner_size_m: [0.3, 0.3] }
+placement: pile
+random_objects: { count: 4, shapes: [box, cylinder, sphere, capsule] }
+)"),
+                  options);
+  std::vector<GraspOutcome> outcomes;
+  for (int id : cell.objects()) {
+    if (!cell.world().has(id)) continue;
+    const Eigen::Vector3d p = cell.world().pose(id).translation();
+    outcomes.push_back(cell.execute(top_down(p.x(), p.y(), p.z() + 0.02), {}));
+  }
+  std::vector<Eigen::Matrix4d> poses;
+  for (int id : cell.objects()) poses.push_back(cell.world().pose(id).matrix());
+  return {outcomes, poses};
+}
+
+TEST(Grasp, SameSeedSameOutcomes) {
+  const auto a = clear_pile(4), b = clear_pile(4);
+  EXPECT_EQ(a.first, b.first);
+  ASSERT_EQ(a.second.size(), b.second.size());
+  for (std::size_t i = 0; i < a.second.size(); ++i) EXPECT_EQ(a.second[i], b.second[i]);
+}
+
+TEST(Grasp, ResetRestoresTheScene) {
+  BulletCell cell = cylinder_cell(0.05);
+  const Hand hand = top_down(0.72, -0.12, top_of_cylinder(cell) + 0.005);
+  ASSERT_EQ(cell.execute(hand, {}), GraspOutcome::kSuccess);
+  cell.reset(0);
+  EXPECT_EQ(cell.objects().size(), 1u);
+  EXPECT_EQ(cell.execute(hand, {}), GraspOutcome::kSuccess);
+}
+
+}  // namespace
+}  // namespace antipode::cells

@@ -1,2 +1,80 @@
 #include <gtest/gtest.h>
-TEST(Placeholder, Builds) {}
+
+#include "antipode/core/error.hpp"
+#include "antipode/interfaces/cell.hpp"
+#include "antipode/plugin/plugin_host.hpp"
+
+namespace antipode {
+namespace {
+
+class BulletCellPluginTest : public ::testing::Test {
+ protected:
+  BulletCellPluginTest() : host_(std::vector<std::string>{}) {
+    host_.load_library(std::string(ANTIPODE_TEST_PLUGIN_DIR) + "/" +
+                       plugin_file_name("bullet_cell"));
+  }
+
+  // Parameters as if written in trees/test.yaml, so scene paths resolve from the project root.
+  std::shared_ptr<Cell> create(const std::string& yaml) {
+    const Parameters params(YAML::Load(yaml), "component 'cell'",
+                            std::string(ANTIPODE_TEST_SOURCE_DIR) + "/trees/test.yaml");
+    return std::dynamic_pointer_cast<Cell>(host_.create("bullet_cell", params));
+  }
+
+  std::string creation_error(const std::string& yaml) {
+    try {
+      create(yaml);
+    } catch (const Error& error) {
+      return error.what();
+    }
+    return "";
+  }
+
+  PluginHost host_;
+};
+
+Hand top_down_at(double x, double y, double z) {
+  Hand hand;
+  Eigen::Matrix3d r;
+  r.col(0) = -Eigen::Vector3d::UnitZ();
+  r.col(1) = Eigen::Vector3d::UnitX();
+  r.col(2) = r.col(0).cross(r.col(1));
+  hand.X_FrameHand.linear() = r;
+  hand.X_FrameHand.translation() << x, y, z;
+  return hand;
+}
+
+TEST_F(BulletCellPluginTest, LoadsAsACell) {
+  ASSERT_EQ(host_.records().size(), 1u);
+  EXPECT_EQ(host_.records()[0].state, PluginRecord::State::kLoaded) << host_.records()[0].reason;
+  EXPECT_EQ(host_.kind_of("bullet_cell"), ComponentKind::kCell);
+}
+
+TEST_F(BulletCellPluginTest, CapturesAndGraspsThroughTheInterface) {
+  const auto cell = create("scene: scenes/isolated_cylinder.yaml\nnoise: 0.5\nseed: 3");
+  ASSERT_NE(cell, nullptr);
+  const auto names = cell->view_names();
+  ASSERT_GE(names.size(), 2u);
+  const Cloud cloud = cell->capture({names[0], names[1]});
+  cloud.validate();
+  EXPECT_EQ(cloud.view_origins_m.size(), 2u);
+  EXPECT_GT(cloud.size(), 10000u);
+  const Hand hand = top_down_at(0.72, -0.12, -0.295 + 0.1 + 0.005);
+  EXPECT_EQ(cell->execute(hand, {}), GraspOutcome::kSuccess);
+  EXPECT_EQ(cell->execute(hand, {}), GraspOutcome::kEmptyGrasp) << "the cylinder was removed";
+  cell->reset(3);
+  EXPECT_EQ(cell->execute(hand, {}), GraspOutcome::kSuccess);
+}
+
+TEST_F(BulletCellPluginTest, RejectsBadParameters) {
+  EXPECT_NE(creation_error("scene: scenes/isolated_cylinder.yaml\nnoize: 1").find("did you mean"),
+            std::string::npos);
+  EXPECT_NE(creation_error("scene: scenes/isolated_cylinder.yaml\nnoise: -1").find("noise"),
+            std::string::npos);
+  EXPECT_NE(creation_error("scene: scenes/no_such_scene.yaml").find("no_such_scene"),
+            std::string::npos);
+  EXPECT_NE(creation_error("noise: 1").find("scene"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace antipode

@@ -73,6 +73,18 @@ TEST(View, SameSeedSameCloud) {
   for (std::size_t i = 0; i < x.size(); i += 97) EXPECT_EQ(x.points_m[i], y.points_m[i]);
 }
 
+TEST(View, SameCloudForAnyThreadCount) {
+  CellOptions one, two;
+  one.render_threads = 1;
+  two.render_threads = 3;
+  const std::string yaml = "placement: pile\nrandom_objects: { count: 3, shapes: [box, sphere] }\n";
+  BulletCell a(parse(yaml), one), b(parse(yaml), two);
+  const Cloud x = a.capture({"left", "top"}), y = b.capture({"left", "top"});
+  ASSERT_EQ(x.size(), y.size());
+  EXPECT_EQ(x.points_m, y.points_m);
+  EXPECT_EQ(x.view_masks, y.view_masks);
+}
+
 TEST(View, UnknownViewIsAnError) {
   BulletCell cell = box_cell(0.0);
   EXPECT_THROW(cell.capture({"bottom"}), Error);

@@ -37,6 +37,7 @@ CellOptions read_cell_options(const Parameters& p, const SceneSpec& scene) {
   CellOptions o;
   o.seed = p.get<std::uint64_t>("seed", scene.seed);
   o.sensor.scale = in_range(p, "noise", 1.0, 0.0, 10.0);
+  o.render_threads = int(in_range(p, "render_threads", o.render_threads, 1, 64));
   o.physics.time_step_s = 1.0 / in_range(p, "physics_hz", 240.0, 60.0, 2000.0);
   o.physics.solver_iterations = int(in_range(p, "solver_iterations", 50, 1, 1000));
   AttemptOptions& a = o.attempt;
@@ -78,7 +79,8 @@ Cloud BulletCell::capture(const std::vector<std::string>& views) {
     for (const auto& c : scene_.cameras)
       if (c.name == views[v]) camera = &c;
     if (!camera) throw Error("the cell has no view '" + views[v] + "'");
-    renderer_.render(*camera, options_.sensor, random.derive(v), std::uint32_t(v), cloud);
+    renderer_.render(*camera, options_.sensor, random.derive(v), std::uint32_t(v), cloud,
+                     options_.render_threads);
     cloud.view_origins_m.push_back(camera->position_m.cast<float>());
   }
   return cloud;

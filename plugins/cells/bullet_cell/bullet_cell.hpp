@@ -16,6 +16,7 @@ struct CellOptions {
   AttemptOptions attempt;
   SensorModel sensor;
   std::uint64_t seed = 0;
+  int render_threads = 2;  ///< threads sharing a view's rows (same cloud for any number)
 };
 
 /// Reads the cell's parameters (docs/cell.md); throws antipode::Error located in the file.

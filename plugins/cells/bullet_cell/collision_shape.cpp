@@ -11,6 +11,7 @@ std::unique_ptr<btCollisionShape> hull_shape(const TriangleMesh& mesh, double ma
   hull->recalcLocalAabb();
   hull->optimizeConvexHull();
   hull->setMargin(btScalar(margin_m));
+  hull->initializePolyhedralFeatures();
   return hull;
 }
 
@@ -18,8 +19,10 @@ std::unique_ptr<btCollisionShape> hull_shape(const TriangleMesh& mesh, double ma
 
 ShapeHolder make_box_shape(const Eigen::Vector3d& h, double margin_m) {
   ShapeHolder holder;
-  holder.root = std::make_unique<btBoxShape>(btVector3(h.x(), h.y(), h.z()));
-  holder.root->setMargin(btScalar(margin_m));
+  auto box = std::make_unique<btBoxShape>(btVector3(h.x(), h.y(), h.z()));
+  box->setMargin(btScalar(margin_m));
+  box->initializePolyhedralFeatures();
+  holder.root = std::move(box);
   return holder;
 }
 

@@ -2,34 +2,39 @@
 
 #include <cmath>
 #include <limits>
+#include <map>
+#include <thread>
 
 #include <embree3/rtcore.h>
 
 #include "antipode/core/error.hpp"
 
 namespace antipode::cells {
-
-struct DepthRenderer::Impl {
-  RTCDevice device = nullptr;
-  RTCScene scene = nullptr;
-
-  ~Impl() {
-    if (scene) rtcReleaseScene(scene);
-    if (device) rtcReleaseDevice(device);
-  }
-};
-
 namespace {
 
-void add_mesh(RTCDevice device, RTCScene scene, const PhysicsWorld::Visual& visual) {
-  const TriangleMesh& mesh = *visual.mesh;
+constexpr int kTile = 4;  // rays are cast in 4 x 4 packets
+
+// What a pixel's ray hit: depth along the optical axis (0 = no return) and the cosine of the
+// angle between the ray and the surface normal.
+struct Hit {
+  float depth = 0.f;
+  float cos_incidence = 0.f;
+};
+
+// A mesh's own BVH, built once in the mesh's frame and instanced at every pose.
+struct MeshScene {
+  std::shared_ptr<const TriangleMesh> mesh;  // keeps the key's address alive
+  RTCScene scene = nullptr;
+};
+
+RTCScene build_mesh_scene(RTCDevice device, const TriangleMesh& mesh) {
+  RTCScene scene = rtcNewScene(device);
   RTCGeometry geometry = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_TRIANGLE);
   auto* vertices = static_cast<float*>(rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_VERTEX, 0,
                                                                RTC_FORMAT_FLOAT3, 3 * sizeof(float),
                                                                mesh.vertices.size()));
-  const Eigen::Affine3f pose = visual.pose.cast<float>();
   for (std::size_t i = 0; i < mesh.vertices.size(); ++i)
-    Eigen::Map<Eigen::Vector3f>(vertices + 3 * i) = pose * mesh.vertices[i];
+    Eigen::Map<Eigen::Vector3f>(vertices + 3 * i) = mesh.vertices[i];
   auto* indices = static_cast<unsigned*>(
       rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3,
                               3 * sizeof(unsigned), mesh.triangles.size()));
@@ -38,37 +43,137 @@ void add_mesh(RTCDevice device, RTCScene scene, const PhysicsWorld::Visual& visu
   rtcCommitGeometry(geometry);
   rtcAttachGeometry(scene, geometry);
   rtcReleaseGeometry(geometry);
+  rtcCommitScene(scene);
+  return scene;
 }
 
-struct Hit {
-  float depth = 0.f;  // along the optical axis; 0 = no return
-  float cos_incidence = 0.f;
+}  // namespace
+
+struct DepthRenderer::Impl {
+  RTCDevice device = nullptr;
+  RTCScene scene = nullptr;
+  std::map<const TriangleMesh*, MeshScene> meshes;
+  std::vector<Eigen::Matrix3f> rotations;  // per instance id: object -> base
+
+  ~Impl() {
+    if (scene) rtcReleaseScene(scene);
+    for (auto& [key, entry] : meshes) rtcReleaseScene(entry.scene);
+    if (device) rtcReleaseDevice(device);
+  }
+
+  void add_instance(const PhysicsWorld::Visual& visual) {
+    auto it = meshes.find(visual.mesh.get());
+    if (it == meshes.end())
+      it = meshes
+               .emplace(visual.mesh.get(),
+                        MeshScene{visual.mesh, build_mesh_scene(device, *visual.mesh)})
+               .first;
+    RTCGeometry instance = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_INSTANCE);
+    rtcSetGeometryInstancedScene(instance, it->second.scene);
+    const Eigen::Matrix4f matrix = visual.pose.matrix().cast<float>();
+    rtcSetGeometryTransform(instance, 0, RTC_FORMAT_FLOAT4X4_COLUMN_MAJOR, matrix.data());
+    rtcCommitGeometry(instance);
+    const unsigned id = rtcAttachGeometry(scene, instance);
+    rtcReleaseGeometry(instance);
+    if (rotations.size() <= id) rotations.resize(id + 1);
+    rotations[id] = matrix.topLeftCorner<3, 3>();
+  }
+
+  // Drops the BVHs of meshes that are no longer in the scene.
+  void forget_unused(const std::vector<PhysicsWorld::Visual>& visuals) {
+    std::map<const TriangleMesh*, MeshScene> kept;
+    for (const auto& visual : visuals) {
+      auto it = meshes.find(visual.mesh.get());
+      if (it != meshes.end()) kept.insert(meshes.extract(it));
+    }
+    for (auto& [key, entry] : meshes) rtcReleaseScene(entry.scene);
+    meshes = std::move(kept);
+  }
 };
 
-Hit cast(RTCScene scene, const Eigen::Vector3f& origin, const Eigen::Vector3f& direction) {
+namespace {
+
+// Casts the rays of the kTile x kTile tile at (u0, v0) and writes their hits into `image`.
+void cast_tile(RTCScene scene, const std::vector<Eigen::Matrix3f>& rotations,
+               const CameraSpec& camera, const Eigen::Isometry3f& X_BaseCamera, int u0, int v0,
+               std::vector<Hit>& image) {
+  alignas(64) RTCRayHit16 packet;
+  alignas(64) int valid[16];
+  Eigen::Vector3f directions[16];
+  for (int i = 0; i < 16; ++i) {
+    const int u = u0 + i % kTile, v = v0 + i / kTile;
+    valid[i] = (u < camera.width_px && v < camera.height_px) ? -1 : 0;
+    const Eigen::Vector3f ray(float((u - camera.cx_px) / camera.fx_px),
+                              float((v - camera.cy_px) / camera.fy_px), 1.f);
+    directions[i] = X_BaseCamera.linear() * ray;
+    packet.ray.org_x[i] = X_BaseCamera.translation().x();
+    packet.ray.org_y[i] = X_BaseCamera.translation().y();
+    packet.ray.org_z[i] = X_BaseCamera.translation().z();
+    packet.ray.dir_x[i] = directions[i].x();
+    packet.ray.dir_y[i] = directions[i].y();
+    packet.ray.dir_z[i] = directions[i].z();
+    packet.ray.tnear[i] = 0.f;
+    packet.ray.tfar[i] = std::numeric_limits<float>::infinity();
+    packet.ray.mask[i] = 0xFFFFFFFFu;
+    packet.ray.flags[i] = 0;
+    packet.ray.time[i] = 0.f;
+    packet.hit.geomID[i] = RTC_INVALID_GEOMETRY_ID;
+    packet.hit.instID[0][i] = RTC_INVALID_GEOMETRY_ID;
+  }
   RTCIntersectContext context;
   rtcInitIntersectContext(&context);
-  RTCRayHit query;
-  query.ray.org_x = origin.x();
-  query.ray.org_y = origin.y();
-  query.ray.org_z = origin.z();
-  query.ray.dir_x = direction.x();
-  query.ray.dir_y = direction.y();
-  query.ray.dir_z = direction.z();
-  query.ray.tnear = 0.f;
-  query.ray.tfar = std::numeric_limits<float>::infinity();
-  query.ray.mask = 0xFFFFFFFFu;
-  query.ray.flags = 0;
-  query.ray.time = 0.f;
-  query.hit.geomID = RTC_INVALID_GEOMETRY_ID;
-  query.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
-  rtcIntersect1(scene, &context, &query);
-  Hit hit;
-  if (query.hit.geomID == RTC_INVALID_GEOMETRY_ID) return hit;
-  const Eigen::Vector3f normal(query.hit.Ng_x, query.hit.Ng_y, query.hit.Ng_z);
-  hit.depth = query.ray.tfar;
-  hit.cos_incidence = std::abs(normal.dot(direction)) / (normal.norm() * direction.norm() + 1e-12f);
-  return hit;
+  rtcIntersect16(valid, scene, &context, &packet);
+  for (int i = 0; i < 16; ++i) {
+    if (!valid[i] || packet.hit.geomID[i] == RTC_INVALID_GEOMETRY_ID) continue;
+    const Eigen::Vector3f normal =
+        rotations[packet.hit.instID[0][i]] *
+        Eigen::Vector3f(packet.hit.Ng_x[i], packet.hit.Ng_y[i], packet.hit.Ng_z[i]);
+    Hit& hit = image[(v0 + i / kTile) * camera.width_px + u0 + i % kTile];
+    hit.depth = packet.ray.tfar[i];  // the ray's optical-axis component is 1
+    hit.cos_incidence =
+        std::abs(normal.dot(directions[i])) / (normal.norm() * directions[i].norm() + 1e-12f);
+  }
+}
+
+// Two independent standard normals from one Box-Muller draw.
+Eigen::Vector2d normal_pair(RandomStream& random) {
+  double u1 = random.uniform();
+  while (u1 <= 0.0) u1 = random.uniform();
+  const double radius = std::sqrt(-2.0 * std::log(u1)), angle = 2.0 * M_PI * random.uniform();
+  return {radius * std::cos(angle), radius * std::sin(angle)};
+}
+
+// Turns one image row of hits into points, drawing the sensor's errors from `random`.
+void row_to_points(const std::vector<Hit>& image, int v, const CameraSpec& camera,
+                   const SensorModel& sensor, const Eigen::Isometry3d& X_BaseCamera,
+                   RandomStream random, std::uint32_t mask, Cloud& cloud) {
+  for (int u = 0; u < camera.width_px; ++u) {
+    const Hit& hit = image[v * camera.width_px + u];
+    if (hit.depth < camera.min_range_m || hit.depth > camera.max_range_m) continue;
+    const double ray_x = (u - camera.cx_px) / camera.fx_px,
+                 ray_y = (v - camera.cy_px) / camera.fy_px;
+    double z = hit.depth, x = ray_x * z, y = ray_y * z;
+    if (sensor.scale > 0.0) {
+      const double theta = std::acos(std::min(1.0, double(hit.cos_incidence)));
+      if (random.uniform() < sensor.dropout_probability(theta)) continue;
+      const double lateral_m = sensor.lateral_sigma_px(theta) * z / camera.fx_px;
+      z += sensor.axial_sigma_m(z, theta) * random.normal();
+      const Eigen::Vector2d lateral = lateral_m * normal_pair(random);
+      x = ray_x * z + lateral.x();
+      y = ray_y * z + lateral.y();
+    }
+    cloud.points_m.push_back((X_BaseCamera * Eigen::Vector3d(x, y, z)).cast<float>());
+    cloud.view_masks.push_back(mask);
+  }
+}
+
+// Runs job(0) .. job(threads - 1), job(0) on the calling thread.
+template <typename Job>
+void run_parallel(int threads, const Job& job) {
+  std::vector<std::thread> pool;
+  for (int t = 1; t < threads; ++t) pool.emplace_back([&job, t] { job(t); });
+  job(0);
+  for (auto& thread : pool) thread.join();
 }
 
 }  // namespace
@@ -82,37 +187,43 @@ DepthRenderer::~DepthRenderer() = default;
 
 void DepthRenderer::set_scene(const std::vector<PhysicsWorld::Visual>& visuals) {
   if (impl_->scene) rtcReleaseScene(impl_->scene);
+  impl_->forget_unused(visuals);
+  impl_->rotations.clear();
   impl_->scene = rtcNewScene(impl_->device);
-  for (const auto& visual : visuals) add_mesh(impl_->device, impl_->scene, visual);
+  for (const auto& visual : visuals) impl_->add_instance(visual);
   rtcCommitScene(impl_->scene);
 }
 
 void DepthRenderer::render(const CameraSpec& camera, const SensorModel& sensor,
-                           const RandomStream& random, std::uint32_t view_index,
-                           Cloud& cloud) const {
+                           const RandomStream& random, std::uint32_t view_index, Cloud& cloud,
+                           int threads) const {
   if (!impl_->scene) throw Error("the renderer has no scene");
   const Eigen::Isometry3d X_BaseCamera = look_at(camera.position_m, camera.look_at_m);
-  const Eigen::Matrix3f R = X_BaseCamera.linear().cast<float>();
-  const Eigen::Vector3f origin = camera.position_m.cast<float>();
-  for (int v = 0; v < camera.height_px; ++v) {
-    RandomStream row = random.derive(std::uint64_t(v));
-    for (int u = 0; u < camera.width_px; ++u) {
-      const Eigen::Vector3f ray_camera(float((u - camera.cx_px) / camera.fx_px),
-                                       float((v - camera.cy_px) / camera.fy_px), 1.f);
-      const Hit hit = cast(impl_->scene, origin, R * ray_camera);
-      if (hit.depth < camera.min_range_m || hit.depth > camera.max_range_m) continue;
-      const double theta = std::acos(std::min(1.f, hit.cos_incidence));
-      if (sensor.scale > 0.0 && row.uniform() < sensor.dropout_probability(theta)) continue;
-      double z = hit.depth, x = ray_camera.x() * z, y = ray_camera.y() * z;
-      if (sensor.scale > 0.0) {
-        const double lateral_m = sensor.lateral_sigma_px(theta) * z / camera.fx_px;
-        z += sensor.axial_sigma_m(z, theta) * row.normal();
-        x = ray_camera.x() * z + lateral_m * row.normal();
-        y = ray_camera.y() * z + lateral_m * row.normal();
-      }
-      cloud.points_m.push_back((X_BaseCamera * Eigen::Vector3d(x, y, z)).cast<float>());
-      cloud.view_masks.push_back(1u << view_index);
-    }
+  const Eigen::Isometry3f X_BaseCamera_f = X_BaseCamera.cast<float>();
+  threads = std::max(1, threads);
+  std::vector<Hit> image(std::size_t(camera.width_px) * camera.height_px);
+  std::vector<Cloud> rows(std::size_t(camera.height_px));
+  // Worker t takes every threads-th tile row and image row; rows are joined in order, so the
+  // cloud is the same for any thread count.
+  auto work = [&](int t) {
+    for (int v0 = kTile * t; v0 < camera.height_px; v0 += kTile * threads)
+      for (int u0 = 0; u0 < camera.width_px; u0 += kTile)
+        cast_tile(impl_->scene, impl_->rotations, camera, X_BaseCamera_f, u0, v0, image);
+  };
+  auto noise = [&](int t) {
+    for (int v = t; v < camera.height_px; v += threads)
+      row_to_points(image, v, camera, sensor, X_BaseCamera, random.derive(std::uint64_t(v)),
+                    1u << view_index, rows[v]);
+  };
+  run_parallel(threads, work);
+  run_parallel(threads, noise);
+  std::size_t total = cloud.size();
+  for (const auto& row : rows) total += row.size();
+  cloud.points_m.reserve(total);
+  cloud.view_masks.reserve(total);
+  for (const auto& row : rows) {
+    cloud.points_m.insert(cloud.points_m.end(), row.points_m.begin(), row.points_m.end());
+    cloud.view_masks.insert(cloud.view_masks.end(), row.view_masks.begin(), row.view_masks.end());
   }
 }
 

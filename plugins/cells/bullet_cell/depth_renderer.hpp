@@ -13,7 +13,7 @@
 
 namespace antipode::cells {
 
-/// One Embree device, reused for every view. Not thread-safe: one renderer per cell.
+/// One Embree device, reused for every view; one renderer per cell.
 class DepthRenderer {
  public:
   DepthRenderer();
@@ -26,9 +26,10 @@ class DepthRenderer {
 
   /// The points `camera` sees, in the base frame, with `sensor`'s noise drawn from `random`.
   /// Every point gets view mask bit `view_index`; the camera position is appended to
-  /// `cloud.view_origins_m` by the caller.
+  /// `cloud.view_origins_m` by the caller. `threads` workers share the rows; the result does
+  /// not depend on their number.
   void render(const CameraSpec& camera, const SensorModel& sensor, const RandomStream& random,
-              std::uint32_t view_index, Cloud& cloud) const;
+              std::uint32_t view_index, Cloud& cloud, int threads = 1) const;
 
  private:
   struct Impl;

@@ -32,7 +32,8 @@ void lift_and_hold(PhysicsWorld& world, Gripper& gripper, const AttemptOptions& 
   const int steps = std::max(1, int(std::ceil(options.lift_m / (options.lift_speed_m_s * dt))));
   const Eigen::Isometry3d start = gripper.pose();
   for (int i = 1; i <= steps; ++i) {
-    gripper.move_to(shifted(start, Eigen::Vector3d(0, 0, options.lift_m * i / steps)));
+    const double s = double(i) / steps, eased = s * s * (3.0 - 2.0 * s);  // no jerk at the ends
+    gripper.move_to(shifted(start, Eigen::Vector3d(0, 0, options.lift_m * eased)));
     world.step();
   }
   world.step(int(std::ceil(options.hold_s / dt)));

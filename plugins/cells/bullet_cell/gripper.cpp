@@ -81,10 +81,17 @@ std::set<int> Gripper::touching(double tolerance_m) const {
 }
 
 std::set<int> Gripper::pinched(double tolerance_m) const {
-  const std::set<int> a = world_.touching(fingers_[0], tolerance_m);
+  // The simulation's own contact manifolds: what the fingers press on in this step.
+  std::set<int> by_finger[2];
+  for (const auto& [a, b] : world_.contacts(tolerance_m))
+    for (int side = 0; side < 2; ++side) {
+      if (a == fingers_[side]) by_finger[side].insert(b);
+      if (b == fingers_[side]) by_finger[side].insert(a);
+    }
   std::set<int> both;
-  for (int id : world_.touching(fingers_[1], tolerance_m))
-    if (a.count(id) && world_.has(id) && world_.role(id) == BodyRole::kObject) both.insert(id);
+  for (int id : by_finger[0])
+    if (by_finger[1].count(id) && world_.has(id) && world_.role(id) == BodyRole::kObject)
+      both.insert(id);
   return both;
 }
 

@@ -15,7 +15,7 @@ struct GripperOptions {
   HandGeometry geometry;           ///< finger sizes and apertures (the Baxter defaults)
   double palm_thickness_m = 0.02;  ///< palm box behind the palm face
   double finger_mass_kg = 0.05;
-  double finger_force_n = 20.0;  ///< per finger, like the VGN/GIGA benchmark's motors
+  double finger_force_n = 10.0;  ///< per finger; docs/cell.md says why not 20 N
   double finger_speed_m_s = 0.1;
   double friction = 1.0;
 };

@@ -55,10 +55,10 @@ ObjectModel make_object(const std::string& shape, const std::vector<double>& s, 
   }
   if (shape == "cylinder") {
     require_sizes(shape, s, 2);
-    c.kind = CollisionKind::kCylinder;
-    c.radius_m = s[0] / 2.0;
-    c.half_height_m = s[1] / 2.0;
-    return finish(shape, cylinder_mesh(float(c.radius_m), float(s[1])), c, density, friction, s[0]);
+    TriangleMesh mesh = cylinder_mesh(float(s[0] / 2.0), float(s[1]));
+    c.kind = CollisionKind::kHulls;
+    c.hulls = {mesh};
+    return finish(shape, std::move(mesh), c, density, friction, s[0]);
   }
   if (shape == "sphere") {
     require_sizes(shape, s, 1);
