@@ -28,8 +28,8 @@ TEST_F(TracerTest, ObserversSeeChangesButNotResetsAfterCompletion) {
   tree.add_observer(recorder);
   EXPECT_EQ(tree.tick_while_running(), Status::kFailure);
   EXPECT_EQ(recorder->events, (std::vector<std::string>{
-                                  "slow:IDLE->RUNNING",
                                   "Sequence:IDLE->RUNNING",
+                                  "slow:IDLE->RUNNING",
                                   "slow:RUNNING->SUCCESS",
                                   "FailWithReason:IDLE->FAILURE",
                                   "Sequence:RUNNING->FAILURE",
@@ -94,14 +94,16 @@ TEST_F(TracerTest, JsonlTracerWritesValidJsonLines) {
   }
   ASSERT_EQ(lines.size(), 5u);
   EXPECT_EQ(first.rfind("{\"time_s\":", 0), 0u) << first;
-  EXPECT_EQ(lines[0]["node"], "slow");
-  EXPECT_EQ(lines[0]["type"], "Scripted");
-  EXPECT_EQ(lines[0]["path"], "t/Sequence/Scripted#0");
-  EXPECT_EQ(lines[0]["where"], "trees/t.yaml:6:9");
-  EXPECT_EQ(lines[0]["from"], "IDLE");
-  EXPECT_EQ(lines[0]["to"], "RUNNING");
-  EXPECT_FALSE(lines[0].contains("reason"));
-  EXPECT_EQ(lines[1]["node"], "Sequence");
+  // The parent starts first, then its children (BehaviorTree.CPP's order).
+  EXPECT_EQ(lines[0]["node"], "Sequence");
+  EXPECT_EQ(lines[0]["path"], "t/Sequence");
+  EXPECT_EQ(lines[1]["node"], "slow");
+  EXPECT_EQ(lines[1]["type"], "Scripted");
+  EXPECT_EQ(lines[1]["path"], "t/Sequence/Scripted#0");
+  EXPECT_EQ(lines[1]["where"], "trees/t.yaml:6:9");
+  EXPECT_EQ(lines[1]["from"], "IDLE");
+  EXPECT_EQ(lines[1]["to"], "RUNNING");
+  EXPECT_FALSE(lines[1].contains("reason"));
   EXPECT_EQ(lines[3]["node"], "FailWithReason");
   EXPECT_EQ(lines[3]["reason"], "no hands");
   EXPECT_LE(lines[0]["time_s"].get<double>(), lines[4]["time_s"].get<double>());

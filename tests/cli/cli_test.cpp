@@ -106,13 +106,15 @@ TEST_F(CliTest, TraceFileIsJsonLines) {
   for (std::string line; std::getline(in, line);) {
     events.push_back(nlohmann::json::parse(line));  // throws on a malformed line
   }
-  // Both leaves finish at once, then the Sequence fails with the second one.
-  ASSERT_EQ(events.size(), 3u);
-  EXPECT_EQ(events[0]["node"], "AlwaysSuccess");
-  EXPECT_EQ(events[1]["to"], "FAILURE");
-  EXPECT_EQ(events[2]["node"], "Sequence");
-  EXPECT_EQ(events[2]["from"], "IDLE");
+  // The Sequence starts, both leaves finish at once, then it fails with the second one.
+  ASSERT_EQ(events.size(), 4u);
+  EXPECT_EQ(events[0]["node"], "Sequence");
+  EXPECT_EQ(events[0]["to"], "RUNNING");
+  EXPECT_EQ(events[1]["node"], "AlwaysSuccess");
   EXPECT_EQ(events[2]["to"], "FAILURE");
+  EXPECT_EQ(events[3]["node"], "Sequence");
+  EXPECT_EQ(events[3]["from"], "RUNNING");
+  EXPECT_EQ(events[3]["to"], "FAILURE");
 }
 
 TEST_F(CliTest, MissingTreeFileIsOneLineError) {

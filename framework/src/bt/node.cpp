@@ -36,6 +36,9 @@ Status Node::execute_tick() {
   if (starting_) {
     ++run_count_;
     failure_reason_.clear();
+    // As in BehaviorTree.CPP, a control node or decorator is RUNNING while its children
+    // tick, so traces show the parent start before its children.
+    if (!children_.empty()) set_status(Status::kRunning);
   }
   Status result = Status::kIdle;
   try {
