@@ -60,7 +60,7 @@ std::vector<fs::path> plugin_files_in(const std::string& directory) {
 
 // The descriptor fields the host reads end with `factories`.
 constexpr std::size_t kDescriptorBytesRead =
-    offsetof(PluginDescriptor, factories) + sizeof(PluginDescriptor::factories);
+    offsetof(PluginDescriptor, factories) + sizeof(const PluginFactory*);
 
 // <directory of libantipode.so>/antipode/plugins: found at run time, so an installed tree
 // works from whatever prefix it was installed to.
