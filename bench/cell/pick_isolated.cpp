@@ -1,6 +1,6 @@
 // Picks isolated random primitives with no classifier ("NC" in the paper): capture one or two
 // views, sample hands with the antipodal sampler, execute the best-scoring hand, count outcomes.
-//   pick_isolated [trials] [samples]
+//   pick_isolated [trials] [samples] [noise]
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
@@ -47,7 +47,7 @@ HandSamplingOptions sampling(const SceneSpec& scene, std::size_t samples) {
   return options;
 }
 
-void run(const std::vector<std::string>& views, int trials, std::size_t samples) {
+void run(const std::vector<std::string>& views, int trials, std::size_t samples, double noise) {
   const SceneSpec scene =
       read_scene(std::string(ANTIPODE_BENCH_SOURCE_DIR) + "/scenes/isolated_procedural.yaml");
   std::map<std::string, int> outcomes;
@@ -55,6 +55,7 @@ void run(const std::vector<std::string>& views, int trials, std::size_t samples)
   for (int trial = 0; trial < trials; ++trial) {
     CellOptions options;
     options.seed = std::uint64_t(trial);
+    options.sensor.scale = noise;
     BulletCell cell(scene, options);
     const Cloud cloud = cell.capture(views);
     const HandSet set = sample_hands(cloud, sampling(scene, samples), RandomStream(trial));
@@ -63,8 +64,8 @@ void run(const std::vector<std::string>& views, int trials, std::size_t samples)
   }
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  std::printf("%zuV, %d objects, %zu samples, %.1f s per trial:", views.size(), trials, samples,
-              seconds / trials);
+  std::printf("%zuV, noise %.1f, %d objects, %zu samples, %.1f s per trial:", views.size(), noise,
+              trials, samples, seconds / trials);
   for (const auto& [name, count] : outcomes) std::printf("  %s %d", name.c_str(), count);
   std::printf("  -> success %.1f%%\n", 100.0 * outcomes["success"] / trials);
 }
@@ -75,6 +76,7 @@ void run(const std::vector<std::string>& views, int trials, std::size_t samples)
 int main(int argc, char** argv) {
   const int trials = argc > 1 ? std::atoi(argv[1]) : 20;
   const std::size_t samples = argc > 2 ? std::size_t(std::atoi(argv[2])) : 1000;
-  antipode::cells::run({"left"}, trials, samples);
-  antipode::cells::run({"left", "right"}, trials, samples);
+  const double noise = argc > 3 ? std::atof(argv[3]) : 1.0;
+  antipode::cells::run({"left"}, trials, samples, noise);
+  antipode::cells::run({"left", "right"}, trials, samples, noise);
 }
