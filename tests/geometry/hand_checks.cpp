@@ -27,7 +27,7 @@ void expect_closing_points_inside(const Cloud& cloud, const Hand& hand, const Ha
 
 void expect_stats_add_up(const HandSearchResult& result) {
   const HandSearchStats& s = result.stats;
-  EXPECT_EQ(s.poses, s.acceptable + s.hidden + s.in_collision + s.empty + s.too_shallow);
+  EXPECT_EQ(s.poses, s.acceptable + s.below_support + s.hidden + s.in_collision + s.empty + s.too_shallow);
   EXPECT_EQ(s.samples,
             s.frames_quadric + s.frames_planar + s.skipped_too_few + s.skipped_collinear);
   EXPECT_EQ(s.samples, result.sample_points.size());

@@ -3,10 +3,12 @@
 #include "antipode/geometry/hand_search.hpp"
 
 #include <cmath>
+#include <limits>
 
 #include <gtest/gtest.h>
 
 #include "antipode/core/error.hpp"
+#include "antipode/geometry/hand_body.hpp"
 #include "antipode/geometry/preprocess.hpp"
 #include "hand_checks.hpp"
 #include "synthetic_shapes.hpp"
@@ -117,6 +119,55 @@ TEST(HandSearchTest, CylinderStandingOnATableGivesHandsOnTheCylinderOnly) {
         << hand.width_m << " bite " << hand.score << " from the can's axis "
         << ((sample - on_table) - (sample - on_table).dot(up) * up).norm();
   }
+}
+
+// The lowest point of the hand body (fingers and palm) along `up`, relative to `on_table`.
+double lowest_point(const Hand& hand, const HandSearchParameters& parameters,
+                    const Eigen::Vector3d& up, const Eigen::Vector3d& on_table) {
+  const HandBody body = make_hand_body(parameters.hand, parameters.palm_thickness_m);
+  double lowest = std::numeric_limits<double>::infinity();
+  for (const HandBox* box : {&body.finger_minus_y, &body.finger_plus_y, &body.palm}) {
+    for (int corner = 0; corner < 8; ++corner) {
+      const Eigen::Vector3d c((corner & 1) ? box->max_m.x() : box->min_m.x(),
+                              (corner & 2) ? box->max_m.y() : box->min_m.y(),
+                              (corner & 4) ? box->max_m.z() : box->min_m.z());
+      lowest = std::min(lowest, (hand.X_FrameHand * c - on_table).dot(up));
+    }
+  }
+  return lowest;
+}
+
+TEST(HandSearchTest, NoHandReachesIntoTheSupportPlane) {
+  // The same scene sampled everywhere: the table is found as the support, so no sample is
+  // drawn from it, and no hand reaches below it - not even past its cut border, where there
+  // are no points to collide with.
+  const Eigen::Vector3d up = Eigen::Vector3d(0.0, -1.0, -1.0).normalized();
+  const Eigen::Vector3d on_table(0.0, 0.0, 0.7);
+  Cloud cloud = testing::plane_cloud(on_table, up, 0.3);
+  testing::append(cloud, testing::cylinder_cloud(on_table + 0.06 * up, up, 0.05, 0.12));
+  HandSearchParameters parameters = small_search();
+  parameters.samples = 1000;
+  const Search s = search(cloud, parameters);
+  ASSERT_TRUE(s.result.support_plane.has_value());
+  EXPECT_GT(s.result.support_plane->normal.cast<double>().dot(up), 0.999);
+  EXPECT_GT(s.result.stats.on_support, s.cloud.size() / 2);
+  ASSERT_GE(s.result.hands.size(), 20u);
+  const double margin = parameters.support.distance_m + 1e-4;
+  for (const Hand& hand : s.result.hands) {
+    const Eigen::Vector3d sample = s.cloud.points_m[hand.sample_index].cast<double>();
+    EXPECT_GT((sample - on_table).dot(up), parameters.support.distance_m - 1e-3);
+    EXPECT_GE(lowest_point(hand, parameters, up, on_table), -margin)
+        << "hand at " << hand.position_m().transpose() << " reaches into the table";
+  }
+  // Without the support, hands grip the table's border and reach below it.
+  parameters.support_plane = SupportPlaneMode::kNone;
+  const Search none = search(cloud, parameters);
+  EXPECT_FALSE(none.result.support_plane.has_value());
+  std::size_t below = 0;
+  for (const Hand& hand : none.result.hands) {
+    below += lowest_point(hand, parameters, up, on_table) < -margin;
+  }
+  EXPECT_GT(below, 0u);
 }
 
 TEST(HandSearchTest, ResultDoesNotDependOnThreadCount) {

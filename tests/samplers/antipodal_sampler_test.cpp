@@ -98,6 +98,8 @@ point_radius_m: 0.003
 keep_all_positions: true
 threads: 1
 view_origin: [0, 0, 0]
+support_plane: auto
+support_distance_m: 0.008
 )";
   const auto sampler = create(yaml);
   ASSERT_NE(sampler, nullptr);
@@ -122,6 +124,33 @@ TEST_F(AntipodalSamplerTest, BadParametersAreLocatedErrors) {
             "mean 'depth_m'?)");
   EXPECT_EQ(creation_error("min_bite_m: 0.5"),
             "tree.yaml:1:1: hand search: min_bite_m must be in [0, depth_m], got 0.500000");
+  EXPECT_EQ(creation_error("support_plane: table"),
+            "tree.yaml:1:1: parameter 'support_plane' must be 'auto' or 'none', got 'table'");
+  EXPECT_EQ(creation_error("support_distance_m: 0"),
+            "tree.yaml:1:1: parameter 'support_distance_m' must be > 0.000000, got 0.000000");
+  EXPECT_EQ(creation_error("support_distance_m: 0.5"),
+            "tree.yaml:1:1: parameter 'support_distance_m' must be below 0.1, got 0.500000");
+}
+
+TEST_F(AntipodalSamplerTest, SupportPlaneModes) {
+  // A table seen from above at 45 degrees, a 5 cm can standing on it; samples over all of it.
+  const Eigen::Vector3d up = Eigen::Vector3d(0.0, -1.0, -1.0).normalized();
+  const Eigen::Vector3d on_table(0.0, 0.0, 0.7);
+  Cloud cloud = testing::plane_cloud(on_table, up, 0.3);
+  testing::append(cloud, testing::cylinder_cloud(on_table + 0.06 * up, up, 0.05, 0.12));
+  const auto on_the_table = [&](const HandSet& set) {
+    std::size_t count = 0;
+    for (const Hand& hand : set.hands) {
+      const Eigen::Vector3d sample = set.cloud->points_m[hand.sample_index].cast<double>();
+      count += (sample - on_table).dot(up) < 0.005;
+    }
+    return count;
+  };
+  const HandSet automatic = create("samples: 600")->sample(cloud, RandomStream(1));
+  const HandSet none = create("samples: 600\nsupport_plane: none")->sample(cloud, RandomStream(1));
+  ASSERT_FALSE(automatic.hands.empty());
+  EXPECT_EQ(on_the_table(automatic), 0u);
+  EXPECT_GT(on_the_table(none), 0u);  // the table's cut border looks like a plate's edge
 }
 
 TEST_F(AntipodalSamplerTest, UnusableCloudsAreErrors) {

@@ -143,10 +143,12 @@ PoseOutcome evaluate_pose(const GridSpec& spec, float offset, const GridScratch&
   return pose;
 }
 
-void count(const PoseOutcome& pose, bool hidden, HandSearchStats& stats) {
+void count(const PoseOutcome& pose, bool below, bool hidden, HandSearchStats& stats) {
   ++stats.poses;
   if (pose.acceptable)
     ++stats.acceptable;
+  else if (below)
+    ++stats.below_support;
   else if (hidden)
     ++stats.hidden;
   else if (pose.rejection == Rejection::kInCollision)
@@ -218,6 +220,29 @@ bool make_hand(const SampleContext& context, float c, float s, float offset,
   return true;
 }
 
+// The body's extent along the support's normal, relative to the palm face's centre: the
+// lowest point of the fingers and palm (three boxes, so the minimum is at a corner).
+struct BodyDepth {
+  float along_approach, along_closing, along_axis;  // the support normal in hand axes
+
+  float lowest(const GridSpec& spec) const {
+    const float z = -std::fabs(along_axis) * spec.half_height_m;
+    const float fingers = std::min(0.0f, along_approach * spec.depth_m) -
+                          std::fabs(along_closing) * (spec.half_aperture_m + spec.finger_width_m);
+    const float palm = std::min(0.0f, -along_approach * spec.palm_thickness_m) -
+                       std::fabs(along_closing) * spec.body_half_width_m;
+    return std::min(fingers, palm) + z;
+  }
+};
+
+// True when the body of the hand at `pose` reaches more than the margin below the support.
+bool below_support(const SampleContext& context, const GridSpec& spec, const BodyDepth& body,
+                   float offset, const PoseOutcome& pose) {
+  const float origin = context.support->distance(context.frame.origin_m) +
+                       pose.palm_m * body.along_approach + offset * body.along_closing;
+  return origin + body.lowest(spec) < -spec.support_margin_m;
+}
+
 // True when a finger of the hand at `pose` reaches into space no sensor saw.
 bool finger_hidden(const SampleContext& context, const GridSpec& spec, float c, float s,
                    float offset, const PoseOutcome& pose) {
@@ -250,6 +275,7 @@ GridSpec::GridSpec(const HandSearchParameters& p) {
   min_view_cosine = static_cast<float>(std::cos(p.max_view_angle_deg * M_PI / 180.0));
   keep_all_positions = p.keep_all_positions;
   occlusion_margin_m = static_cast<float>(p.occlusion_margin_m);
+  support_margin_m = p.support.distance_m;
   for (const float side : {-1.0f, 1.0f}) {
     for (const float fraction : {1.0f / 3.0f, 2.0f / 3.0f, 1.0f}) {
       finger_probes.emplace_back(fraction * depth_m, side * (half_aperture_m + finger_width_m / 2),
@@ -287,13 +313,23 @@ void grid_search(const SampleContext& context, const GridSpec& spec, GridScratch
       continue;
     }
     orient(spec, c, s, g);
+    BodyDepth body{0.0f, 0.0f, 0.0f};
+    if (context.support != nullptr) {
+      const Eigen::Vector3f& up = context.support->normal;
+      const LocalFrame& f = context.frame;
+      body = {-(c * up.dot(f.normal) + s * up.dot(f.binormal)),
+              s * up.dot(f.normal) - c * up.dot(f.binormal), up.dot(f.axis)};
+    }
     for (std::size_t p = 0; p < spec.offsets_m.size(); ++p) {
       PoseOutcome& pose = g.poses[p];
       pose = evaluate_pose(spec, spec.offsets_m[p], g);
+      const bool below = pose.acceptable && context.support != nullptr &&
+                         below_support(context, spec, body, spec.offsets_m[p], pose);
+      if (below) pose.acceptable = false;
       const bool hidden = pose.acceptable && context.occlusion != nullptr &&
                           finger_hidden(context, spec, c, s, spec.offsets_m[p], pose);
       if (hidden) pose.acceptable = false;
-      count(pose, hidden, stats);
+      count(pose, below, hidden, stats);
     }
     choose_positions(g.poses, spec.keep_all_positions, g.chosen);
     for (const std::size_t p : g.chosen) {

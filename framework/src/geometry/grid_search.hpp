@@ -11,6 +11,7 @@
 #include "antipode/geometry/hand_search.hpp"
 #include "antipode/geometry/local_frame.hpp"
 #include "antipode/geometry/occlusion.hpp"
+#include "antipode/geometry/support_plane.hpp"
 
 namespace antipode::geometry {
 
@@ -28,6 +29,7 @@ struct GridSpec {
   float min_view_cosine;        ///< cosine of max_view_angle_deg
   bool keep_all_positions;
   float occlusion_margin_m;
+  float support_margin_m;  ///< how far the body may reach below the support plane
   std::vector<Eigen::Vector3f> finger_probes;  ///< hand-frame points tested for occlusion
   std::vector<float> cos_phi, sin_phi;         ///< per orientation
   std::vector<float> offsets_m;                ///< per position: hand centre along closing
@@ -69,6 +71,7 @@ struct SampleContext {
   std::int32_t sample;            ///< the sample's index in the cloud
   Eigen::Vector3f toward_viewer;  ///< unit direction to the sensors that saw it (or zero)
   const OcclusionMap* occlusion;  ///< null: no occlusion test
+  const SupportPlane* support;     ///< null: no support plane
 };
 
 /// Searches the orientation x position grid around the sample's frame using the cloud points

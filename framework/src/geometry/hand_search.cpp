@@ -18,8 +18,10 @@
 namespace antipode {
 namespace {
 
-// Stream index of the sample choice; per-sample work uses random.derive(1 + sample).
+// Stream index of the sample choice; per-sample work uses random.derive(1 + sample), and
+// the support plane a stream no sample index reaches.
 constexpr std::uint64_t kSampleChoiceStream = 0;
+constexpr std::uint64_t kSupportPlaneStream = 0xFFFFFFFFFFFFull;
 
 struct SampleOutput {
   std::vector<Hand> hands;
@@ -34,6 +36,7 @@ struct SearchContext {
   const HandSearchParameters& parameters;
   const geometry::GridSpec& spec;
   const OcclusionMap* occlusion;
+  const SupportPlane* support;
 };
 
 void search_sample(const SearchContext& search, std::int32_t sample, geometry::GridScratch& scratch,
@@ -62,26 +65,42 @@ void search_sample(const SearchContext& search, std::int32_t sample, geometry::G
   }
   search.slabs.query(point, frame.axis, search.spec.slab_half_thickness_m, search.spec.reach_m,
                      scratch.hand_neighbours);
-  const geometry::SampleContext context{cloud, frame, sample, viewer, search.occlusion};
+  const geometry::SampleContext context{cloud,  frame,           sample,
+                                        viewer, search.occlusion, search.support};
   geometry::grid_search(context, search.spec, scratch, out.hands, out.stats);
 }
 
-// Indices of the points samples may be drawn from.
-std::vector<std::int32_t> candidates(const Cloud& cloud, const std::optional<AxisBox>& region) {
+// Indices of the points samples may be drawn from: those in the region (if set) and not on
+// or below the support (if any); `on_support` counts the points the support excluded.
+std::vector<std::int32_t> candidates(const Cloud& cloud, const std::optional<AxisBox>& region,
+                                     const SupportPlane* support, float support_distance_m,
+                                     std::size_t& on_support) {
   std::vector<std::int32_t> indices;
   indices.reserve(cloud.size());
+  bool in_region = false;
   for (std::size_t i = 0; i < cloud.size(); ++i) {
-    if (!region || region->contains(cloud.points_m[i])) {
-      indices.push_back(static_cast<std::int32_t>(i));
+    const Eigen::Vector3f& p = cloud.points_m[i];
+    if (region && !region->contains(p)) continue;
+    in_region = true;
+    if (support != nullptr && support->distance(p) <= support_distance_m) {
+      ++on_support;
+      continue;
     }
+    indices.push_back(static_cast<std::int32_t>(i));
   }
-  if (indices.empty()) throw Error("hand search: no point of the cloud lies in the sample region");
+  if (!in_region) throw Error("hand search: no point of the cloud lies in the sample region");
   return indices;
 }
 
+// Where the sensors are, for orienting the support plane: the mean of the view origins.
+Eigen::Vector3f sensor_position(const Cloud& cloud) {
+  Eigen::Vector3f sum = Eigen::Vector3f::Zero();
+  for (const auto& origin : cloud.view_origins_m) sum += origin;
+  return cloud.view_origins_m.empty() ? sum : (sum / static_cast<float>(cloud.view_origins_m.size())).eval();
+}
+
 HandSearchResult concatenate(std::vector<SampleOutput>& outputs,
-                             std::vector<std::int32_t> samples) {
-  HandSearchResult result;
+                             std::vector<std::int32_t> samples, HandSearchResult result) {
   result.sample_points = std::move(samples);
   std::size_t total = 0;
   for (const auto& out : outputs) total += out.hands.size();
@@ -107,11 +126,18 @@ HandSearchResult search_hands(const Cloud& cloud, const HandSearchParameters& pa
     occlusion =
         std::make_unique<OcclusionMap>(cloud, static_cast<float>(parameters.point_radius_m));
   }
+  HandSearchResult result;
+  if (parameters.support_plane == SupportPlaneMode::kAuto) {
+    result.support_plane = find_support_plane(cloud, sensor_position(cloud), parameters.support,
+                                              random.derive(kSupportPlaneStream));
+  }
+  const SupportPlane* support = result.support_plane ? &*result.support_plane : nullptr;
   const geometry::SlabGrid slabs(cloud.points_m, geometry::kSlabCell_m);
-  const SearchContext search{cloud, index, slabs, parameters, spec, occlusion.get()};
-  std::vector<std::int32_t> samples =
-      geometry::choose_samples(candidates(cloud, parameters.sample_region), parameters.samples,
-                               random.derive(kSampleChoiceStream));
+  const SearchContext search{cloud, index, slabs, parameters, spec, occlusion.get(), support};
+  std::vector<std::int32_t> samples = geometry::choose_samples(
+      candidates(cloud, parameters.sample_region, support, parameters.support.distance_m,
+                 result.stats.on_support),
+      parameters.samples, random.derive(kSampleChoiceStream));
   std::vector<SampleOutput> outputs(samples.size());
   tbb::enumerable_thread_specific<geometry::GridScratch> scratch;
   tbb::task_arena arena(parameters.threads > 0 ? parameters.threads : tbb::task_arena::automatic);
@@ -124,7 +150,7 @@ HandSearchResult search_hands(const Cloud& cloud, const HandSearchParameters& pa
                         }
                       });
   });
-  return concatenate(outputs, std::move(samples));
+  return concatenate(outputs, std::move(samples), std::move(result));
 }
 
 }  // namespace antipode

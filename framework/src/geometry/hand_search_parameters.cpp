@@ -35,6 +35,19 @@ void HandSearchParameters::validate() const {
           ">= 0", occlusion_margin_m);
   require(point_radius_m > 0.0 && point_radius_m < 0.1, "point_radius_m", "in (0, 0.1)",
           point_radius_m);
+  require(support.distance_m > 0.0f && support.distance_m < 0.1f, "support.distance_m",
+          "in (0, 0.1)", support.distance_m);
+  require(support.min_inlier_fraction >= 0.0f && support.min_inlier_fraction <= 1.0f,
+          "support.min_inlier_fraction", "in [0, 1]", support.min_inlier_fraction);
+  require(support.max_below_fraction >= 0.0f && support.max_below_fraction <= 1.0f,
+          "support.max_below_fraction", "in [0, 1]", support.max_below_fraction);
+  require(support.min_supported_fraction >= 0.0f && support.min_supported_fraction <= 1.0f,
+          "support.min_supported_fraction", "in [0, 1]", support.min_supported_fraction);
+  require(support.min_facing_fraction >= 0.0f && support.min_facing_fraction <= 1.0f,
+          "support.min_facing_fraction", "in [0, 1]", support.min_facing_fraction);
+  require(support.min_above_fraction >= 0.0f && support.min_above_fraction <= 1.0f,
+          "support.min_above_fraction", "in [0, 1]", support.min_above_fraction);
+  require(support.iterations >= 1, "support.iterations", "at least 1", support.iterations);
   require(threads >= 0, "threads", ">= 0", threads);
   require(frame.min_points >= 9, "frame.min_points", "at least 9",
           static_cast<double>(frame.min_points));
@@ -58,6 +71,8 @@ HandSearchStats& HandSearchStats::operator+=(const HandSearchStats& o) {
   empty += o.empty;
   too_shallow += o.too_shallow;
   hidden += o.hidden;
+  below_support += o.below_support;
+  on_support += o.on_support;
   acceptable += o.acceptable;
   hands += o.hands;
   return *this;

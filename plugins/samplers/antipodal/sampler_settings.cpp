@@ -1,6 +1,7 @@
 #include "sampler_settings.hpp"
 
 #include <cmath>
+#include <string>
 #include <vector>
 
 namespace antipode::samplers {
@@ -77,6 +78,15 @@ HandGeometry hand_geometry(const Parameters& params) {
   return h;
 }
 
+SupportPlaneMode support_mode(const Parameters& params) {
+  const std::string value = params.get<std::string>("support_plane", "auto");
+  if (value == "auto") return SupportPlaneMode::kAuto;
+  if (value == "none") return SupportPlaneMode::kNone;
+  params.fail("support_plane", "parameter 'support_plane' must be 'auto' or 'none', got '" +
+                                   value + "'");
+  return SupportPlaneMode::kNone;
+}
+
 HandSearchParameters search_parameters(const Parameters& params) {
   HandSearchParameters s;
   s.hand = hand_geometry(params);
@@ -93,6 +103,14 @@ HandSearchParameters search_parameters(const Parameters& params) {
   s.occlusion_margin_m = number(params, "occlusion_margin_m", s.occlusion_margin_m, 0.0, true);
   s.point_radius_m = number(params, "point_radius_m", s.point_radius_m, 0.0, false);
   s.keep_all_positions = params.get<bool>("keep_all_positions", s.keep_all_positions);
+  s.support_plane = support_mode(params);
+  const double support_distance =
+      number(params, "support_distance_m", s.support.distance_m, 0.0, false);
+  if (support_distance >= 0.1) {
+    params.fail("support_distance_m", "parameter 'support_distance_m' must be below 0.1, got " +
+                                          std::to_string(support_distance));
+  }
+  s.support.distance_m = static_cast<float>(support_distance);
   s.threads = integer(params, "threads", 0, 0);
   s.sample_region = box(params, "sample_region");
   return s;

@@ -18,8 +18,15 @@
 #include "antipode/core/random.hpp"
 #include "antipode/geometry/axis_box.hpp"
 #include "antipode/geometry/local_frame.hpp"
+#include "antipode/geometry/support_plane.hpp"
 
 namespace antipode {
+
+/// Whether the search looks for a support plane (see support_plane.hpp).
+enum class SupportPlaneMode : std::uint8_t {
+  kNone,  ///< no support: every point may be sampled, hands are limited by points alone
+  kAuto,  ///< find the dominant plane with the cloud on its sensor side and treat it as solid
+};
 
 struct HandSearchParameters {
   HandGeometry hand;
@@ -65,6 +72,14 @@ struct HandSearchParameters {
   /// run of consecutive acceptable positions (the hand best centred on the object);
   /// true: keep every acceptable position.
   bool keep_all_positions = false;
+  /// kAuto: find the support plane the objects stand on (find_support_plane, with
+  /// `support.distance_m` as the inlier distance); when there is one, points within that
+  /// distance of it (or below it) are not sampled, and a pose whose fingers or palm reach
+  /// more than that distance below it is rejected (`below_support`): the plane is a solid
+  /// half-space even where the cloud has no points (beyond a cropped scene's cut edge, in
+  /// the shadow of an object).
+  SupportPlaneMode support_plane = SupportPlaneMode::kAuto;
+  SupportPlaneOptions support;
   /// Worker threads (0: as many as the hardware has). Results do not depend on it.
   int threads = 0;
 
@@ -85,6 +100,8 @@ struct HandSearchStats {
   std::size_t empty = 0;                ///< poses with nothing between the fingers
   std::size_t too_shallow = 0;          ///< poses where the object reaches less than min_bite
   std::size_t hidden = 0;               ///< poses with a finger in space no sensor saw
+  std::size_t below_support = 0;        ///< poses reaching below the support plane
+  std::size_t on_support = 0;           ///< cloud points not sampled: on or below the support
   std::size_t acceptable = 0;           ///< poses meeting every condition
   std::size_t hands = 0;                ///< hands returned
 
@@ -101,6 +118,8 @@ struct HandSearchResult {
   /// Index in the cloud of each sampled point, in sample order.
   std::vector<std::int32_t> sample_points;
   HandSearchStats stats;
+  /// The support plane found (SupportPlaneMode::kAuto), if any.
+  std::optional<SupportPlane> support_plane;
 };
 
 /// Runs the hand search on `cloud`, which should already be preprocessed (finite points,
