@@ -2,6 +2,7 @@
 
 #include "antipode/core/parameters.hpp"
 #include "bullet_cell.hpp"
+#include "gripper.hpp"
 
 namespace antipode::cells {
 namespace {
@@ -99,6 +100,22 @@ TEST(Grasp, SameSeedSameOutcomes) {
   EXPECT_EQ(a.first, b.first);
   ASSERT_EQ(a.second.size(), b.second.size());
   for (std::size_t i = 0; i < a.second.size(); ++i) EXPECT_EQ(a.second[i], b.second[i]);
+}
+
+TEST(Grasp, TheHandStallsAgainstTheTableWithItsForceBound) {
+  const SceneSpec spec = parse("placement: packed\n");
+  PhysicsWorld world(PhysicsOptions{});
+  MeshCache meshes;
+  build_scene(spec, 0, meshes, world);
+  GripperOptions options;
+  Eigen::Isometry3d pose = top_down(0.72, -0.12, spec.table.top_z_m + 0.08).X_FrameHand;
+  Gripper gripper(world, options, pose);
+  pose.translation().z() -= 0.1;  // fingertips 4 cm into the table
+  gripper.move_to(pose);
+  world.step(240);
+  const double fingertips = gripper.actual_pose().translation().z() - options.geometry.depth_m;
+  EXPECT_GT(fingertips, spec.table.top_z_m - 0.005);
+  EXPECT_FALSE(gripper.touching(0.002).empty());
 }
 
 TEST(Grasp, ResetRestoresTheScene) {

@@ -47,6 +47,7 @@ CellOptions read_cell_options(const Parameters& p, const SceneSpec& scene) {
   a.hold_s = in_range(p, "hold_s", a.hold_s, 0.0, 10.0);
   a.gripper.finger_force_n = in_range(p, "finger_force_n", a.gripper.finger_force_n, 0.1, 500.0);
   a.gripper.friction = in_range(p, "gripper_friction", a.gripper.friction, 0.05, 1.0);
+  a.gripper.hand_force_n = in_range(p, "hand_force_n", a.gripper.hand_force_n, 1.0, 5000.0);
   a.gripper.palm_thickness_m = in_range(p, "palm_thickness_m", 0.02, 0.001, 0.2);
   a.table_top_z_m = scene.table.top_z_m;
   return o;

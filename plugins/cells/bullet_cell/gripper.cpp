@@ -20,8 +20,9 @@ Gripper::Gripper(PhysicsWorld& world, const GripperOptions& options,
   const double t = options.palm_thickness_m;
   const double palm_half_y =
       std::max(g.outer_diameter_m, g.max_aperture_m + 2 * g.finger_width_m) / 2;
-  palm_ = world.add_gripper_box(X_BaseHand * offset(-t / 2, 0, 0),
-                                {t / 2, palm_half_y, g.height_m / 2}, 0.0, options.friction);
+  palm_ =
+      world.add_gripper_box(X_BaseHand * offset(-t / 2, 0, 0), {t / 2, palm_half_y, g.height_m / 2},
+                            options.palm_mass_kg, options.friction);
   for (int side = 0; side < 2; ++side) {
     const double sign = side == 0 ? -1.0 : 1.0;
     const double y = sign * (g.max_aperture_m + g.finger_width_m) / 2;
@@ -48,18 +49,42 @@ Gripper::Gripper(PhysicsWorld& world, const GripperOptions& options,
     world.add_constraint(slider);
     sliders_[side] = slider;
   }
+  world.set_before_step([this] { drive(); });
 }
 
 Gripper::~Gripper() {
+  world_.set_before_step({});
   world_.remove_constraints();
   world_.remove_body(fingers_[0]);
   world_.remove_body(fingers_[1]);
   world_.remove_body(palm_);
 }
 
-void Gripper::move_to(const Eigen::Isometry3d& X_BaseHand) {
-  X_BaseHand_ = X_BaseHand;
-  world_.move_kinematic(palm_, X_BaseHand * offset(-options_.palm_thickness_m / 2, 0, 0));
+void Gripper::move_to(const Eigen::Isometry3d& X_BaseHand) { X_BaseHand_ = X_BaseHand; }
+
+Eigen::Isometry3d Gripper::actual_pose() const {
+  return world_.pose(palm_) * offset(options_.palm_thickness_m / 2, 0, 0);
+}
+
+void Gripper::drive() {
+  btRigidBody& palm = world_.body(palm_);
+  const double dt = world_.options().time_step_s;
+  const Eigen::Isometry3d target = X_BaseHand_ * offset(-options_.palm_thickness_m / 2, 0, 0);
+  const Eigen::Isometry3d now = world_.pose(palm_);
+  const Eigen::Vector3d velocity = (target.translation() - now.translation()) / dt;
+  Eigen::Vector3d impulse =
+      options_.palm_mass_kg * (velocity - from_bullet(palm.getLinearVelocity()));
+  if (impulse.norm() > options_.hand_force_n * dt)
+    impulse *= options_.hand_force_n * dt / impulse.norm();
+  palm.applyCentralImpulse(to_bullet(impulse));
+  const Eigen::AngleAxisd error(target.linear() * now.linear().transpose());
+  const Eigen::Vector3d spin = error.axis() * error.angle() / dt;
+  const btVector3 wanted = to_bullet(spin) - palm.getAngularVelocity();
+  const btMatrix3x3 inertia = palm.getInvInertiaTensorWorld().inverse();
+  Eigen::Vector3d torque_impulse = from_bullet(inertia * wanted);
+  if (torque_impulse.norm() > options_.hand_torque_nm * dt)
+    torque_impulse *= options_.hand_torque_nm * dt / torque_impulse.norm();
+  palm.applyTorqueImpulse(to_bullet(torque_impulse));
 }
 
 void Gripper::drive_fingers(double velocity_m_s) {

@@ -98,10 +98,7 @@ int PhysicsWorld::add_gripper_box(const Eigen::Isometry3d& pose, const Eigen::Ve
   entry->body = make_body(entry->shape, entry->motion.get(), mass_kg, friction);
   btRigidBody& body = *entry->body;
   body.setActivationState(DISABLE_DEACTIVATION);
-  if (mass_kg <= 0.0)
-    body.setCollisionFlags(body.getCollisionFlags() | btCollisionObject::CF_KINEMATIC_OBJECT);
-  else
-    body.setFlags(body.getFlags() | BT_DISABLE_WORLD_GRAVITY);
+  body.setFlags(body.getFlags() | BT_DISABLE_WORLD_GRAVITY);
   return insert(std::move(entry));
 }
 
@@ -142,13 +139,12 @@ Eigen::Isometry3d PhysicsWorld::pose(int id) const {
   return from_bullet(body(id).getWorldTransform());
 }
 
-void PhysicsWorld::move_kinematic(int id, const Eigen::Isometry3d& pose) {
-  bodies_.at(id)->motion->setWorldTransform(to_bullet(pose));
-}
-
 void PhysicsWorld::step(int steps) {
   const btScalar dt = btScalar(options_.time_step_s);
-  for (int i = 0; i < steps; ++i) engine_->world.stepSimulation(dt, 0, dt);
+  for (int i = 0; i < steps; ++i) {
+    if (before_step_) before_step_();
+    engine_->world.stepSimulation(dt, 0, dt);
+  }
   steps_ += steps;
 }
 

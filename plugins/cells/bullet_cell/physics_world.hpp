@@ -2,6 +2,7 @@
 // One Bullet world (Bullet is not thread-safe across a shared world: one per cell instance).
 // Bodies are named by integer ids that stay valid until removed.
 
+#include <functional>
 #include <map>
 #include <memory>
 #include <set>
@@ -38,7 +39,7 @@ class PhysicsWorld {
   int add_fixture_box(const Eigen::Isometry3d& pose, const Eigen::Vector3d& half_extents_m,
                       double friction, bool visible = true);
   int add_object(const ObjectModel& model, const Eigen::Isometry3d& pose);
-  /// A box body of the gripper: dynamic with `mass_kg` > 0 (no gravity), kinematic with 0.
+  /// A box body of the gripper, dynamic and without gravity.
   int add_gripper_box(const Eigen::Isometry3d& pose, const Eigen::Vector3d& half_extents_m,
                       double mass_kg, double friction);
   void remove_body(int id);
@@ -52,10 +53,10 @@ class PhysicsWorld {
   const std::string& name(int id) const;
 
   Eigen::Isometry3d pose(int id) const;
-  /// Moves a kinematic body; it reaches `pose` over the next step.
-  void move_kinematic(int id, const Eigen::Isometry3d& pose);
 
   void step(int steps = 1);
+  /// Runs `hook` before every physics step (a controller's drive); an empty one removes it.
+  void set_before_step(std::function<void()> hook) { before_step_ = std::move(hook); }
   /// Steps until every object moves slower than `speed_m_s` (or `max_s` has passed).
   void settle(double max_s, double speed_m_s = 0.005);
   double time_s() const { return steps_ * options_.time_step_s; }
@@ -84,6 +85,7 @@ class PhysicsWorld {
   std::unique_ptr<Engine> engine_;
   std::map<int, std::unique_ptr<Entry>> bodies_;
   std::vector<std::unique_ptr<btTypedConstraint>> constraints_;
+  std::function<void()> before_step_;
   int next_id_ = 0;
   long steps_ = 0;
 };
