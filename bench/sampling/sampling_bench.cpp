@@ -9,6 +9,7 @@
 #include "antipode/geometry/local_frame.hpp"
 #include "antipode/geometry/point_index.hpp"
 #include "antipode/geometry/preprocess.hpp"
+#include "antipode/geometry/support_plane.hpp"
 #include "antipode/io/load_cloud.hpp"
 #include "bench_data.hpp"
 
@@ -94,8 +95,25 @@ void BM_HandSearch(benchmark::State& state) {
   }
   state.counters["hands"] = static_cast<double>(stats.hands);
   state.counters["poses"] = static_cast<double>(stats.poses);
+  state.counters["samples"] = static_cast<double>(stats.samples);
+  state.counters["on_support"] = static_cast<double>(stats.on_support);
 }
 BENCHMARK(BM_HandSearch)->Arg(2)->Arg(1)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+// Finding the support plane (the table) on the preprocessed cloud.
+void BM_SupportPlane(benchmark::State& state) {
+  if (!have_scene(state)) return;
+  const Cloud cloud = preprocess(load_cloud(kScene), PreprocessOptions{});
+  std::size_t inliers = 0;
+  for (auto _ : state) {
+    const auto plane = find_support_plane(cloud, Eigen::Vector3f::Zero(), SupportPlaneOptions{},
+                                          RandomStream(1).derive(0xFFFFFFFFFFFFull));
+    inliers = plane ? plane->inliers : 0;
+    benchmark::DoNotOptimize(inliers);
+  }
+  state.counters["inliers"] = static_cast<double>(inliers);
+}
+BENCHMARK(BM_SupportPlane)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 }  // namespace
 }  // namespace antipode

@@ -7,6 +7,7 @@
 
 #include "antipode/geometry/hand_search.hpp"
 #include "antipode/geometry/preprocess.hpp"
+#include "antipode/geometry/sample_hands.hpp"
 #include "antipode/io/load_cloud.hpp"
 #include "hand_checks.hpp"
 
@@ -31,6 +32,29 @@ TEST(HandSearchRealTest, HandsOnTheKrylonCan) {
   const HandSearchResult result = search_hands(cloud, parameters, RandomStream(1));
   EXPECT_GE(result.hands.size(), 100u);
   testing::expect_valid_hands(cloud, result, parameters);
+}
+
+TEST(HandSearchRealTest, ObjectCentredCloudIsSeenFromAllAround) {
+  // krylon.pcd has no VIEWPOINT, so its view origin is the frame's origin - the centre of
+  // the can. No sensor saw the can from there: sample_hands searches it as seen from all
+  // around, so every hand approaches its sample from outside the can.
+  const std::string path = shared_cloud("krylon.pcd");
+  SKIP_WITHOUT(path);
+  HandSamplingOptions options;
+  options.search.samples = 1000;
+  options.search.threads = 2;
+  HandSearchStats stats;
+  const HandSet set = sample_hands(load_cloud(path), options, RandomStream(1), &stats);
+  EXPECT_TRUE(set.cloud->view_origins_m.empty());
+  ASSERT_GE(set.hands.size(), 100u);
+  Eigen::Vector3d centroid = Eigen::Vector3d::Zero();
+  for (const auto& p : set.cloud->points_m) centroid += p.cast<double>();
+  centroid /= static_cast<double>(set.cloud->size());
+  for (const Hand& hand : set.hands) {
+    const Eigen::Vector3d sample = set.cloud->points_m[hand.sample_index].cast<double>();
+    EXPECT_LE(hand.approach().dot(sample - centroid), 1e-6)
+        << "hand from inside the can at " << hand.position_m().transpose();
+  }
 }
 
 // The table of table_mug.pcd: the plane through the points outside the box around the mug

@@ -46,7 +46,8 @@ void search_sample(const SearchContext& search, std::int32_t sample, geometry::G
   out.stats.samples = 1;
   const Eigen::Vector3f& point = cloud.points_m[static_cast<std::size_t>(sample)];
   search.index.radius_search(point, static_cast<float>(p.frame_radius_m), scratch.frame_neighbours);
-  const Eigen::Vector3f viewer = geometry::toward_viewer(cloud, static_cast<std::size_t>(sample));
+  const Eigen::Vector3f viewer =
+      geometry::toward_viewer(cloud, static_cast<std::size_t>(sample), p.outward_from_m);
   const LocalFrame frame =
       estimate_local_frame(cloud.points_m, scratch.frame_neighbours, point, viewer, p.frame);
   switch (frame.status) {
@@ -127,7 +128,8 @@ HandSearchResult search_hands(const Cloud& cloud, const HandSearchParameters& pa
         std::make_unique<OcclusionMap>(cloud, static_cast<float>(parameters.point_radius_m));
   }
   HandSearchResult result;
-  if (parameters.support_plane == SupportPlaneMode::kAuto) {
+  const bool all_around = cloud.view_origins_m.empty() && parameters.outward_from_m;
+  if (parameters.support_plane == SupportPlaneMode::kAuto && !all_around) {
     result.support_plane = find_support_plane(cloud, sensor_position(cloud), parameters.support,
                                               random.derive(kSupportPlaneStream));
   }

@@ -14,9 +14,13 @@ std::vector<std::int32_t> choose_samples(std::vector<std::int32_t> indices, std:
   return indices;
 }
 
-Eigen::Vector3f toward_viewer(const Cloud& cloud, std::size_t index) {
+Eigen::Vector3f toward_viewer(const Cloud& cloud, std::size_t index,
+                              const std::optional<Eigen::Vector3f>& outward_from) {
   const Eigen::Vector3f& p = cloud.points_m[index];
-  if (cloud.view_origins_m.empty()) return (-p).normalized();
+  if (cloud.view_origins_m.empty()) {
+    const Eigen::Vector3f away = outward_from ? Eigen::Vector3f(p - *outward_from) : Eigen::Vector3f(-p);
+    return away.normalized();
+  }
   const std::uint32_t mask = cloud.view_masks.empty() ? 1u : cloud.view_masks[index];
   Eigen::Vector3f sum = Eigen::Vector3f::Zero();
   for (std::size_t v = 0; v < cloud.view_origins_m.size() && v < 32; ++v) {

@@ -3,6 +3,7 @@
 // were seen.
 
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 #include <Eigen/Core>
@@ -20,7 +21,9 @@ std::vector<std::int32_t> choose_samples(std::vector<std::int32_t> candidates, s
 
 /// Unit direction from point `index` towards the sensors that saw it (the normalised sum of
 /// the unit directions to the origins of the views in its mask). Clouds without masks count
-/// as seen by view 0; without origins, from (0, 0, 0). Zero if the directions cancel out.
-Eigen::Vector3f toward_viewer(const Cloud& cloud, std::size_t index);
+/// as seen by view 0; without origins, from (0, 0, 0), or from the direction away from
+/// `outward_from` when it is set. Zero if the directions cancel out.
+Eigen::Vector3f toward_viewer(const Cloud& cloud, std::size_t index,
+                              const std::optional<Eigen::Vector3f>& outward_from);
 
 }  // namespace antipode::geometry

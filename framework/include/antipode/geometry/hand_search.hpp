@@ -80,6 +80,10 @@ struct HandSearchParameters {
   /// the shadow of an object).
   SupportPlaneMode support_plane = SupportPlaneMode::kAuto;
   SupportPlaneOptions support;
+  /// For a cloud without view origins: unset - seen from (0, 0, 0); set - seen from all
+  /// around (an object-centred cloud): each point from the direction away from this
+  /// centre, with no support plane. Ignored for clouds with view origins.
+  std::optional<Eigen::Vector3f> outward_from_m;
   /// Worker threads (0: as many as the hardware has). Results do not depend on it.
   int threads = 0;
 

@@ -21,7 +21,15 @@ struct HandSamplingOptions {
   Eigen::Vector3f default_view_origin_m = Eigen::Vector3f::Zero();
 };
 
-/// preprocess() then search_hands(). The returned set's cloud is the preprocessed cloud the
+/// preprocess() then search_hands().
+///
+/// A single-view cloud whose sensor origin lies strictly inside the bounding box of the
+/// preprocessed cloud (typically an object-centred cloud, such as a segmented object or a
+/// model merged from views all around it, read from a file without a viewpoint) cannot have
+/// been seen from there: a depth sensor sees only what is in front of it. Such a cloud is
+/// searched as seen from all around (HandSearchParameters::outward_from_m = its centroid):
+/// normals point away from the centroid, hands approach from outside, there is no occlusion
+/// test and no support plane; the returned cloud then has no view origins and no view masks. The returned set's cloud is the preprocessed cloud the
 /// hands' closing_points and sample_index refer to; every hand's frame is its frame.
 /// `stats`, when given, receives the search's counts. Throws antipode::Error for unusable
 /// input (see preprocess() and search_hands()) or an invalid cloud (Cloud::validate).
