@@ -60,7 +60,7 @@ class DrawGrasps final : public bt::SyncActionNode {
             bt::NodeCategory::kAction,
             {bt::input_port<HandSetPtr>("hands", "hands and the cloud they came from"),
              bt::input_port<std::string>("file", std::string(), "output PNG file; empty = none"),
-             bt::input_port<int>("max_hands", 30, "draw at most this many, best score first"),
+             bt::input_port<int>("max_hands", 12, "draw at most this many, best score first"),
              bt::input_port<int>("size_px", 700, "side of each of the two square views"),
              bt::input_port<std::vector<double>>(
                  "up", std::vector<double>{},
