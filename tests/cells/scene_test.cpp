@@ -2,6 +2,8 @@
 
 #include <btBulletDynamicsCommon.h>
 
+#include <filesystem>
+
 #include "antipode/core/error.hpp"
 #include "antipode/core/parameters.hpp"
 #include "scene_builder.hpp"
@@ -95,6 +97,26 @@ TEST(Scene, ReportsBadKeysWithTheirPlace) {
   EXPECT_THROW(parse("placement: isolated\nrandom_objects: { count: 2, shapes: [box] }\n"), Error);
   EXPECT_THROW(parse("objects:\n  - { shape: box, size_m: [0.1, 0.1, 0.1], friction: 1.5 }\n"),
                Error);
+}
+
+TEST(Scene, MeshPilesFromTheSharedDataSettleInTheBox) {
+  const std::string data = ANTIPODE_TEST_DATA_DIR;
+  if (!std::filesystem::exists(data + "/objects/ycb") ||
+      !std::filesystem::exists(data + "/objects/blobs"))
+    GTEST_SKIP() << "shared data not found at " << data;
+  for (const char* file : {"pile_ycb.yaml", "pile_blobs.yaml"}) {
+    const SceneSpec spec = read_scene(std::string(ANTIPODE_TEST_SOURCE_DIR) + "/scenes/" + file);
+    PhysicsWorld world(PhysicsOptions{});
+    MeshCache meshes;
+    const std::vector<int> ids = build_scene(spec, spec.seed, meshes, world);
+    EXPECT_GE(ids.size(), std::size_t(spec.random.count - 1)) << file;
+    world.step();
+    EXPECT_LT(world.deepest_penetration(), 0.003) << file;
+    for (int id : ids) {
+      const Eigen::Vector3d p = world.pose(id).translation();
+      EXPECT_LT((p.head<2>() - spec.box.center_m).cwiseAbs().maxCoeff(), 0.16) << file;
+    }
+  }
 }
 
 TEST(Scene, DefaultCamerasLookAtTheTableFromTwoSides) {
