@@ -1,0 +1,93 @@
+#include "antipode/grasp/antipodal.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
+
+#include "antipode/core/error.hpp"
+
+namespace antipode {
+
+void AntipodalParameters::validate() const {
+  if (min_points < 1) {
+    throw Error("antipodal check: min_points must be at least 1, got " + std::to_string(min_points));
+  }
+  if (!(max_angle_deg > 0.0 && max_angle_deg <= 90.0)) {
+    throw Error("antipodal check: max_angle_deg must be in (0, 90], got " +
+                std::to_string(max_angle_deg));
+  }
+}
+
+AntipodalCount count_antipodal_normals(const Hand& hand, const std::vector<Eigen::Vector3f>& normals,
+                                       double max_angle_deg) {
+  const float cos_theta = static_cast<float>(std::cos(max_angle_deg * M_PI / 180.0));
+  const Eigen::Vector3f closing = hand.closing().cast<float>();
+  AntipodalCount count;
+  for (const std::int32_t i : hand.closing_points) {
+    if (i < 0 || static_cast<std::size_t>(i) >= normals.size()) {
+      throw Error("antipodal check: closing point " + std::to_string(i) +
+                  " is outside the cloud of " + std::to_string(normals.size()) + " points");
+    }
+    const float c = normals[static_cast<std::size_t>(i)].dot(closing);
+    if (c >= cos_theta) ++count.facing_plus;
+    if (c <= -cos_theta) ++count.facing_minus;
+  }
+  return count;
+}
+
+HandLabel antipodal_label(const AntipodalCount& count, int min_points) {
+  const bool plus = count.facing_plus >= min_points;
+  const bool minus = count.facing_minus >= min_points;
+  if (plus && minus) return HandLabel::kPositive;
+  if (plus || minus) return HandLabel::kIndeterminate;
+  return HandLabel::kNegative;
+}
+
+double antipodal_score(const AntipodalCount& count, int min_points) {
+  return static_cast<double>(std::min(count.facing_plus, count.facing_minus)) /
+         static_cast<double>(std::max(min_points, 1));
+}
+
+std::vector<AntipodalCount> count_antipodal_normals(const HandSet& set,
+                                                    const AntipodalLabellingOptions& options) {
+  options.antipodal.validate();
+  options.normals.validate();
+  if (set.hands.empty()) return {};
+  if (set.cloud == nullptr) throw Error("antipodal check: the hand set has no cloud");
+  const Cloud& cloud = *set.cloud;
+  // The union of all closing points, in index order: each normal is estimated once.
+  std::vector<std::uint8_t> needed(cloud.size(), 0);
+  for (const Hand& hand : set.hands) {
+    for (const std::int32_t i : hand.closing_points) {
+      if (i < 0 || static_cast<std::size_t>(i) >= cloud.size()) {
+        throw Error("antipodal check: closing point " + std::to_string(i) +
+                    " is outside the cloud of " + std::to_string(cloud.size()) + " points");
+      }
+      needed[static_cast<std::size_t>(i)] = 1;
+    }
+  }
+  std::vector<std::int32_t> which;
+  for (std::size_t i = 0; i < needed.size(); ++i) {
+    if (needed[i]) which.push_back(static_cast<std::int32_t>(i));
+  }
+  const std::vector<Eigen::Vector3f> normals = estimate_normals(cloud, options.normals, &which);
+  std::vector<AntipodalCount> counts(set.hands.size());
+  const int threads = options.normals.threads;
+  tbb::task_arena arena(threads > 0 ? threads : tbb::task_arena::automatic);
+  arena.execute([&] {
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, set.hands.size(), 64),
+                      [&](const tbb::blocked_range<std::size_t>& range) {
+                        for (std::size_t h = range.begin(); h != range.end(); ++h) {
+                          counts[h] = count_antipodal_normals(set.hands[h], normals,
+                                                              options.antipodal.max_angle_deg);
+                        }
+                      });
+  });
+  return counts;
+}
+
+}  // namespace antipode

@@ -1,0 +1,30 @@
+// The classifier `passthrough_classifier`: the paper's "NC" configuration, in which every
+// hand hypothesis the sampler produced is taken as a grasp. Labels every hand positive and
+// keeps its score (the sampler's) and its rejection reason. No parameters.
+#include "antipode/core/parameters.hpp"
+#include "antipode/interfaces/classifier.hpp"
+#include "antipode/plugin/abi.hpp"
+
+namespace {
+using namespace antipode;
+
+class PassthroughClassifier final : public Classifier {
+ public:
+  explicit PassthroughClassifier(const Parameters& params) { params.reject_unknown(); }
+
+  void classify(HandSet& set) const override {
+    for (Hand& hand : set.hands) hand.label = HandLabel::kPositive;
+  }
+};
+
+Component* create_passthrough(const Parameters& params) { return new PassthroughClassifier(params); }
+
+const PluginFactory kFactories[] = {
+    {"classifier", "passthrough_classifier",
+     "labels every hypothesis a grasp, score unchanged (the paper's NC)", &create_passthrough,
+     nullptr},
+};
+
+}  // namespace
+
+ANTIPODE_PLUGIN("passthrough_classifier", "1.0.0", kFactories)
