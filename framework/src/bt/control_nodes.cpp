@@ -16,28 +16,46 @@ NodeManifest control(std::string type, std::string summary, std::vector<PortInfo
 
 }  // namespace
 
-NodeManifest Sequence::manifest() {
-  return control("Sequence",
-                 "Ticks its children in order while they succeed; resumes a RUNNING child.");
-}
-
-Status Sequence::tick() {
+Status OrderedControl::tick() {
   while (current_ < child_count()) {
     const Status status = child(current_).execute_tick();
     if (status == Status::kRunning) return Status::kRunning;
-    if (status == Status::kFailure) {
+    if (status != keep_going_) {
       halt();
-      return Status::kFailure;
+      return status;
     }
     ++current_;
   }
   halt();
-  return Status::kSuccess;
+  return keep_going_;
 }
 
-void Sequence::halt() {
+void OrderedControl::halt() {
   current_ = 0;
   ControlNode::halt();
+}
+
+Status ReactiveControl::tick() {
+  for (std::size_t i = 0; i < child_count(); ++i) {
+    const Status status = child(i).execute_tick();
+    if (status == Status::kRunning) {
+      for (std::size_t other = 0; other < child_count(); ++other) {
+        if (other != i) halt_child(other);
+      }
+      return Status::kRunning;
+    }
+    if (status != keep_going_) {
+      halt_children();
+      return status;
+    }
+  }
+  halt_children();
+  return keep_going_;
+}
+
+NodeManifest Sequence::manifest() {
+  return control("Sequence",
+                 "Ticks its children in order while they succeed; resumes a RUNNING child.");
 }
 
 NodeManifest ReactiveSequence::manifest() {
@@ -45,69 +63,14 @@ NodeManifest ReactiveSequence::manifest() {
                  "Like Sequence, but re-ticks its children from the first on every tick.");
 }
 
-Status ReactiveSequence::tick() {
-  for (std::size_t i = 0; i < child_count(); ++i) {
-    const Status status = child(i).execute_tick();
-    if (status == Status::kRunning) {
-      for (std::size_t other = 0; other < child_count(); ++other) {
-        if (other != i) halt_child(other);
-      }
-      return Status::kRunning;
-    }
-    if (status == Status::kFailure) {
-      halt_children();
-      return Status::kFailure;
-    }
-  }
-  halt_children();
-  return Status::kSuccess;
-}
-
 NodeManifest Fallback::manifest() {
   return control("Fallback",
                  "Ticks its children in order until one succeeds; resumes a RUNNING child.");
 }
 
-Status Fallback::tick() {
-  while (current_ < child_count()) {
-    const Status status = child(current_).execute_tick();
-    if (status == Status::kRunning) return Status::kRunning;
-    if (status == Status::kSuccess) {
-      halt();
-      return Status::kSuccess;
-    }
-    ++current_;
-  }
-  halt();
-  return Status::kFailure;
-}
-
-void Fallback::halt() {
-  current_ = 0;
-  ControlNode::halt();
-}
-
 NodeManifest ReactiveFallback::manifest() {
   return control("ReactiveFallback",
                  "Like Fallback, but re-ticks its children from the first on every tick.");
-}
-
-Status ReactiveFallback::tick() {
-  for (std::size_t i = 0; i < child_count(); ++i) {
-    const Status status = child(i).execute_tick();
-    if (status == Status::kRunning) {
-      for (std::size_t other = 0; other < child_count(); ++other) {
-        if (other != i) halt_child(other);
-      }
-      return Status::kRunning;
-    }
-    if (status == Status::kSuccess) {
-      halt_children();
-      return Status::kSuccess;
-    }
-  }
-  halt_children();
-  return Status::kFailure;
 }
 
 NodeManifest Parallel::manifest() {

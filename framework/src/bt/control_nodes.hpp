@@ -9,52 +9,62 @@
 
 namespace antipode::bt::builtin {
 
-// Ticks children in order; remembers a RUNNING child and resumes there on the next tick.
-class Sequence : public ControlNode {
+// Sequence and Fallback are the same node with the roles of SUCCESS and FAILURE swapped:
+// both tick their children in order while each returns `keep_going`, and stop at the
+// first child that returns the other completed status.
+
+// Ticks children in order while they return `keep_going`; remembers a RUNNING child and
+// resumes there on the next tick.
+class OrderedControl : public ControlNode {
  public:
-  using ControlNode::ControlNode;
-  static NodeManifest manifest();
+  OrderedControl(const NodeConfig& config, Status keep_going)
+      : ControlNode(config), keep_going_(keep_going) {}
 
  protected:
   Status tick() override;
   void halt() override;
 
  private:
+  Status keep_going_;
   std::size_t current_ = 0;
 };
 
-// Ticks children from the first on every tick.
-class ReactiveSequence : public ControlNode {
+// Ticks children from the first on every tick while they return `keep_going`; a RUNNING
+// child halts the others.
+class ReactiveControl : public ControlNode {
  public:
-  using ControlNode::ControlNode;
-  static NodeManifest manifest();
+  ReactiveControl(const NodeConfig& config, Status keep_going)
+      : ControlNode(config), keep_going_(keep_going) {}
 
  protected:
   Status tick() override;
-};
-
-// Tries children in order until one succeeds; remembers a RUNNING child.
-class Fallback : public ControlNode {
- public:
-  using ControlNode::ControlNode;
-  static NodeManifest manifest();
-
- protected:
-  Status tick() override;
-  void halt() override;
 
  private:
-  std::size_t current_ = 0;
+  Status keep_going_;
 };
 
-// Tries children from the first on every tick.
-class ReactiveFallback : public ControlNode {
+class Sequence : public OrderedControl {
  public:
-  using ControlNode::ControlNode;
+  explicit Sequence(const NodeConfig& config) : OrderedControl(config, Status::kSuccess) {}
   static NodeManifest manifest();
+};
 
- protected:
-  Status tick() override;
+class ReactiveSequence : public ReactiveControl {
+ public:
+  explicit ReactiveSequence(const NodeConfig& config) : ReactiveControl(config, Status::kSuccess) {}
+  static NodeManifest manifest();
+};
+
+class Fallback : public OrderedControl {
+ public:
+  explicit Fallback(const NodeConfig& config) : OrderedControl(config, Status::kFailure) {}
+  static NodeManifest manifest();
+};
+
+class ReactiveFallback : public ReactiveControl {
+ public:
+  explicit ReactiveFallback(const NodeConfig& config) : ReactiveControl(config, Status::kFailure) {}
+  static NodeManifest manifest();
 };
 
 // Ticks all children on every tick until a success or failure threshold is reached.
