@@ -1,7 +1,9 @@
-# Grasp labelling without plugins: surface normals and the near-antipodal check (parallel
-# with TBB).
+# Grasp labelling without plugins: surface normals, the near-antipodal check and the grasp
+# hypothesis image with its HOG descriptor (parallel with TBB; OpenCV kept private).
 find_package(TBB REQUIRED)
+find_package(OpenCV REQUIRED COMPONENTS core objdetect)
 list(APPEND ANTIPODE_SOURCES
   ${CMAKE_CURRENT_LIST_DIR}/antipodal.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/hand_image.cpp
   ${CMAKE_CURRENT_LIST_DIR}/normals.cpp)
-list(APPEND ANTIPODE_PRIVATE_LIBS TBB::tbb)
+list(APPEND ANTIPODE_PRIVATE_LIBS TBB::tbb opencv_core opencv_objdetect)

@@ -1,0 +1,70 @@
+#pragma once
+/// @file
+/// The grasp hypothesis image of a hand and its HOG descriptor (paper section 4.2): the
+/// cloud points in the hand's closing region projected onto its closing plane (approach x
+/// closing), rasterised as a binary occupancy image, encoded by a histogram of oriented
+/// gradients (OpenCV's HOGDescriptor, used privately: no OpenCV type appears here).
+
+#include <cstdint>
+#include <vector>
+
+#include "antipode/core/hand.hpp"
+#include "antipode/core/hand_geometry.hpp"
+#include "antipode/interfaces/hand_set.hpp"
+
+namespace antipode {
+
+/// The image layout and the HOG parameters. The image covers the closing region exactly:
+/// `cells_along` x `cell_px` rows span the finger depth along the approach (row 0 at the
+/// palm face, the last row at the fingertips), `cells_across` x `cell_px` columns span the
+/// aperture along the closing direction (column 0 at the finger at -y). With the defaults
+/// and the Baxter hand (6 cm deep, 7.2 cm open), a pixel is 1 mm square and the image
+/// 60 x 72 pixels is covered by 10 x 12 HOG cells, as in the paper.
+struct HandImageOptions {
+  int cells_along = 10;   ///< HOG cells along the approach (image rows / cell_px)
+  int cells_across = 12;  ///< HOG cells along the closing direction (columns / cell_px)
+  int cell_px = 6;        ///< cell side in pixels
+  int block_cells = 2;    ///< HOG block side in cells (blocks step by one cell)
+  int bins = 9;           ///< orientation bins (unsigned gradients, 0-180 degrees)
+
+  int rows() const { return cells_along * cell_px; }
+  int cols() const { return cells_across * cell_px; }
+  /// Length of a descriptor: blocks x cells per block x bins.
+  std::size_t descriptor_size() const;
+  /// Throws antipode::Error naming the offending field (all >= 1, block_cells no larger
+  /// than either cell count).
+  void validate() const;
+};
+
+/// A binary occupancy image, row-major: 255 where a closing-region point projects, else 0.
+struct HandImage {
+  int rows = 0;
+  int cols = 0;
+  std::vector<std::uint8_t> pixels;
+
+  std::uint8_t at(int row, int col) const {
+    return pixels[static_cast<std::size_t>(row) * static_cast<std::size_t>(cols) +
+                  static_cast<std::size_t>(col)];
+  }
+};
+
+/// The grasp hypothesis image of `hand`: each of its closing points (indices into `cloud`),
+/// in hand coordinates (x along the approach in [0, depth_m], y along closing in
+/// (-max_aperture_m / 2, max_aperture_m / 2)), sets the pixel it falls in; points outside
+/// the region (a hand from another geometry) are clamped to the border. Throws
+/// antipode::Error for a closing point outside the cloud or invalid options.
+HandImage hand_image(const Cloud& cloud, const Hand& hand, const HandGeometry& geometry,
+                     const HandImageOptions& options = {});
+
+/// The HOG descriptor of `image` (which must be options.rows() x options.cols()): one
+/// window over the whole image, blocks of block_cells x block_cells cells stepping one cell,
+/// L2-Hys block normalisation. An empty image gives all zeros.
+std::vector<float> hog_descriptor(const HandImage& image, const HandImageOptions& options = {});
+
+/// hand_image() then hog_descriptor() for every hand of `set`, in parallel (`threads`
+/// workers, 0: all); one descriptor per hand, in order, identical for any thread count.
+std::vector<std::vector<float>> hand_descriptors(const HandSet& set, const HandGeometry& geometry,
+                                                 const HandImageOptions& options = {},
+                                                 int threads = 0);
+
+}  // namespace antipode
