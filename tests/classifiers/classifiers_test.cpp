@@ -186,5 +186,23 @@ TEST_F(ClassifiersTest, AntipodalOnTableMugIsFast) {
   }
 }
 
+// krylon.pcd is a can seen from all around (no viewpoint): normals point away from its
+// centroid, and hands across the can see both of its sides.
+TEST_F(ClassifiersTest, AntipodalFindsGraspsOnACanSeenFromAllAround) {
+  const std::string path = std::string(ANTIPODE_TEST_DATA_DIR) + "/clouds/krylon.pcd";
+  if (!std::filesystem::exists(path)) GTEST_SKIP() << path << " not found; test skipped";
+  HandSamplingOptions options;
+  options.search.samples = 1000;
+  options.search.threads = 2;
+  HandSet set = sample_hands(load_cloud(path), options, RandomStream(1));
+  ASSERT_TRUE(set.cloud->view_origins_m.empty());
+  create("antipodal_classifier", "threads: 2")->classify(set);
+  int count[4] = {0, 0, 0, 0};
+  for (const Hand& hand : set.hands) ++count[static_cast<int>(hand.label)];
+  std::printf("krylon: %zu hands: %d positive, %d indeterminate, %d negative\n", set.hands.size(),
+              count[1], count[3], count[2]);
+  EXPECT_GT(count[1], 0);
+}
+
 }  // namespace
 }  // namespace antipode
