@@ -64,6 +64,34 @@ trees:
   EXPECT_EQ(board.get<std::string>("outcome"), "success");
 }
 
+TEST_F(PipelineNodesTest, LoopOverScenesCountsSeedsAndOutcomes) {
+  bt::Tree tree = load(std::string(kComponents) + R"(
+trees:
+  pick:
+    Repeat:
+      num_cycles: 3
+      child:
+        Sequence:
+          - ResetScene: { cell: cell, first_seed: 5, seed: "{seed}" }
+          - CaptureCloud: { cell: cell, cloud: "{cloud}" }
+          - SampleHands: { sampler: sampler, cloud: "{cloud}", hands: "{hands}" }
+          - SelectGrasps: { selector: selector, hands: "{hands}", best: "{best}" }
+          - ExecuteGrasp: { cell: cell, grasp: "{best}", outcome: "{outcome}" }
+          - RecordOutcome: { outcome: "{outcome}", label: "scene {seed}", successes: "{ok}", attempts: "{n}" }
+)");
+  std::vector<std::string> lines;
+  tree.set_log_sink([&](const bt::Node& node, const std::string& line) {
+    if (node.type() == "RecordOutcome") lines.push_back(line);
+  });
+  ASSERT_EQ(tree.tick_while_running(), bt::Status::kSuccess);
+  EXPECT_EQ(tree.blackboard().get<std::uint64_t>("seed"), 7u);
+  EXPECT_EQ(tree.blackboard().get<int>("n"), 3);
+  EXPECT_EQ(tree.blackboard().get<int>("ok"), 3);
+  ASSERT_EQ(lines.size(), 3u);
+  EXPECT_EQ(lines[0], "scene 5: success - 1 of 1 succeeded (100%)");
+  EXPECT_EQ(lines[2], "scene 7: success - 3 of 3 succeeded (100%)");
+}
+
 TEST_F(PipelineNodesTest, EmptyCaptureFailsWithReason) {
   bt::Tree tree = load(R"(
 components:
