@@ -2,6 +2,8 @@
 
 #include <cmath>
 #include <filesystem>
+#include <map>
+#include <utility>
 
 #include "antipode/core/error.hpp"
 #include "mesh_objects.hpp"
@@ -56,6 +58,121 @@ TEST(ProceduralObjects, RejectsUnknownShapesAndBadSizes) {
   EXPECT_THROW(make_object("torus", {0.05}, 500, 0.8), Error);
   EXPECT_THROW(make_object("box", {0.05, 0.05}, 500, 0.8), Error);
   EXPECT_THROW(make_object("cylinder", {-0.05, 0.1}, 500, 0.8), Error);
+}
+
+// Every edge is used once in each direction: closed, and consistently oriented.
+bool closed_and_consistent(const TriangleMesh& mesh) {
+  std::map<std::pair<int, int>, int> edges;
+  for (const auto& t : mesh.triangles)
+    for (int k = 0; k < 3; ++k) ++edges[{t[k], t[(k + 1) % 3]}];
+  for (const auto& [edge, count] : edges) {
+    if (count != 1) return false;
+    const auto back = edges.find({edge.second, edge.first});
+    if (back == edges.end() || back->second != 1) return false;
+  }
+  return !edges.empty();
+}
+
+Eigen::Vector3d extents(const ObjectModel& m) {
+  return m.visual->bounds().sizes().cast<double>();
+}
+
+void expect_sound(const ObjectModel& m, double density) {
+  EXPECT_TRUE(closed_and_consistent(*m.visual)) << m.name;
+  EXPECT_GT(m.visual->volume(), 0.0) << m.name;
+  EXPECT_NEAR(m.mass_kg, m.visual->volume() * density, 1e-9) << m.name;
+  EXPECT_LT(m.visual->volume_centroid().norm(), 1e-5) << m.name;  // frame at the centre of mass
+  EXPECT_GT(m.collision.hulls.size(), 1u) << m.name;              // a compound of convex parts
+  for (const auto& hull : m.collision.hulls) {
+    EXPECT_TRUE(closed_and_consistent(hull)) << m.name;
+    EXPECT_TRUE(m.visual->bounds().isApprox(m.visual->bounds().merged(hull.bounds()), 1e-4f))
+        << m.name << ": a collision part sticks out of the visual mesh";
+  }
+}
+
+TEST(ProceduralShapes, BottleHasBodyShoulderAndNeck) {
+  const ObjectModel m = make_object("bottle", {0.06, 0.2, 0.025, 0.04}, 800, 0.8);
+  expect_sound(m, 800);
+  EXPECT_TRUE(extents(m).isApprox(Eigen::Vector3d(0.06, 0.06, 0.2), 1e-3));
+  // Body cylinder + cone frustum + neck cylinder (the 32-gon's area is 0.6% under the circle).
+  const double R = 0.03, r = 0.0125, shoulder = R - r, body = 0.2 - 0.04 - shoulder;
+  const double exact = kPi * (R * R * body + r * r * 0.04 + shoulder / 3 * (R * R + R * r + r * r));
+  EXPECT_NEAR(m.visual->volume(), exact, 0.01 * exact);
+  EXPECT_EQ(m.collision.hulls.size(), 2u);
+  EXPECT_DOUBLE_EQ(m.graspable_width_m, 0.06);
+  EXPECT_THROW(make_object("bottle", {0.06, 0.2, 0.07, 0.04}, 800, 0.8), Error);
+  EXPECT_THROW(make_object("bottle", {0.06, 0.05, 0.02, 0.04}, 800, 0.8), Error);
+}
+
+TEST(ProceduralShapes, MugHasBodyAndHandle) {
+  const ObjectModel m = make_object("mug", {0.07, 0.09}, 600, 0.8);
+  expect_sound(m, 600);
+  const Eigen::Vector3d e = extents(m);
+  EXPECT_NEAR(e.y(), 0.07, 1e-3);
+  EXPECT_NEAR(e.z(), 0.09, 1e-3);
+  EXPECT_GT(e.x(), 0.07 + 0.02);  // the handle sticks out on +x
+  EXPECT_LT(e.x(), 0.07 + 0.05);
+  const double body = kPi * 0.035 * 0.035 * 0.09;
+  EXPECT_GT(m.visual->volume(), body * 0.99);
+  EXPECT_LT(m.visual->volume(), body * 1.15);
+  EXPECT_THROW(make_object("mug", {0.07, 0.02}, 600, 0.8), Error);
+}
+
+TEST(ProceduralShapes, BananaIsACurvedCapsule) {
+  const double d = 0.035, length = 0.18, bend = 0.12;
+  const ObjectModel m = make_object("banana", {d, length, bend}, 900, 0.8);
+  expect_sound(m, 900);
+  const Eigen::Vector3d e = extents(m);
+  EXPECT_NEAR(e.z(), d, 1e-3);  // lies flat, curved in xy
+  const double angle = (length - d) / bend;
+  EXPECT_NEAR(e.x(), 2 * (bend * std::sin(angle / 2) + d / 2), 1e-3);  // across the ends
+  EXPECT_GT(e.y(), d + 0.01);                                          // and it bends
+  // Pappus: a tube of cross-section pi r^2 along the arc, plus a ball from the two ends.
+  const double exact = kPi * d * d / 4 * (length - d) + kPi * d * d * d / 6;
+  EXPECT_NEAR(m.visual->volume(), exact, 0.04 * exact);
+  EXPECT_THROW(make_object("banana", {0.05, 0.04, 0.1}, 900, 0.8), Error);
+  EXPECT_THROW(make_object("banana", {0.05, 0.6, 0.1}, 900, 0.8), Error);
+}
+
+TEST(ProceduralShapes, LAndTAreTwoBars) {
+  const ObjectModel l = make_object("l_shape", {0.04, 0.12, 0.09, 0.05}, 500, 0.8);
+  expect_sound(l, 500);
+  EXPECT_TRUE(extents(l).isApprox(Eigen::Vector3d(0.09, 0.12, 0.05), 1e-4));
+  EXPECT_NEAR(l.visual->volume(), (0.04 * 0.12 + 0.05 * 0.04) * 0.05, 1e-9);
+  const ObjectModel t = make_object("t_shape", {0.03, 0.12, 0.08, 0.04}, 500, 0.8);
+  expect_sound(t, 500);
+  EXPECT_TRUE(extents(t).isApprox(Eigen::Vector3d(0.12, 0.11, 0.04), 1e-4));
+  EXPECT_NEAR(t.visual->volume(), (0.03 * 0.08 + 0.12 * 0.03) * 0.04, 1e-9);
+  EXPECT_THROW(make_object("l_shape", {0.04, 0.03, 0.09, 0.05}, 500, 0.8), Error);
+}
+
+TEST(ProceduralShapes, RandomOnesAreSoundAndDeterministic) {
+  for (const char* shape : {"bottle", "mug", "banana", "l_shape", "t_shape"}) {
+    int graspable = 0;
+    for (int i = 0; i < 40; ++i) {
+      RandomStream a(100 + i), b(100 + i);
+      const ObjectModel x = make_random_object(shape, ProceduralRanges{}, a);
+      const ObjectModel y = make_random_object(shape, ProceduralRanges{}, b);
+      EXPECT_EQ(x.mass_kg, y.mass_kg);
+      EXPECT_EQ(x.visual->vertices, y.visual->vertices);
+      EXPECT_TRUE(closed_and_consistent(*x.visual)) << shape;
+      EXPECT_GT(x.visual->volume(), 0.0) << shape;
+      EXPECT_LT(extents(x).maxCoeff(), 0.3) << shape;
+      if (x.graspable_width_m >= 0.03 && x.graspable_width_m <= 0.07) ++graspable;
+    }
+    EXPECT_GT(graspable, 20) << shape;
+    EXPECT_LT(graspable, 40) << shape;
+  }
+}
+
+TEST(ProceduralShapes, UnknownNamesSuggestTheNearestShape) {
+  try {
+    make_object("bottel", {0.05}, 500, 0.8);
+    FAIL() << "no error";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("did you mean 'bottle'"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("t_shape"), std::string::npos) << e.what();
+  }
 }
 
 TEST(MeshObjects, LoadsYcbAndBlobsWhenTheDataIsThere) {

@@ -2,6 +2,7 @@
 
 #include <btBulletDynamicsCommon.h>
 
+#include <algorithm>
 #include <filesystem>
 
 #include "antipode/core/error.hpp"
@@ -117,6 +118,65 @@ TEST(Scene, MeshPilesFromTheSharedDataSettleInTheBox) {
       EXPECT_LT((p.head<2>() - spec.box.center_m).cwiseAbs().maxCoeff(), 0.16) << file;
     }
   }
+}
+
+TEST(Scene, EachNewShapeSettlesOnTheTable) {
+  for (const char* shape : {"bottle", "mug", "banana", "l_shape", "t_shape"}) {
+    const SceneSpec spec = parse(std::string("placement: isolated\nrandom_objects: { count: 1, "
+                                             "shapes: [") + shape + "] }\n");
+    for (std::uint64_t seed : {1u, 2u, 3u}) {
+      PhysicsWorld world(PhysicsOptions{});
+      MeshCache meshes;
+      const std::vector<int> ids = build_scene(spec, seed, meshes, world);
+      ASSERT_EQ(ids.size(), 1u) << shape << " seed " << seed;
+      world.step();
+      EXPECT_LT(world.deepest_penetration(), 0.003) << shape << " seed " << seed;
+      EXPECT_LT(world.body(ids[0]).getLinearVelocity().length(), 0.05) << shape;
+      // Its lowest point rests on the table top (within the 1 mm margins).
+      const ObjectModel model = scene_objects(spec, seed, meshes).at(0);
+      double lowest = 1e9;
+      for (const auto& v : model.visual->vertices)
+        lowest = std::min(lowest, (world.pose(ids[0]) * v.cast<double>()).z());
+      EXPECT_NEAR(lowest, spec.table.top_z_m, 0.003) << shape << " seed " << seed;
+      // Same seed, same pose.
+      PhysicsWorld again(PhysicsOptions{});
+      const std::vector<int> ids2 = build_scene(spec, seed, meshes, again);
+      again.step();
+      EXPECT_EQ(world.pose(ids[0]).matrix(), again.pose(ids2.at(0)).matrix()) << shape;
+    }
+  }
+}
+
+TEST(Scene, PileOfNewShapesSettlesInsideTheBox) {
+  const SceneSpec spec = parse(R"(
+box: { inner_size_m: [0.3, 0.3], wall_height_m: 0.06 }
+placement: pile
+random_objects: { count: 8, shapes: [bottle, mug, banana, l_shape, t_shape] }
+)");
+  PhysicsWorld world(PhysicsOptions{});
+  MeshCache meshes;
+  const std::vector<int> ids = build_scene(spec, 4, meshes, world);
+  EXPECT_GE(ids.size(), 7u);
+  world.step();
+  EXPECT_LT(world.deepest_penetration(), 0.003);
+  // Long objects landing on the pile may tip over the 6 cm walls; nearly all stay inside.
+  std::size_t inside = 0;
+  for (int id : ids) {
+    const Eigen::Vector3d p = world.pose(id).translation();
+    if ((p.head<2>() - spec.box.center_m).cwiseAbs().maxCoeff() < 0.16) ++inside;
+    EXPECT_GT(p.z(), spec.table.top_z_m);
+  }
+  EXPECT_GE(inside + 1, ids.size());
+}
+
+TEST(Scene, UnknownShapesAreReportedWithASuggestion) {
+  try {
+    parse("placement: pile\nrandom_objects: { count: 2, shapes: [box, banan] }\n");
+    FAIL() << "no error";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("did you mean 'banana'"), std::string::npos) << e.what();
+  }
+  EXPECT_THROW(parse("objects:\n  - { shape: l-shape, size_m: [0.1] }\n"), Error);
 }
 
 TEST(Scene, DefaultCamerasLookAtTheTableFromTwoSides) {

@@ -29,8 +29,9 @@ struct ObjectModel {
   CollisionSpec collision;
   double mass_kg = 0.1;
   double friction = 0.8;
-  /// The smallest extent across the object's z axis: what a gripper closing sideways on an
-  /// upright object must span.
+  /// What a gripper must span to hold the object by its narrowest graspable part: the
+  /// smallest extent across z for primitives and meshes, the body diameter of bottles and
+  /// mugs, the banana's diameter, the bar width of L and T.
   double graspable_width_m = 0.0;
 };
 

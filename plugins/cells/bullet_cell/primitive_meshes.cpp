@@ -8,22 +8,32 @@ namespace {
 constexpr float kPi = 3.14159265358979f;
 
 // A surface of revolution about z: profile points (radius, z) from the bottom pole to the top
-// pole, each swept around z in `segments` steps. Poles (radius 0) become single vertices.
+// pole, each swept around z in `segments` steps.
 TriangleMesh revolve(const std::vector<Eigen::Vector2f>& profile, int segments,
                      const Eigen::Vector2f& xy_scale = Eigen::Vector2f::Ones()) {
+  std::vector<SweepRing> rings;
+  for (const auto& p : profile)
+    rings.push_back({Eigen::Vector3f(0.f, 0.f, p.y()), Eigen::Vector3f(xy_scale.x(), 0.f, 0.f),
+                     Eigen::Vector3f(0.f, xy_scale.y(), 0.f), p.x()});
+  return sweep_mesh(rings, segments);
+}
+
+}  // namespace
+
+TriangleMesh sweep_mesh(const std::vector<SweepRing>& rings, int segments) {
   TriangleMesh mesh;
   std::vector<int> ring_start;
-  for (const auto& p : profile) {
+  for (const auto& ring : rings) {
     ring_start.push_back(static_cast<int>(mesh.vertices.size()));
-    const int count = p.x() <= 0.f ? 1 : segments;
+    const int count = ring.radius_m <= 0.f ? 1 : segments;
     for (int s = 0; s < count; ++s) {
       const float a = 2.f * kPi * float(s) / float(segments);
-      mesh.vertices.emplace_back(xy_scale.x() * p.x() * std::cos(a),
-                                 xy_scale.y() * p.x() * std::sin(a), p.y());
+      mesh.vertices.push_back(ring.centre_m +
+                              ring.radius_m * (std::cos(a) * ring.u + std::sin(a) * ring.v));
     }
   }
-  for (std::size_t r = 0; r + 1 < profile.size(); ++r) {
-    const bool low_pole = profile[r].x() <= 0.f, high_pole = profile[r + 1].x() <= 0.f;
+  for (std::size_t r = 0; r + 1 < rings.size(); ++r) {
+    const bool low_pole = rings[r].radius_m <= 0.f, high_pole = rings[r + 1].radius_m <= 0.f;
     for (int s = 0; s < segments; ++s) {
       const int n = (s + 1) % segments;
       const int a0 = ring_start[r] + (low_pole ? 0 : s), a1 = ring_start[r] + (low_pole ? 0 : n);
@@ -36,7 +46,20 @@ TriangleMesh revolve(const std::vector<Eigen::Vector2f>& profile, int segments,
   return mesh;
 }
 
-}  // namespace
+TriangleMesh sweep_piece(const std::vector<SweepRing>& rings, std::size_t first, std::size_t last,
+                         int segments) {
+  std::vector<SweepRing> piece;
+  piece.push_back(rings[first]);
+  piece.back().radius_m = 0.f;
+  for (std::size_t i = first; i <= last; ++i) piece.push_back(rings[i]);
+  piece.push_back(rings[last]);
+  piece.back().radius_m = 0.f;
+  return sweep_mesh(piece, segments);
+}
+
+TriangleMesh revolution_mesh(const std::vector<Eigen::Vector2f>& profile, int segments) {
+  return revolve(profile, segments);
+}
 
 TriangleMesh box_mesh(const Eigen::Vector3f& h) {
   TriangleMesh mesh;

@@ -26,13 +26,20 @@ struct ProceduralRanges {
 /// Shapes make_random_object() knows.
 const std::vector<std::string>& procedural_shapes();
 
+/// "unknown object shape 'NAME' (did you mean ...?) (known: ...)".
+std::string unknown_shape_message(const std::string& shape);
+
 /// An object of `shape` with sizes, density and friction drawn from `random`.
 /// Throws antipode::Error for an unknown shape.
 ObjectModel make_random_object(const std::string& shape, const ProceduralRanges& ranges,
                                RandomStream& random);
 
 /// An object of `shape` with explicit dimensions: box {x, y, z}; cylinder {diameter, height};
-/// sphere {diameter}; capsule {diameter, total length}; ellipsoid {x, y, z} (full axes).
+/// sphere {diameter}; capsule {diameter, total length}; ellipsoid {x, y, z} (full axes);
+/// bottle {body diameter, height, neck diameter, neck length}; mug {body diameter, height};
+/// banana {diameter, length along its curve, bend radius}; l_shape {bar width, long leg,
+/// short leg, height}; t_shape {bar width, cross bar length, stem length, height}.
+/// Upright objects stand on z; the banana, L and T lie flat (their curve or bars in xy).
 ObjectModel make_object(const std::string& shape, const std::vector<double>& size_m,
                         double density_kg_m3, double friction);
 

@@ -1,9 +1,11 @@
 #include "scene_spec.hpp"
 
+#include <algorithm>
 #include <filesystem>
 
 #include "antipode/core/error.hpp"
 #include "antipode/core/parameters.hpp"
+#include "procedural_objects.hpp"
 
 namespace fs = std::filesystem;
 
@@ -64,6 +66,12 @@ Eigen::Isometry3d pose_from(const Eigen::Vector3d& position, const Eigen::Vector
   return pose;
 }
 
+void require_known_shape(const Parameters& p, const std::string& key, const std::string& shape) {
+  const auto& known = procedural_shapes();
+  if (std::find(known.begin(), known.end(), shape) == known.end())
+    p.fail(key, unknown_shape_message(shape));
+}
+
 ObjectEntry parse_object(const Parameters& p, const std::string& scene_file) {
   ObjectEntry e;
   e.shape = p.get<std::string>("shape", "");
@@ -72,6 +80,7 @@ ObjectEntry parse_object(const Parameters& p, const std::string& scene_file) {
   e.folder = p.get<std::string>("folder", "");
   if (e.shape.empty() == e.mesh.empty())
     p.fail("shape", "an object needs exactly one of 'shape' and 'mesh'");
+  if (!e.shape.empty()) require_known_shape(p, "shape", e.shape);
   if (!e.mesh.empty()) {
     if (e.folder.empty()) p.fail("folder", "a mesh object needs 'folder'");
     e.folder = resolve_path(e.folder, scene_file);
@@ -100,6 +109,7 @@ RandomObjects parse_random(const Parameters& p, const std::string& scene_file) {
   r.names = p.get<std::vector<std::string>>("names", {});
   if (r.shapes.empty() == r.folder.empty())
     p.fail("shapes", "random objects need exactly one of 'shapes' and 'folder'");
+  for (const auto& shape : r.shapes) require_known_shape(p, "shapes", shape);
   if (!r.folder.empty()) r.folder = resolve_path(r.folder, scene_file);
   const Eigen::Vector2d scale = vector_at(p, "scale", 2, Eigen::Vector2d(1.0, 1.0));
   if (!(scale[0] > 0.0 && scale[1] >= scale[0])) p.fail("scale", "'scale' needs 0 < lo <= hi");
