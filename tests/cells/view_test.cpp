@@ -1,9 +1,11 @@
 #include <gtest/gtest.h>
 
 #include <chrono>
+#include <cmath>
 
 #include "antipode/core/parameters.hpp"
 #include "bullet_cell.hpp"
+#include "sensor_random.hpp"
 
 namespace antipode::cells {
 namespace {
@@ -83,6 +85,81 @@ TEST(View, SameCloudForAnyThreadCount) {
   ASSERT_EQ(x.size(), y.size());
   EXPECT_EQ(x.points_m, y.points_m);
   EXPECT_EQ(x.view_masks, y.view_masks);
+}
+
+TEST(View, DepthErrorsOnAFlatTableFollowTheAxialModel) {
+  // A camera straight above the bare table: every return is at optical depth `depth`, its
+  // height error is minus its axial error, and lateral errors stay horizontal.
+  const SceneSpec spec = parse(R"(
+placement: pile
+cameras: { down: { position_m: [0.725, -0.135, 0.5], look_at_m: [0.725, -0.135, -0.295] } }
+)");
+  CellOptions ideal_options, noisy_options;
+  ideal_options.sensor.scale = 0.0;
+  BulletCell ideal(spec, ideal_options), noisy(spec, noisy_options);
+  const Cloud reference = ideal.capture({"down"}), cloud = noisy.capture({"down"});
+  // Incidence stays under 40 degrees here: no dropout, so no return is lost.
+  EXPECT_EQ(cloud.size(), reference.size());
+  const double top = spec.table.top_z_m, depth = 0.5 - top;
+  const Eigen::Vector3d camera(0.725, -0.135, 0.5);
+  const SensorModel model;
+  double sum = 0.0, sum2 = 0.0;
+  std::size_t n = 0, beyond_two = 0;
+  for (const auto& p : cloud.points_m) {
+    const double error = p.z() - top;
+    ASSERT_LT(std::abs(error), 0.02);
+    const Eigen::Vector3d ray = p.cast<double>() - camera;
+    const double theta = std::acos(-ray.z() / ray.norm());
+    const double standard = error / model.axial_sigma_m(depth, theta);
+    sum += standard;
+    sum2 += standard * standard;
+    beyond_two += std::abs(standard) > 2.0 ? 1 : 0;
+    ++n;
+  }
+  ASSERT_GT(n, 250000u);
+  EXPECT_NEAR(sum / double(n), 0.0, 0.01);
+  EXPECT_NEAR(sum2 / double(n), 1.0, 0.02);
+  EXPECT_NEAR(double(beyond_two) / double(n), 0.0455, 0.0025);  // P(|N(0,1)| > 2)
+}
+
+TEST(SensorRandom, NormalsHaveTheMomentsAndTailsOfAStandardNormal) {
+  SensorRandom random(5);
+  const int n = 2000000;
+  double s1 = 0, s2 = 0, s4 = 0;
+  int above_one = 0, above_three = 0;
+  for (int i = 0; i < n; ++i) {
+    const double x = random.normal();
+    s1 += x;
+    s2 += x * x;
+    s4 += x * x * x * x;
+    above_one += x > 1.0 ? 1 : 0;
+    above_three += std::abs(x) > 3.0 ? 1 : 0;
+  }
+  EXPECT_NEAR(s1 / n, 0.0, 0.003);
+  EXPECT_NEAR(s2 / n, 1.0, 0.004);
+  EXPECT_NEAR(s4 / n, 3.0, 0.03);
+  EXPECT_NEAR(double(above_one) / n, 0.158655, 0.0015);
+  EXPECT_NEAR(double(above_three) / n, 0.0026998, 0.0002);
+  double lo = 1.0, hi = 0.0;
+  for (int i = 0; i < 100000; ++i) {
+    const double u = random.uniform();
+    lo = std::min(lo, u);
+    hi = std::max(hi, u);
+  }
+  EXPECT_GE(lo, 0.0);
+  EXPECT_LT(hi, 1.0);
+}
+
+TEST(SensorRandom, SameSeedSameDrawsAndAccurateArcCosine) {
+  SensorRandom a(9), b(9), c(10);
+  for (int i = 0; i < 1000; ++i) EXPECT_EQ(a.normal(), b.normal());
+  EXPECT_NE(a.normal(), c.normal());
+  double worst = 0.0;
+  for (int i = 0; i <= 100000; ++i) {
+    const double x = i / 100000.0;
+    worst = std::max(worst, std::abs(fast_acos(x) - std::acos(x)));
+  }
+  EXPECT_LT(worst, 1e-7);
 }
 
 TEST(View, UnknownViewIsAnError) {

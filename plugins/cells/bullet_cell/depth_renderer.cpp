@@ -1,5 +1,6 @@
 #include "depth_renderer.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <map>
@@ -8,6 +9,7 @@
 #include <embree3/rtcore.h>
 
 #include "antipode/core/error.hpp"
+#include "sensor_random.hpp"
 
 namespace antipode::cells {
 namespace {
@@ -135,34 +137,36 @@ void cast_tile(RTCScene scene, const std::vector<Eigen::Matrix3f>& rotations,
   }
 }
 
-// Two independent standard normals from one Box-Muller draw.
-Eigen::Vector2d normal_pair(RandomStream& random) {
-  double u1 = random.uniform();
-  while (u1 <= 0.0) u1 = random.uniform();
-  const double radius = std::sqrt(-2.0 * std::log(u1)), angle = 2.0 * M_PI * random.uniform();
-  return {radius * std::cos(angle), radius * std::sin(angle)};
-}
-
-// Turns one image row of hits into points, drawing the sensor's errors from `random`.
+// Turns one image row of hits into points, drawing the sensor's errors from the row's own
+// stream (seeded by `row_seed`). Per return: the incidence angle from its cosine, a dropout
+// draw only where the dropout probability is not zero (beyond dropout_start_rad), then three
+// standard normals (axial, and lateral in x and y).
 void row_to_points(const std::vector<Hit>& image, int v, const CameraSpec& camera,
                    const SensorModel& sensor, const Eigen::Isometry3d& X_BaseCamera,
-                   RandomStream random, std::uint32_t mask, Cloud& cloud) {
+                   std::uint64_t row_seed, std::uint32_t mask, Cloud& cloud) {
+  SensorRandom random(row_seed);
+  cloud.points_m.reserve(std::size_t(camera.width_px));
+  cloud.view_masks.reserve(std::size_t(camera.width_px));
+  const Eigen::Matrix3d R = X_BaseCamera.linear();
+  const Eigen::Vector3d t = X_BaseCamera.translation();
+  const double ray_y = (v - camera.cy_px) / camera.fy_px, inv_fx = 1.0 / camera.fx_px;
   for (int u = 0; u < camera.width_px; ++u) {
     const Hit& hit = image[v * camera.width_px + u];
     if (hit.depth < camera.min_range_m || hit.depth > camera.max_range_m) continue;
-    const double ray_x = (u - camera.cx_px) / camera.fx_px,
-                 ray_y = (v - camera.cy_px) / camera.fy_px;
+    const double ray_x = (u - camera.cx_px) * inv_fx;
     double z = hit.depth, x = ray_x * z, y = ray_y * z;
     if (sensor.scale > 0.0) {
-      const double theta = std::acos(std::min(1.0, double(hit.cos_incidence)));
-      if (random.uniform() < sensor.dropout_probability(theta)) continue;
-      const double lateral_m = sensor.lateral_sigma_px(theta) * z / camera.fx_px;
+      const double theta = fast_acos(std::min(1.0, double(hit.cos_incidence)));
+      if (theta > sensor.dropout_start_rad &&
+          random.uniform() < sensor.dropout_probability(theta))
+        continue;
+      const double lateral_m = sensor.lateral_sigma_px(theta) * z * inv_fx;
       z += sensor.axial_sigma_m(z, theta) * random.normal();
-      const Eigen::Vector2d lateral = lateral_m * normal_pair(random);
-      x = ray_x * z + lateral.x();
-      y = ray_y * z + lateral.y();
+      const double dx = random.normal(), dy = random.normal();
+      x = ray_x * z + lateral_m * dx;
+      y = ray_y * z + lateral_m * dy;
     }
-    cloud.points_m.push_back((X_BaseCamera * Eigen::Vector3d(x, y, z)).cast<float>());
+    cloud.points_m.push_back((R * Eigen::Vector3d(x, y, z) + t).cast<float>());
     cloud.view_masks.push_back(mask);
   }
 }
@@ -212,7 +216,8 @@ void DepthRenderer::render(const CameraSpec& camera, const SensorModel& sensor,
   };
   auto noise = [&](int t) {
     for (int v = t; v < camera.height_px; v += threads)
-      row_to_points(image, v, camera, sensor, X_BaseCamera, random.derive(std::uint64_t(v)),
+      row_to_points(image, v, camera, sensor, X_BaseCamera,
+                    mix_seed(random.seed() ^ mix_seed(0x5e750000ULL + std::uint64_t(v))),
                     1u << view_index, rows[v]);
   };
   run_parallel(threads, work);
