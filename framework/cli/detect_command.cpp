@@ -46,9 +46,9 @@ int detect_command(const DetectOptions& options) {
   run.set = detect_entries(options);
   run.set.insert(run.set.end(), options.set.begin(), options.set.end());
   run.seed = options.seed;
-  run.quiet = !options.verbose;
   Session session = open_session();
   bt::Tree tree = load_tree_for(session, run);
+  const Tracing tracing = attach_tracers(tree, options.verbose, "");
   const bt::Status status = tree.tick_while_running();
   if (const auto* hands = tree.blackboard().find(options.hands_entry)) {
     if (const auto* set = std::any_cast<HandSetPtr>(hands); set != nullptr && *set) {

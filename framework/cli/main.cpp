@@ -81,11 +81,17 @@ int main(int argc, char** argv) {
   }
   try {
     return dispatch(app, commands);
+  } catch (const antipode::InternalError& error) {
+    std::cerr << "antipode: internal error: " << error.what() << "\n";
+    return kExitInternalError;
   } catch (const antipode::Error& error) {
     std::cerr << "antipode: error: " << error.what() << "\n";
     return kExitInvalidInput;
   } catch (const std::exception& error) {
     std::cerr << "antipode: internal error: " << error.what() << "\n";
+    return kExitInternalError;
+  } catch (...) {
+    std::cerr << "antipode: internal error: an exception of unknown type\n";
     return kExitInternalError;
   }
 }

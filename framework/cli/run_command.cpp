@@ -1,6 +1,4 @@
-#include <unistd.h>
 
-#include <cstdlib>
 #include <iostream>
 #include <memory>
 
@@ -13,10 +11,6 @@
 
 namespace antipode::cli {
 namespace {
-
-bool stdout_wants_colour() {
-  return isatty(STDOUT_FILENO) != 0 && std::getenv("NO_COLOR") == nullptr;
-}
 
 bt::LoadOptions load_options(const Session& session, const RunOptions& options) {
   bt::LoadOptions load;
@@ -42,16 +36,7 @@ bt::Tree load_tree_for(const Session& session, const RunOptions& options) {
 int run_command(const RunOptions& options) {
   Session session = open_session();
   bt::Tree tree = load_tree_for(session, options);
-  std::unique_ptr<bt::ConsoleTracer> console;
-  std::unique_ptr<bt::JsonlTracer> trace_file;
-  if (!options.quiet) {
-    console = std::make_unique<bt::ConsoleTracer>(std::cout, stdout_wants_colour());
-    tree.add_observer(console.get());
-  }
-  if (!options.trace_path.empty()) {
-    trace_file = std::make_unique<bt::JsonlTracer>(options.trace_path);
-    tree.add_observer(trace_file.get());
-  }
+  const Tracing tracing = attach_tracers(tree, !options.quiet, options.trace_path);
   const bt::Status status = tree.tick_while_running();
   std::cout << options.tree_path << ": " << bt::to_string(status) << "\n";
   return status == bt::Status::kSuccess ? kExitSuccess : kExitTreeFailed;

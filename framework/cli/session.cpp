@@ -1,5 +1,10 @@
 #include "session.hpp"
 
+#include <unistd.h>
+
+#include <cstdlib>
+#include <iostream>
+
 namespace antipode::cli {
 
 Session open_session() {
@@ -7,6 +12,20 @@ Session open_session() {
   session.host->load_search_path();
   session.host->register_nodes(session.registry);
   return session;
+}
+
+Tracing attach_tracers(bt::Tree& tree, bool console, const std::string& trace_path) {
+  Tracing tracing;
+  if (console) {
+    const bool colour = isatty(STDOUT_FILENO) != 0 && std::getenv("NO_COLOR") == nullptr;
+    tracing.console = std::make_unique<bt::ConsoleTracer>(std::cout, colour);
+    tree.add_observer(tracing.console.get());
+  }
+  if (!trace_path.empty()) {
+    tracing.file = std::make_unique<bt::JsonlTracer>(trace_path);
+    tree.add_observer(tracing.file.get());
+  }
+  return tracing;
 }
 
 std::string refused_plugins_note(const PluginHost& host) {

@@ -5,6 +5,7 @@
 #include <memory>
 
 #include "antipode/bt/node_registry.hpp"
+#include "antipode/bt/tracers.hpp"
 #include "antipode/bt/tree.hpp"
 #include "antipode/plugin/plugin_host.hpp"
 
@@ -23,6 +24,16 @@ struct RunOptions;
 /// Loads `options.tree_path` with the session's registry and components; unknown-name errors
 /// get a note when plugins were refused (a refused plugin is the usual cause).
 bt::Tree load_tree_for(const Session& session, const RunOptions& options);
+
+/// The tracers a command attached to a tree; they must outlive its ticks.
+struct Tracing {
+  std::unique_ptr<bt::ConsoleTracer> console;
+  std::unique_ptr<bt::JsonlTracer> file;
+};
+
+/// Attaches a console tracer (when `console`) and a JSON-lines trace file (when
+/// `trace_path` is not empty) to `tree`.
+Tracing attach_tracers(bt::Tree& tree, bool console, const std::string& trace_path);
 
 /// " - note: N plugin libraries were refused; see 'antipode plugins'", or "" when none were.
 std::string refused_plugins_note(const PluginHost& host);

@@ -23,6 +23,10 @@ TEST(ConvertersTest, NumbersAreParsedStrictly) {
   EXPECT_EQ(parse<unsigned long>("-1"), std::nullopt);
   EXPECT_EQ(parse<double>("2.5e-3"), 2.5e-3);
   EXPECT_EQ(parse<double>("x"), std::nullopt);
+  EXPECT_EQ(parse<double>("nan"), std::nullopt);
+  EXPECT_EQ(parse<double>("inf"), std::nullopt);
+  EXPECT_EQ(parse<float>("-inf"), std::nullopt);
+  EXPECT_EQ(parse<std::vector<double>>("[0, nan, 1]"), std::nullopt);
 }
 
 TEST(ConvertersTest, BoolsListsAndDurations) {
@@ -33,6 +37,7 @@ TEST(ConvertersTest, BoolsListsAndDurations) {
             (std::vector<std::string>{"left", "right"}));
   EXPECT_EQ(parse<std::vector<std::string>>("left"), std::nullopt);
   EXPECT_EQ(parse<std::vector<int>>("[1, 2]"), (std::vector<int>{1, 2}));
+  EXPECT_EQ(parse<std::chrono::milliseconds>("9223372036854775807"), std::nullopt);
   EXPECT_EQ(parse<std::chrono::milliseconds>("250"), std::chrono::milliseconds(250));
   EXPECT_EQ(parse<std::chrono::milliseconds>("-1"), std::nullopt);
   EXPECT_EQ(parse<std::string>("[not, parsed]"), "[not, parsed]");

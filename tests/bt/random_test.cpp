@@ -38,19 +38,23 @@ TEST_F(RandomTest, SeedsNodesAndRunsGiveDifferentDraws) {
 }
 
 TEST_F(RandomTest, DrawsDoNotDependOnUnrelatedNodes) {
-  // Adding a node after Draw leaves its path, and so its stream, unchanged.
+  // Adding a node of another type - before or after - leaves Draw's path (numbered among
+  // its own type) and so its stream unchanged.
   Tree tree = load(kTwoDraws, 3);
   Tree longer = load(R"(
 main: t
 trees:
   t:
     Sequence:
+      - AlwaysSuccess
       - Draw: { out: "{a}" }
       - Draw: { out: "{b}" }
       - AlwaysSuccess
 )",
                      3);
   EXPECT_EQ(draw(tree, "a"), draw(longer, "a"));
+  EXPECT_EQ(tree.blackboard().get<std::vector<double>>("b"),
+            longer.blackboard().get<std::vector<double>>("b"));
 }
 
 }  // namespace

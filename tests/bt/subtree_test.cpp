@@ -135,9 +135,9 @@ trees:
   EXPECT_EQ(paths, (std::vector<std::string>{
                        "outer/Sequence",
                        "outer/Sequence/AlwaysSuccess#0",
-                       "outer/Sequence/SubTree#1",
-                       "outer/Sequence/SubTree#1/inner/Inverter",
-                       "outer/Sequence/SubTree#1/inner/Inverter/AlwaysFailure#0",
+                       "outer/Sequence/SubTree#0",
+                       "outer/Sequence/SubTree#0/inner/Inverter",
+                       "outer/Sequence/SubTree#0/inner/Inverter/AlwaysFailure#0",
                    }));
 }
 

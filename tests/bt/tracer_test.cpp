@@ -99,7 +99,7 @@ TEST_F(TracerTest, JsonlTracerWritesValidJsonLines) {
   EXPECT_EQ(lines[0]["path"], "t/Sequence");
   EXPECT_EQ(lines[1]["node"], "slow");
   EXPECT_EQ(lines[1]["type"], "Scripted");
-  EXPECT_EQ(lines[1]["path"], "t/Sequence/Scripted#0");
+  EXPECT_EQ(lines[1]["path"], "t/Sequence/slow#0");  // named nodes are placed by name
   EXPECT_EQ(lines[1]["where"], "trees/t.yaml:6:9");
   EXPECT_EQ(lines[1]["from"], "IDLE");
   EXPECT_EQ(lines[1]["to"], "RUNNING");

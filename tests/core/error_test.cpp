@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <stdexcept>
+
 namespace antipode {
 namespace {
 
@@ -23,6 +25,40 @@ TEST(DidYouMeanTest, SuggestsNearNamesOnly) {
   EXPECT_EQ(closest_match("Fallbak", names), "Fallback");
   EXPECT_EQ(did_you_mean("CompletelyDifferent", names), "");
   EXPECT_EQ(closest_match("x", {}), "");
+}
+
+TEST(RethrowWithContextTest, LocatesErrorsAndMarksOtherExceptionsInternal) {
+  const SourceLocation here{"t.yaml", 4, 2};
+  auto rethrown = [&](auto thrown) -> std::exception_ptr {
+    try {
+      try {
+        throw thrown;
+      } catch (...) {
+        rethrow_with_context("Node", here);
+      }
+    } catch (...) {
+      return std::current_exception();
+    }
+    return nullptr;
+  };
+  try {
+    std::rethrow_exception(rethrown(std::out_of_range("index 9")));
+  } catch (const InternalError& error) {
+    EXPECT_STREQ(error.what(), "t.yaml:4:2: Node: index 9");
+  }
+  try {
+    std::rethrow_exception(rethrown(Error("bad value")));
+  } catch (const InternalError&) {
+    FAIL() << "an Error must stay an input error";
+  } catch (const Error& error) {
+    EXPECT_STREQ(error.what(), "t.yaml:4:2: Node: bad value");
+  }
+  try {
+    std::rethrow_exception(rethrown(Error("bad value", {"other.yaml", 1, 1})));
+  } catch (const Error& error) {
+    EXPECT_STREQ(error.what(), "other.yaml:1:1: bad value");  // already located: unchanged
+  }
+  EXPECT_THROW(std::rethrow_exception(rethrown(42)), InternalError);
 }
 
 }  // namespace

@@ -22,6 +22,8 @@ TEST(RandomStreamTest, DerivedStreamsIgnoreParentHistory) {
   RandomStream first_copy = first;
   EXPECT_EQ(first_copy.next_u64(), second.next_u64());
   EXPECT_NE(parent.derive(3).next_u64(), parent.derive(4).next_u64());
+  // The child depends on the parent's seed too, or --seed would not change node streams.
+  EXPECT_NE(RandomStream(1).derive(3).next_u64(), RandomStream(2).derive(3).next_u64());
 }
 
 TEST(RandomStreamTest, DistributionsStayInRange) {

@@ -1,3 +1,5 @@
+#include <map>
+
 #include "build_tree.hpp"
 
 #include "tree_context.hpp"
@@ -7,14 +9,7 @@ namespace {
 
 // Rethrows an error without a location as one located at `where`, prefixed with `who`.
 [[noreturn]] void relocate(const std::string& who, const SourceLocation& where) {
-  try {
-    throw;
-  } catch (const Error& error) {
-    if (error.where().known()) throw;
-    throw Error(who + ": " + error.message(), where, error.hint());
-  } catch (const std::exception& error) {
-    throw Error(who + ": " + error.what(), where);
-  }
+  rethrow_with_context(who, where);
 }
 
 }  // namespace
@@ -76,9 +71,13 @@ std::unique_ptr<Node> TreeBuilder::make_node(const NodeSpec& node, const std::st
     NodeAccess::add_child(*made,
                           make_node(tree.root, inner_path, subtree_blackboard(node, blackboard)));
   }
-  for (std::size_t i = 0; i < node.children.size(); ++i) {
-    const NodeSpec& child = node.children[i];
-    const std::string child_path = path + "/" + child.type + "#" + std::to_string(i);
+  // A child's path segment is its name (or type) numbered among the earlier siblings of the
+  // same name, so inserting a different node elsewhere leaves every other path - and so
+  // every node's random() stream - as it was.
+  std::map<std::string, int> seen;
+  for (const NodeSpec& child : node.children) {
+    const std::string& base = child.name.empty() ? child.type : child.name;
+    const std::string child_path = path + "/" + base + "#" + std::to_string(seen[base]++);
     NodeAccess::add_child(*made, make_node(child, child_path, blackboard));
   }
   return made;

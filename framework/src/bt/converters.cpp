@@ -2,6 +2,7 @@
 
 #include <charconv>
 #include <chrono>
+#include <cmath>
 #include <stdexcept>
 #include <vector>
 
@@ -25,6 +26,9 @@ T parse_number(const YAML::Node& value) {
   if (error != std::errc() || end != last || first == last) {
     throw std::invalid_argument("not a number");
   }
+  if constexpr (std::is_floating_point_v<T>) {
+    if (!std::isfinite(result)) throw std::invalid_argument("not a finite number");
+  }
   return result;
 }
 
@@ -37,7 +41,10 @@ bool parse_bool(const YAML::Node& value) {
 
 std::chrono::milliseconds parse_msec(const YAML::Node& value) {
   const long count = parse_number<long>(value);
+  // A bound keeps deadline arithmetic (now + duration, in nanoseconds) from overflowing.
+  constexpr long kMaxMsec = 1000L * 1000 * 1000 * 1000;  // about 31 years
   if (count < 0) throw std::invalid_argument("negative duration");
+  if (count > kMaxMsec) throw std::invalid_argument("duration over 10^12 ms");
   return std::chrono::milliseconds(count);
 }
 

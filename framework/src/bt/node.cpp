@@ -68,16 +68,7 @@ void Node::abandon(Status previous) noexcept {
   }
 }
 
-void Node::rethrow_located() const {
-  try {
-    throw;
-  } catch (const Error& error) {
-    if (error.where().known()) throw;
-    throw Error(describe() + ": " + error.message(), where(), error.hint());
-  } catch (const std::exception& error) {
-    throw Error(describe() + ": " + error.what(), where());
-  }
-}
+void Node::rethrow_located() const { rethrow_with_context(describe(), where()); }
 
 void Node::halt_node() {
   if (status_ == Status::kRunning) halt();

@@ -3,6 +3,7 @@
 #include <set>
 
 #include "antipode/core/error.hpp"
+#include "tree_context.hpp"
 
 namespace antipode::bt {
 namespace {
@@ -77,6 +78,16 @@ const NodeManifest& NodeRegistry::get(const std::string& type) const {
     throw Error("unknown node '" + type + "'" + did_you_mean(type, types()));
   }
   return found->second;
+}
+
+void NodeRegistry::keep_loaded(const std::string& type, std::shared_ptr<const void> owner) {
+  const auto found = manifests_.find(type);
+  if (found == manifests_.end()) throw Error("unknown node '" + type + "'");
+  auto& create = found->second.create;
+  create = [make = std::move(create), owner = std::move(owner)](const NodeConfig& config) {
+    if (config.context) config.context->libraries.push_back(owner);
+    return make(config);
+  };
 }
 
 std::vector<std::string> NodeRegistry::types() const {

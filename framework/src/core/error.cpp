@@ -51,6 +51,22 @@ Error::Error(const std::string& message, SourceLocation where, std::string hint)
       where_(std::move(where)),
       hint_(std::move(hint)) {}
 
+void rethrow_with_context(const std::string& who, const SourceLocation& where) {
+  try {
+    throw;
+  } catch (const InternalError& error) {
+    if (error.where().known()) throw;
+    throw InternalError(who + ": " + error.message(), where, error.hint());
+  } catch (const Error& error) {
+    if (error.where().known()) throw;
+    throw Error(who + ": " + error.message(), where, error.hint());
+  } catch (const std::exception& error) {
+    throw InternalError(who + ": " + error.what(), where);
+  } catch (...) {
+    throw InternalError(who + ": an exception of unknown type", where);
+  }
+}
+
 std::string closest_match(const std::string& name, const std::vector<std::string>& candidates) {
   const std::size_t limit = std::max<std::size_t>(2, name.size() / 3);
   std::string best;

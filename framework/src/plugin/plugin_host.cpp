@@ -146,6 +146,9 @@ std::string PluginHost::refuse_reason(const PluginDescriptor& descriptor) const 
       return "type '" + std::string(factory.type) + "' is already provided by " +
              existing->second.library->path;
     }
+    if (factory.register_node != nullptr && is_builtin_node(factory.type)) {
+      return "node type '" + std::string(factory.type) + "' is a built-in node";
+    }
     if (!own_types.insert(factory.type).second) {
       return "type '" + std::string(factory.type) + "' is offered twice";
     }
@@ -198,7 +201,8 @@ const PluginRecord& PluginHost::load_library(const std::string& path) {
 void PluginHost::register_nodes(bt::NodeRegistry& registry) const {
   for (const auto& [type, offer] : offers_) {
     if (offer.factory->register_node == nullptr) continue;
-    register_plugin_node(registry, type, offer.library->path, offer.factory->register_node);
+    register_plugin_node(registry, type, offer.library->path, offer.library,
+                         offer.factory->register_node);
   }
 }
 
@@ -235,10 +239,8 @@ std::shared_ptr<Component> PluginHost::create(const std::string& type,
   Component* raw = nullptr;
   try {
     raw = offer.factory->create(params);
-  } catch (const Error&) {
-    throw;
-  } catch (const std::exception& error) {
-    throw Error(type + ": " + error.what(), params.location("plugin"));
+  } catch (...) {
+    rethrow_with_context(type, params.location("plugin"));
   }
   if (raw == nullptr) {
     throw Error("plugin " + offer.library->path + " returned no object for '" + type + "'");

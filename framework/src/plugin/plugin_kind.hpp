@@ -1,6 +1,7 @@
 #pragma once
 // Plugin-host internals: factory kinds and checks shared by the host's translation units.
 
+#include <memory>
 #include <optional>
 #include <string>
 
@@ -16,9 +17,13 @@ std::optional<ComponentKind> parse_component_kind(const std::string& kind);
 std::string factory_problem(const PluginFactory& factory);
 
 /// Calls a plugin's node registration for node type `type`, checking that it registers
-/// exactly that type and collides with nothing already registered.
+/// exactly that type and collides with nothing already registered; every tree using the
+/// type then holds `library`.
 void register_plugin_node(bt::NodeRegistry& registry, const std::string& type,
-                          const std::string& library_path,
+                          const std::string& library_path, std::shared_ptr<const void> library,
                           void (*register_node)(bt::NodeRegistry&));
+
+/// True when `type` names a built-in behaviour-tree node.
+bool is_builtin_node(const std::string& type);
 
 }  // namespace antipode

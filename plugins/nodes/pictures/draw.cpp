@@ -49,7 +49,8 @@ void draw_cloud(cv::Mat& image, const OrthoView& view, const Cloud& cloud) {
   const double range_m = std::max(far_m - near_m, 1e-6);
   for (const std::size_t i : order) {
     const ProjectedPoint& p = projected[i];
-    if (p.u_px < 0 || p.v_px < 0 || p.u_px >= image.cols || p.v_px >= image.rows) continue;
+    // Written so that a NaN coordinate is skipped too.
+    if (!(p.u_px >= 0 && p.v_px >= 0 && p.u_px < image.cols && p.v_px < image.rows)) continue;
     const double nearness = 1.0 - (p.depth_m - near_m) / range_m;  // 1 = nearest
     const double shade = 90.0 + 140.0 * nearness;
     cv::rectangle(image, cv::Rect(static_cast<int>(p.u_px), static_cast<int>(p.v_px), 2, 2),

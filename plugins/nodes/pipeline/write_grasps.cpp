@@ -61,6 +61,7 @@ class WriteGrasps final : public bt::SyncActionNode {
     write_file_atomically(file, [&](const std::string& temporary) {
       std::ofstream out(temporary);
       out << document.dump(1) << "\n";
+      out.close();  // flushes: a failure to write the last bytes shows here
       if (!out) throw Error("write failed");
     });
     log(std::to_string(hands.size()) + " hands written to " + file);

@@ -61,6 +61,10 @@ class NodeRegistry {
   /// The manifest of `type`; throws Error "unknown node 'x' (did you mean 'y'?)".
   const NodeManifest& get(const std::string& type) const;
 
+  /// Makes this registry and every tree with a node of `type` hold `owner` (the plugin
+  /// library the type's code lives in), so the code stays loaded while it can run.
+  void keep_loaded(const std::string& type, std::shared_ptr<const void> owner);
+
   /// Every registered type name, sorted.
   std::vector<std::string> types() const;
 

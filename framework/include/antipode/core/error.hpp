@@ -38,6 +38,19 @@ class Error : public std::runtime_error {
   std::string hint_;
 };
 
+/// An unexpected failure inside antipode or a plugin (a bug, not bad input): a standard
+/// exception or anything else thrown where an Error was expected. The CLI exits with code 3
+/// for it instead of 2.
+class InternalError : public Error {
+ public:
+  using Error::Error;
+};
+
+/// Called inside a catch block: rethrows the exception being handled with `who` and `where`
+/// added when it has no location yet. Errors stay Errors (InternalErrors stay internal);
+/// any other exception becomes an InternalError.
+[[noreturn]] void rethrow_with_context(const std::string& who, const SourceLocation& where);
+
 /// Returns the candidate nearest to `name` by edit distance if it is close enough to be a
 /// plausible misspelling (distance <= max(2, |name| / 3)), otherwise "".
 std::string closest_match(const std::string& name, const std::vector<std::string>& candidates);
