@@ -124,6 +124,7 @@ void cast_tile(RTCScene scene, const std::vector<Eigen::Matrix3f>& rotations,
   }
   RTCIntersectContext context;
   rtcInitIntersectContext(&context);
+  context.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;  // neighbouring pixels' rays
   rtcIntersect16(valid, scene, &context, &packet);
   for (int i = 0; i < 16; ++i) {
     if (!valid[i] || packet.hit.geomID[i] == RTC_INVALID_GEOMETRY_ID) continue;
