@@ -28,7 +28,18 @@ struct DetectOptions {
   std::string hands_entry = "grasps";  ///< the entry whose hands are summarised
 };
 
+struct SceneOptions {
+  std::string scene_path;
+  std::string tree_path = "trees/scene.yaml";
+  std::string image_path = "scene.png";
+  std::string grasps_path;  ///< grasps JSON to draw; "" for none
+  std::vector<std::string> set;
+  std::uint64_t seed = 0;
+  bool verbose = false;
+};
+
 int run_command(const RunOptions& options);
+int scene_command(const SceneOptions& options);
 int detect_command(const DetectOptions& options);
 int validate_command(const std::string& tree_path);
 int plugins_command();

@@ -15,6 +15,7 @@ constexpr const char* kExamples = R"(Examples:
   antipode run trees/detect.yaml --set sampler.samples=500 --seed 3 --trace run.jsonl
   antipode validate trees/detect.yaml
   antipode detect ../shared/data/clouds/table_mug.pcd --out grasps.json --image grasps.png
+  antipode scene scenes/pile_procedural.yaml --image scene.png
   antipode plugins
 
 Exit codes: 0 success, 1 the tree returned FAILURE, 2 invalid input (command line, tree,
@@ -23,6 +24,7 @@ parameters, data file), 3 internal error. See docs/cli.md.)";
 struct Commands {
   antipode::cli::RunOptions run;
   antipode::cli::DetectOptions detect;
+  antipode::cli::SceneOptions scene;
   std::string validate_path;
 };
 
@@ -49,9 +51,22 @@ void add_detect(CLI::App& app, Commands& commands) {
   detect->add_flag("-v,--verbose", options.verbose, "Print every node's status changes");
 }
 
+void add_scene(CLI::App& app, Commands& commands) {
+  auto& options = commands.scene;
+  CLI::App* scene = app.add_subcommand("scene", "Draw a simulated scene (and grasps) into a PNG");
+  scene->add_option("scene", options.scene_path, "Scene YAML file")->required();
+  scene->add_option("--image", options.image_path, "Output PNG")->capture_default_str();
+  scene->add_option("--grasps", options.grasps_path, "Grasps JSON to draw (from --out)");
+  scene->add_option("--tree", options.tree_path, "Scene tree")->capture_default_str();
+  scene->add_option("--set", options.set, "Override, as for 'run' (repeatable)");
+  scene->add_option("--seed", options.seed, "Seed of every random stream (default 0)");
+  scene->add_flag("-v,--verbose", options.verbose, "Print every node's status changes");
+}
+
 int dispatch(const CLI::App& app, const Commands& commands) {
   if (app.got_subcommand("run")) return antipode::cli::run_command(commands.run);
   if (app.got_subcommand("detect")) return antipode::cli::detect_command(commands.detect);
+  if (app.got_subcommand("scene")) return antipode::cli::scene_command(commands.scene);
   if (app.got_subcommand("validate")) {
     return antipode::cli::validate_command(commands.validate_path);
   }
@@ -70,6 +85,7 @@ int main(int argc, char** argv) {
   Commands commands;
   add_run(app, commands);
   add_detect(app, commands);
+  add_scene(app, commands);
   CLI::App* validate = app.add_subcommand("validate", "Check a tree file without running it");
   validate->add_option("tree", commands.validate_path, "YAML tree file")->required();
   app.add_subcommand("plugins", "List plugin libraries found, loaded and refused, and why");

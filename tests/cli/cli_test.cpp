@@ -227,6 +227,25 @@ TEST_F(DetectTest, WorkspaceOutsideTheCloudIsAnError) {
   EXPECT_TRUE(wrote_nothing());
 }
 
+TEST_F(CliTest, SceneDrawsTheSimulatedCellAndChecksGraspFrames) {
+  const std::string source = ANTIPODE_TEST_SOURCE_DIR;
+  const std::string image = (dir_ / "scene.png").string();
+  const std::string common = "scene " + source + "/scenes/isolated_cylinder.yaml --tree " +
+                             source + "/trees/scene.yaml --image " + image;
+  Result result = run(common);
+  ASSERT_EQ(result.exit_code, 0) << result.out;
+  EXPECT_TRUE(fs::exists(image));
+  fs::remove(image);
+  // Grasps detected in a sensor frame cannot be drawn into the cell's base frame.
+  const std::string grasps = write("g.json", R"({"frame": "sensor", "count": 0, "hands": []})");
+  result = run(common + " --grasps " + grasps);
+  EXPECT_EQ(result.exit_code, 2) << result.out;
+  EXPECT_NE(result.out.find("are in frame 'sensor', the cloud is in frame 'base'"),
+            std::string::npos)
+      << result.out;
+  EXPECT_FALSE(fs::exists(image));
+}
+
 TEST_F(CliTest, VersionAndHelp) {
   EXPECT_EQ(run("--version").out.rfind("antipode ", 0), 0u);
   const Result help = run("--help");

@@ -1,5 +1,9 @@
 // The pipeline nodes (plugins/nodes/pipeline) driving the fixture components through a tree.
 #include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
 
 #include "antipode/bt/loader.hpp"
 #include "antipode/plugin/plugin_host.hpp"
@@ -90,6 +94,54 @@ trees:
   ASSERT_EQ(lines.size(), 3u);
   EXPECT_EQ(lines[0], "scene 5: success - 1 of 1 succeeded (100%)");
   EXPECT_EQ(lines[2], "scene 7: success - 3 of 3 succeeded (100%)");
+}
+
+TEST_F(PipelineNodesTest, GraspsWrittenAndReadBackKeepTheirPoses) {
+  const std::string file =
+      (std::filesystem::temp_directory_path() / ("grasps_" + std::to_string(::getpid()) + ".json"))
+          .string();
+  bt::Tree tree = load(std::string(kComponents) + R"(
+trees:
+  pick:
+    Sequence:
+      - CaptureCloud: { cell: cell, cloud: "{cloud}" }
+      - SampleHands: { sampler: sampler, cloud: "{cloud}", hands: "{hands}" }
+      - WriteGrasps: { hands: "{hands}", file: "{file}" }
+      - ReadGrasps: { cloud: "{cloud}", file: "{file}", hands: "{read}" }
+)");
+  tree.blackboard().set<std::string>("file", file);
+  ASSERT_EQ(tree.tick_while_running(), bt::Status::kSuccess);
+  const auto& written = tree.blackboard().get<HandSetPtr>("hands")->hands;
+  const auto& read = tree.blackboard().get<HandSetPtr>("read")->hands;
+  ASSERT_EQ(read.size(), written.size());
+  for (std::size_t i = 0; i < read.size(); ++i) {
+    EXPECT_TRUE(read[i].X_FrameHand.isApprox(written[i].X_FrameHand, 1e-9));
+    EXPECT_DOUBLE_EQ(read[i].width_m, written[i].width_m);
+  }
+  std::filesystem::remove(file);
+}
+
+TEST_F(PipelineNodesTest, ReadGraspsRejectsAFileThatIsNotGrasps) {
+  const std::string file =
+      (std::filesystem::temp_directory_path() / ("bad_" + std::to_string(::getpid()) + ".json"))
+          .string();
+  std::ofstream(file) << "{\"frame\": \"base\", \"hands\": [{\"position_m\": [1, 2]}]}";
+  bt::Tree tree = load(std::string(kComponents) + R"(
+trees:
+  pick:
+    Sequence:
+      - CaptureCloud: { cell: cell, cloud: "{cloud}" }
+      - ReadGrasps: { cloud: "{cloud}", file: "{file}", hands: "{read}" }
+)");
+  tree.blackboard().set<std::string>("file", file);
+  try {
+    tree.tick_while_running();
+    FAIL() << "expected an error";
+  } catch (const Error& error) {
+    EXPECT_NE(std::string(error.what()).find("is not a grasps file"), std::string::npos)
+        << error.what();
+  }
+  std::filesystem::remove(file);
 }
 
 TEST_F(PipelineNodesTest, EmptyCaptureFailsWithReason) {

@@ -14,6 +14,7 @@ void register_select_grasps(bt::NodeRegistry& registry);
 void register_plan_reach(bt::NodeRegistry& registry);
 void register_execute_grasp(bt::NodeRegistry& registry);
 void register_write_grasps(bt::NodeRegistry& registry);
+void register_read_grasps(bt::NodeRegistry& registry);
 void register_reset_scene(bt::NodeRegistry& registry);
 void register_record_outcome(bt::NodeRegistry& registry);
 

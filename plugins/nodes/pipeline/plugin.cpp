@@ -14,6 +14,7 @@ const antipode::PluginFactory kFactories[] = {
     {"node", "PlanReach", "plans an arm motion to a grasp", nullptr, &register_plan_reach},
     {"node", "ExecuteGrasp", "executes a grasp in a cell", nullptr, &register_execute_grasp},
     {"node", "WriteGrasps", "writes hands to JSON", nullptr, &register_write_grasps},
+    {"node", "ReadGrasps", "reads hands from JSON", nullptr, &register_read_grasps},
     {"node", "ResetScene", "rebuilds a cell's scene from a seed", nullptr, &register_reset_scene},
     {"node", "RecordOutcome", "tallies grasp outcomes", nullptr, &register_record_outcome},
 };
