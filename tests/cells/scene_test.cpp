@@ -169,6 +169,24 @@ random_objects: { count: 8, shapes: [bottle, mug, banana, l_shape, t_shape] }
   EXPECT_GE(inside + 1, ids.size());
 }
 
+TEST(Scene, EveryShippedSceneParsesAndTheHouseholdPileSettles) {
+  const std::filesystem::path folder = std::filesystem::path(ANTIPODE_TEST_SOURCE_DIR) / "scenes";
+  int files = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(folder)) {
+    if (entry.path().extension() != ".yaml") continue;
+    EXPECT_NO_THROW(read_scene(entry.path().string())) << entry.path();
+    ++files;
+  }
+  EXPECT_GE(files, 8);
+  const SceneSpec spec = read_scene((folder / "pile_household.yaml").string());
+  PhysicsWorld world(PhysicsOptions{});
+  MeshCache meshes;
+  const std::vector<int> ids = build_scene(spec, spec.seed, meshes, world);
+  EXPECT_GE(ids.size(), 9u);
+  world.step();
+  EXPECT_LT(world.deepest_penetration(), 0.003);
+}
+
 TEST(Scene, UnknownShapesAreReportedWithASuggestion) {
   try {
     parse("placement: pile\nrandom_objects: { count: 2, shapes: [box, banan] }\n");
