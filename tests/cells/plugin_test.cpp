@@ -1,5 +1,8 @@
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <filesystem>
+
 #include "antipode/core/error.hpp"
 #include "antipode/interfaces/cell.hpp"
 #include "antipode/plugin/plugin_host.hpp"
@@ -74,6 +77,30 @@ TEST_F(BulletCellPluginTest, RejectsBadParameters) {
   EXPECT_NE(creation_error("scene: scenes/no_such_scene.yaml").find("no_such_scene"),
             std::string::npos);
   EXPECT_NE(creation_error("noise: 1").find("scene"), std::string::npos);
+  EXPECT_NE(creation_error("scene: scenes/isolated_cylinder.yaml\nobjects: /no/such/folder")
+                .find("is not a folder of object meshes"),
+            std::string::npos);
+}
+
+TEST_F(BulletCellPluginTest, ObjectsFolderReplacesTheScenesObjects) {
+  const std::string ycb = std::string(ANTIPODE_TEST_DATA_DIR) + "/objects/ycb";
+  if (!std::filesystem::is_directory(ycb)) GTEST_SKIP() << "no " << ycb;
+  const std::string scene = "scene: scenes/isolated_cylinder.yaml\nnoise: 0\nseed: 3\n";
+  const auto cylinder = create(scene);
+  const auto replaced = create(scene + "objects: " + ycb);
+  const auto names = cylinder->view_names();
+  // Points above the table top (z = -0.295) belong to the object.
+  const auto object_points = [&](Cell& cell) {
+    const Cloud cloud = cell.capture({names[0]});
+    return std::count_if(cloud.points_m.begin(), cloud.points_m.end(),
+                         [](const Eigen::Vector3f& p) { return p.z() > -0.285f; });
+  };
+  const auto cylinder_points = object_points(*cylinder);
+  const auto ycb_points = object_points(*replaced);
+  EXPECT_GT(ycb_points, 100);
+  EXPECT_NE(cylinder_points, ycb_points);
+  // The same seed draws the same YCB object again.
+  EXPECT_EQ(object_points(*create(scene + "objects: " + ycb)), ycb_points);
 }
 
 }  // namespace

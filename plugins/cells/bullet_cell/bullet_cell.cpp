@@ -1,6 +1,8 @@
 #include "bullet_cell.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <filesystem>
 
 #include "antipode/core/error.hpp"
 
@@ -21,7 +23,7 @@ double in_range(const Parameters& p, const std::string& key, double fallback, do
   return value;
 }
 
-SceneSpec scene_of(const Parameters& params) {
+SceneSpec read_scene_parameter(const Parameters& params) {
   const std::string path = params.require<std::string>("scene");
   try {
     return read_scene(resolve_path(path, params.file()));
@@ -29,6 +31,29 @@ SceneSpec scene_of(const Parameters& params) {
     if (std::string(error.what()).find(path) != std::string::npos) throw;
     params.fail("scene", std::string("scene: ") + error.what());
   }
+}
+
+// `objects: FOLDER` swaps the scene's objects for meshes drawn from FOLDER (as many as the
+// scene places), so one scene layout serves every object set.
+void replace_objects(const Parameters& params, SceneSpec& scene) {
+  const std::string folder = params.get<std::string>("objects", "");
+  if (folder.empty()) return;
+  const std::string resolved = resolve_path(folder, params.file());
+  if (!std::filesystem::is_directory(resolved)) {
+    params.fail("objects", "objects: '" + folder + "' is not a folder of object meshes");
+  }
+  const int count = std::max<int>({1, scene.random.count, static_cast<int>(scene.objects.size())});
+  scene.objects.clear();
+  scene.random.count = count;
+  scene.random.shapes.clear();
+  scene.random.names.clear();
+  scene.random.folder = resolved;
+}
+
+SceneSpec scene_of(const Parameters& params) {
+  SceneSpec scene = read_scene_parameter(params);
+  replace_objects(params, scene);
+  return scene;
 }
 
 }  // namespace
