@@ -3,6 +3,7 @@
 #include "antipode/core/parameters.hpp"
 #include "bullet_cell.hpp"
 #include "gripper.hpp"
+#include "top_down_hand.hpp"
 
 namespace antipode::cells {
 namespace {
@@ -20,17 +21,7 @@ BulletCell cylinder_cell(double diameter) {
                     options);
 }
 
-// A hand approaching straight down, closing along base x, palm face at (x, y, z).
-Hand top_down(double x, double y, double z) {
-  Hand hand;
-  Eigen::Matrix3d r;
-  r.col(0) = -Eigen::Vector3d::UnitZ();
-  r.col(1) = Eigen::Vector3d::UnitX();
-  r.col(2) = r.col(0).cross(r.col(1));
-  hand.X_FrameHand.linear() = r;
-  hand.X_FrameHand.translation() << x, y, z;
-  return hand;
-}
+using testing::top_down;
 
 double top_of_cylinder(const BulletCell& cell) { return cell.scene().table.top_z_m + 0.1; }
 

@@ -73,9 +73,7 @@ bool closed_and_consistent(const TriangleMesh& mesh) {
   return !edges.empty();
 }
 
-Eigen::Vector3d extents(const ObjectModel& m) {
-  return m.visual->bounds().sizes().cast<double>();
-}
+Eigen::Vector3d extents(const ObjectModel& m) { return m.visual->bounds().sizes().cast<double>(); }
 
 void expect_sound(const ObjectModel& m, double density) {
   EXPECT_TRUE(closed_and_consistent(*m.visual)) << m.name;

@@ -6,6 +6,8 @@
 #include "antipode/core/error.hpp"
 #include "antipode/interfaces/cell.hpp"
 #include "antipode/plugin/plugin_host.hpp"
+#include "support/error_of.hpp"
+#include "top_down_hand.hpp"
 
 namespace antipode {
 namespace {
@@ -25,27 +27,13 @@ class BulletCellPluginTest : public ::testing::Test {
   }
 
   std::string creation_error(const std::string& yaml) {
-    try {
-      create(yaml);
-    } catch (const Error& error) {
-      return error.what();
-    }
-    return "";
+    return testing::error_of([&] { create(yaml); });
   }
 
   PluginHost host_;
 };
 
-Hand top_down_at(double x, double y, double z) {
-  Hand hand;
-  Eigen::Matrix3d r;
-  r.col(0) = -Eigen::Vector3d::UnitZ();
-  r.col(1) = Eigen::Vector3d::UnitX();
-  r.col(2) = r.col(0).cross(r.col(1));
-  hand.X_FrameHand.linear() = r;
-  hand.X_FrameHand.translation() << x, y, z;
-  return hand;
-}
+using cells::testing::top_down;
 
 TEST_F(BulletCellPluginTest, LoadsAsACell) {
   ASSERT_EQ(host_.records().size(), 1u);
@@ -62,7 +50,7 @@ TEST_F(BulletCellPluginTest, CapturesAndGraspsThroughTheInterface) {
   cloud.validate();
   EXPECT_EQ(cloud.view_origins_m.size(), 2u);
   EXPECT_GT(cloud.size(), 10000u);
-  const Hand hand = top_down_at(0.72, -0.12, -0.295 + 0.1 + 0.005);
+  const Hand hand = top_down(0.72, -0.12, -0.295 + 0.1 + 0.005);
   EXPECT_EQ(cell->execute(hand, {}), GraspOutcome::kSuccess);
   EXPECT_EQ(cell->execute(hand, {}), GraspOutcome::kEmptyGrasp) << "the cylinder was removed";
   cell->reset(3);

@@ -123,7 +123,8 @@ TEST(Scene, MeshPilesFromTheSharedDataSettleInTheBox) {
 TEST(Scene, EachNewShapeSettlesOnTheTable) {
   for (const char* shape : {"bottle", "mug", "banana", "l_shape", "t_shape"}) {
     const SceneSpec spec = parse(std::string("placement: isolated\nrandom_objects: { count: 1, "
-                                             "shapes: [") + shape + "] }\n");
+                                             "shapes: [") +
+                                 shape + "] }\n");
     for (std::uint64_t seed : {1u, 2u, 3u}) {
       PhysicsWorld world(PhysicsOptions{});
       MeshCache meshes;

@@ -4,6 +4,7 @@
 #include "antipode/geometry/sample_hands.hpp"
 #include "antipode/interfaces/sampler.hpp"
 #include "antipode/plugin/plugin_host.hpp"
+#include "support/error_of.hpp"
 #include "synthetic_shapes.hpp"
 
 namespace antipode {
@@ -25,12 +26,7 @@ class AntipodalSamplerTest : public ::testing::Test {
   }
 
   std::string creation_error(const std::string& yaml) {
-    try {
-      create(yaml);
-    } catch (const Error& error) {
-      return error.what();
-    }
-    return "";
+    return testing::error_of([&] { create(yaml); });
   }
 
   PluginHost host_;
