@@ -5,5 +5,6 @@ find_package(OpenCV REQUIRED COMPONENTS core objdetect)
 list(APPEND ANTIPODE_SOURCES
   ${CMAKE_CURRENT_LIST_DIR}/antipodal.cpp
   ${CMAKE_CURRENT_LIST_DIR}/hand_image.cpp
-  ${CMAKE_CURRENT_LIST_DIR}/normals.cpp)
+  ${CMAKE_CURRENT_LIST_DIR}/normals.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/training_set.cpp)
 list(APPEND ANTIPODE_PRIVATE_LIBS TBB::tbb opencv_core opencv_objdetect)
