@@ -40,6 +40,8 @@ std::int32_t TrainingSet::next_group() const {
 
 TrainingSet TrainingSet::subset(const std::vector<std::size_t>& indices) const {
   TrainingSet out;
+  out.descriptor = descriptor;
+  out.geometry = geometry;
   out.dimension = dimension;
   out.features.reserve(indices.size() * dimension);
   for (const std::size_t i : indices) {
@@ -65,6 +67,8 @@ void TrainingSet::validate() const {
 void save_training_set(const TrainingSet& set, const std::string& path) {
   set.validate();
   BinaryWriter writer(kMagic, kVersion);
+  writer.put(set.descriptor);
+  writer.put(set.geometry);
   writer.put<std::uint64_t>(set.dimension);
   writer.put_vector(set.labels);
   writer.put_vector(set.groups);
@@ -76,6 +80,8 @@ void save_training_set(const TrainingSet& set, const std::string& path) {
 TrainingSet load_training_set(const std::string& path) {
   BinaryReader reader(path, kMagic, kVersion, "training set");
   TrainingSet set;
+  set.descriptor = reader.get<HandImageOptions>();
+  set.geometry = reader.get<HandGeometry>();
   set.dimension = static_cast<std::size_t>(reader.get<std::uint64_t>());
   set.labels = reader.get_vector<std::int8_t>();
   set.groups = reader.get_vector<std::int32_t>();
@@ -83,6 +89,8 @@ TrainingSet load_training_set(const std::string& path) {
   set.features = reader.get_vector<float>();
   reader.expect_end();
   try {
+    set.descriptor.validate();
+    set.geometry.validate();
     set.validate();
   } catch (const Error& e) {
     reader.fail(e.message());

@@ -10,9 +10,14 @@
 #include <string>
 #include <vector>
 
+#include "antipode/core/hand_geometry.hpp"
+#include "antipode/grasp/hand_image.hpp"
+
 namespace antipode {
 
 struct TrainingSet {
+  HandImageOptions descriptor;  ///< how the descriptors were computed
+  HandGeometry geometry;        ///< the hand whose closing region they image
   std::size_t dimension = 0;          ///< numbers per descriptor (0 until the first add)
   std::vector<float> features;        ///< size() x dimension numbers, row-major
   std::vector<std::int8_t> labels;    ///< +1 positive (a grasp), -1 negative
