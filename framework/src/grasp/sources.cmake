@@ -6,5 +6,6 @@ list(APPEND ANTIPODE_SOURCES
   ${CMAKE_CURRENT_LIST_DIR}/antipodal.cpp
   ${CMAKE_CURRENT_LIST_DIR}/hand_image.cpp
   ${CMAKE_CURRENT_LIST_DIR}/normals.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/training_examples.cpp
   ${CMAKE_CURRENT_LIST_DIR}/training_set.cpp)
 list(APPEND ANTIPODE_PRIVATE_LIBS TBB::tbb opencv_core opencv_objdetect)
