@@ -1,11 +1,14 @@
-# Grasp labelling without plugins: surface normals, the near-antipodal check and the grasp
-# hypothesis image with its HOG descriptor (parallel with TBB; OpenCV kept private).
+# Grasp labelling without plugins: surface normals, the near-antipodal check, the grasp
+# hypothesis image with its HOG descriptor and the HOG + SVM classifier's model and training
+# (parallel with TBB; OpenCV kept private).
 find_package(TBB REQUIRED)
-find_package(OpenCV REQUIRED COMPONENTS core objdetect)
+find_package(OpenCV REQUIRED COMPONENTS core objdetect ml)
 list(APPEND ANTIPODE_SOURCES
   ${CMAKE_CURRENT_LIST_DIR}/antipodal.cpp
   ${CMAKE_CURRENT_LIST_DIR}/hand_image.cpp
   ${CMAKE_CURRENT_LIST_DIR}/normals.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/svm_model.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/svm_training.cpp
   ${CMAKE_CURRENT_LIST_DIR}/training_examples.cpp
   ${CMAKE_CURRENT_LIST_DIR}/training_set.cpp)
-list(APPEND ANTIPODE_PRIVATE_LIBS TBB::tbb opencv_core opencv_objdetect)
+list(APPEND ANTIPODE_PRIVATE_LIBS TBB::tbb opencv_core opencv_objdetect opencv_ml)

@@ -1,0 +1,122 @@
+#pragma once
+/// @file
+/// A trained hand classifier (paper section 4): everything needed to turn HOG descriptors of
+/// grasp hypothesis images into decision values, without OpenCV. A descriptor x (the
+/// `descriptor.image` layout, `input_dimension()` numbers) is
+///
+///   1. reduced:  z_j = scale_j * basis_j . (x - mean)          (j < components(); PCA)
+///   2. scored:   f(x) = sum_i alpha_i (gamma z . sv_i + coef0)^degree - rho
+///
+/// f > 0 means "a grasp" (the label-+1 side of the polynomial-kernel SVM); higher is more
+/// confident. Models are written by train_svm() (svm_training.hpp) and stored with save() in
+/// antipode's binary container (core/binary_file.hpp).
+
+#include <cstddef>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "antipode/core/hand_geometry.hpp"
+#include "antipode/grasp/hand_image.hpp"
+
+namespace antipode {
+
+/// What produced the descriptors a model was trained on. Two descriptor setups are
+/// compatible when the name, the image options and the three hand lengths agree.
+struct SvmDescriptorSpec {
+  std::string name = "occupancy-hog-1";  ///< descriptor algorithm and its version
+  HandImageOptions image;                ///< image layout and HOG parameters
+  double depth_m = 0.06;                 ///< finger depth the image spans (rows)
+  double max_aperture_m = 0.072;         ///< aperture the image spans (columns)
+  double height_m = 0.02;                ///< hand height: the closing region's thickness
+
+  /// The spec of descriptors computed with `image` for a hand of `geometry`.
+  static SvmDescriptorSpec of(const HandImageOptions& image, const HandGeometry& geometry);
+  /// "a 0.06 m deep, 0.072 m wide, 0.02 m high hand with 10 x 12 HOG cells of 6 px (2 x 2
+  /// cell blocks, 9 bins, occupancy-hog-1)".
+  std::string describe() const;
+  /// Same name and image options, and hand lengths within 1e-9 m.
+  bool matches(const SvmDescriptorSpec& other) const;
+};
+
+/// The polynomial kernel K(a, b) = (gamma a . b + coef0)^degree and the soft-margin cost C
+/// the machine was trained with.
+struct SvmKernel {
+  int degree = 3;
+  double gamma = 1.0;
+  double coef0 = 1.0;
+  double C = 1.0;  ///< recorded for reference; prediction does not use it
+};
+
+/// Facts about the training run, stored with the model for reports.
+struct SvmTrainingInfo {
+  std::uint64_t positives = 0;  ///< training examples labelled +1
+  std::uint64_t negatives = 0;  ///< training examples labelled -1
+  std::uint64_t seed = 0;       ///< seed of the fold assignment and PCA subsample
+  /// Grouped k-fold cross-validation accuracy of the chosen parameters in [0, 1]; negative
+  /// when no cross-validation was run.
+  double cv_accuracy = -1.0;
+  std::string description;  ///< free text (training data, command line, ...)
+};
+
+class SvmModel {
+ public:
+  SvmDescriptorSpec descriptor;
+  /// Reduction: `mean` (input_dimension()), `basis` (components() x input_dimension(),
+  /// row-major, orthonormal rows) and `scale` (components(), 1 / standard deviation of each
+  /// component on the training data).
+  std::vector<float> mean;
+  std::vector<float> basis;
+  std::vector<float> scale;
+  SvmKernel kernel;
+  /// Support vectors in reduced space: support_vector_count() x components(), row-major.
+  std::vector<float> support_vectors;
+  std::vector<double> alpha;  ///< dual coefficient of each support vector (label sign included)
+  double rho = 0.0;           ///< offset subtracted from the kernel sum
+  SvmTrainingInfo info;
+
+  std::size_t input_dimension() const { return mean.size(); }
+  std::size_t components() const { return scale.size(); }
+  std::size_t support_vector_count() const { return alpha.size(); }
+
+  /// Throws antipode::Error (prefixed with `context`, e.g. the file name) when the sizes
+  /// disagree with each other or with the descriptor options, a number is non-finite, the
+  /// degree is outside [1, 10] or the model has no support vector.
+  void validate(const std::string& context = "SVM model") const;
+
+  /// Decision values f(x) of `n` row-major descriptors of `dim` numbers at `rows`, using
+  /// `threads` workers (0: all). Rows are processed in fixed blocks of kBlockRows (the last
+  /// one zero-padded) with matrix products, so memory stays bounded and every value is the
+  /// same whatever the thread count. Throws antipode::Error when `dim` is not
+  /// input_dimension().
+  std::vector<double> decision_values(const float* rows, std::size_t n, std::size_t dim,
+                                      int threads = 0) const;
+  /// The same for descriptors held one per vector (as hand_descriptors() returns them).
+  std::vector<double> decision_values(const std::vector<std::vector<float>>& descriptors,
+                                      int threads = 0) const;
+
+  /// The reduced features z (n x components(), row-major) of `n` descriptors, computed as
+  /// in decision_values(); training uses it so that both share one code path.
+  std::vector<float> reduce(const float* rows, std::size_t n, std::size_t dim,
+                            int threads = 0) const;
+  /// Decision values of already reduced rows (n x components(), row-major).
+  std::vector<double> decision_values_reduced(const float* reduced, std::size_t n,
+                                              int threads = 0) const;
+
+  /// Throws antipode::Error "<model_name> was trained for <spec>; this hand set has <spec>
+  /// (retrain with `antipode train`)" unless descriptors of `image` for `geometry` match
+  /// the model's.
+  void check_compatible(const HandImageOptions& image, const HandGeometry& geometry,
+                        const std::string& model_name = "the SVM model") const;
+
+  /// Writes the model to `path` all-or-nothing (validated first); the bytes depend only on
+  /// the model's contents.
+  void save(const std::string& path) const;
+  /// Reads a file written by save(). A missing, truncated, corrupted, foreign or
+  /// inconsistent file is an antipode::Error naming the file and the problem.
+  static SvmModel load(const std::string& path);
+
+  static constexpr std::size_t kBlockRows = 128;
+};
+
+}  // namespace antipode

@@ -1,0 +1,103 @@
+#pragma once
+/// @file
+/// Training and evaluating the paper's hand classifier (section 4.3): PCA-reduced,
+/// standardised HOG descriptors, a polynomial-kernel soft-margin SVM whose C (and gamma)
+/// are chosen by grouped k-fold cross-validation. The solver is OpenCV's (used privately);
+/// the result is an SvmModel that predicts without OpenCV. Everything is deterministic: the
+/// same training set and options give a bit-identical model, whatever the thread count.
+
+#include <cstddef>
+#include <cstdint>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "antipode/core/hand_geometry.hpp"
+#include "antipode/grasp/hand_image.hpp"
+#include "antipode/grasp/svm_model.hpp"
+#include "antipode/grasp/training_set.hpp"
+
+namespace antipode {
+
+/// Called as work finishes: `done` of `total` steps, and what was just done.
+using SvmProgress =
+    std::function<void(std::size_t done, std::size_t total, const std::string& step)>;
+
+struct SvmTrainingOptions {
+  int degree = 3;                                    ///< polynomial degree (the paper: 3)
+  double coef0 = 1.0;                                ///< kernel (gamma a . b + coef0)^degree
+  std::vector<double> c_values = {0.1, 1, 10, 100};  ///< C candidates
+  /// gamma candidates; empty means the single value 1 / components (the reduced features
+  /// have unit variance, so gamma a . b is of order one).
+  std::vector<double> gamma_values;
+  std::size_t pca_components = 96;      ///< k (fewer when the data has lower rank)
+  std::size_t max_pca_examples = 6000;  ///< PCA is fitted on a seeded subsample this large
+  int folds = 10;                       ///< cross-validation folds; 0 skips cross-validation
+  std::uint64_t seed = 0;               ///< fold assignment and PCA subsample
+  int threads = 0;                      ///< workers (0: all); results do not depend on it
+  double tolerance = 1e-3;              ///< solver stopping tolerance (as libsvm's eps)
+  int max_iterations = 10000000;        ///< solver iteration cap
+  std::string description;              ///< copied into the model's info
+  SvmProgress progress;  ///< optional; called from worker threads, one call at a time
+
+  /// Throws antipode::Error naming the first invalid field.
+  void validate() const;
+};
+
+/// Binary classification counts, positive = a grasp.
+struct ConfusionMatrix {
+  std::uint64_t tp = 0;  ///< grasps classified as grasps
+  std::uint64_t fp = 0;  ///< non-grasps classified as grasps
+  std::uint64_t tn = 0;  ///< non-grasps classified as non-grasps
+  std::uint64_t fn = 0;  ///< grasps classified as non-grasps
+
+  std::uint64_t total() const { return tp + fp + tn + fn; }
+  double accuracy() const;   ///< (tp + tn) / total, 0 when empty
+  double precision() const;  ///< tp / (tp + fp), 0 when nothing was called a grasp
+  double recall() const;     ///< tp / (tp + fn), 0 when there are no grasps
+  ConfusionMatrix& operator+=(const ConfusionMatrix& other);
+};
+
+/// The cross-validation of one (C, gamma) candidate.
+struct CrossValidationPoint {
+  double C = 0.0;
+  double gamma = 0.0;
+  ConfusionMatrix confusion;  ///< summed over the folds (each example held out once)
+};
+
+struct CrossValidationResult {
+  std::vector<CrossValidationPoint> points;  ///< one per candidate, C-major grid order
+  std::size_t best = 0;                      ///< index of the most accurate (first on ties)
+  int folds = 0;
+
+  const CrossValidationPoint& best_point() const { return points.at(best); }
+  double accuracy() const { return best_point().confusion.accuracy(); }
+};
+
+/// Fold (0..folds-1) of every example: whole groups are dealt round-robin to folds in a
+/// seeded shuffled order, so a hand's descriptors never straddle training and held-out data.
+/// Throws antipode::Error when there are fewer groups than folds.
+std::vector<int> assign_folds(const TrainingSet& set, int folds, std::uint64_t seed);
+
+/// Grouped k-fold cross-validation of every (C, gamma) candidate (PCA fitted once on the
+/// whole set, as train_svm() does). `options.folds` must be at least 2.
+CrossValidationResult cross_validate(const TrainingSet& set, const SvmTrainingOptions& options);
+
+/// Fits the PCA reduction, chooses C and gamma by grouped cross-validation (the first
+/// candidate when `options.folds` is 0; the chosen accuracy goes to info.cv_accuracy), then
+/// trains on the whole set. The model records `image` and `geometry` as its descriptor spec.
+/// Throws antipode::Error for an empty set, a set with one class only, descriptors whose
+/// length is not `image`'s descriptor size, or a set whose recorded descriptor options and
+/// hand (TrainingSet::descriptor, ::geometry) differ from `image` and `geometry`.
+SvmModel train_svm(const TrainingSet& set, const SvmTrainingOptions& options,
+                   const HandImageOptions& image, const HandGeometry& geometry);
+
+/// The same, for the descriptor options and hand the training set records.
+SvmModel train_svm(const TrainingSet& set, const SvmTrainingOptions& options);
+
+/// Classifies every example of `set` with `model` (positive when the decision value is
+/// >= `threshold`) and counts the outcomes.
+ConfusionMatrix evaluate(const SvmModel& model, const TrainingSet& set, int threads = 0,
+                         double threshold = 0.0);
+
+}  // namespace antipode

@@ -1,0 +1,327 @@
+#include "antipode/grasp/svm_model.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
+#include <Eigen/Core>
+
+#include "antipode/core/binary_file.hpp"
+#include "antipode/core/error.hpp"
+
+namespace antipode {
+namespace {
+
+constexpr const char* kMagic = "ANTPSVM1";
+constexpr std::uint32_t kVersion = 1;
+constexpr const char* kPolyKernel = "poly";
+constexpr int kMaxOption = 4096;  // bound on each image option read from a file
+
+using RowMatrixF = Eigen::Matrix<float, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
+using ConstRowMapF = Eigen::Map<const RowMatrixF>;
+
+std::string number(double value) {
+  std::ostringstream out;
+  out << value;
+  return out.str();
+}
+
+template <typename T>
+bool all_finite(const std::vector<T>& values) {
+  return std::all_of(values.begin(), values.end(), [](T v) { return std::isfinite(v); });
+}
+
+std::string sizes_problem(const SvmModel& m) {
+  const std::size_t d = m.descriptor.image.descriptor_size();
+  const std::size_t k = m.components();
+  if (m.mean.size() != d) {
+    return "mean of " + std::to_string(m.mean.size()) + " numbers, but the descriptor has " +
+           std::to_string(d);
+  }
+  if (k == 0 || k > d) return "reduction to " + std::to_string(k) + " components";
+  if (m.basis.size() != k * d) return "PCA basis size disagrees with its components";
+  if (m.support_vector_count() == 0) return "no support vectors";
+  if (m.support_vectors.size() != m.support_vector_count() * k) {
+    return "support vectors disagree with their coefficients or the components";
+  }
+  return "";
+}
+
+std::string image_problem(const HandImageOptions& o) {
+  for (const int v : {o.cells_along, o.cells_across, o.cell_px, o.block_cells, o.bins}) {
+    if (v < 1 || v > kMaxOption) return "image option out of range: " + std::to_string(v);
+  }
+  try {
+    o.validate();
+  } catch (const Error& e) {
+    return e.message();
+  }
+  return "";
+}
+
+std::string numbers_problem(const SvmModel& m) {
+  const SvmDescriptorSpec& s = m.descriptor;
+  for (const double v : {s.depth_m, s.max_aperture_m, s.height_m}) {
+    if (!(std::isfinite(v) && v > 0.0)) return "hand length not a positive number";
+  }
+  if (!all_finite(m.mean) || !all_finite(m.basis) || !all_finite(m.scale) ||
+      !all_finite(m.support_vectors) || !all_finite(m.alpha) || !std::isfinite(m.rho)) {
+    return "non-finite number";
+  }
+  const SvmKernel& k = m.kernel;
+  if (k.degree < 1 || k.degree > 10) return "kernel degree " + std::to_string(k.degree);
+  if (!(std::isfinite(k.gamma) && k.gamma > 0.0 && std::isfinite(k.coef0) && std::isfinite(k.C) &&
+        k.C > 0.0)) {
+    return "invalid kernel parameters (gamma and C must be positive)";
+  }
+  if (!(std::isfinite(m.info.cv_accuracy) && m.info.cv_accuracy <= 1.0)) {
+    return "invalid cross-validation accuracy";
+  }
+  return "";
+}
+
+std::string model_problem(const SvmModel& m) {
+  std::string problem = image_problem(m.descriptor.image);
+  if (problem.empty()) problem = sizes_problem(m);
+  if (problem.empty()) problem = numbers_problem(m);
+  return problem;
+}
+
+double integer_power(double base, int degree) {
+  double result = 1.0;
+  for (int i = 0; i < degree; ++i) result *= base;
+  return result;
+}
+
+// Runs body(block) for every block of kBlockRows rows, in parallel.
+template <typename Body>
+void for_each_block(std::size_t n, int threads, const Body& body) {
+  if (threads < 0) throw Error("SVM model: threads must be >= 0, got " + std::to_string(threads));
+  const std::size_t blocks = (n + SvmModel::kBlockRows - 1) / SvmModel::kBlockRows;
+  if (blocks == 0) return;
+  tbb::task_arena arena(threads > 0 ? threads : tbb::task_arena::automatic);
+  arena.execute([&] {
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, blocks, 1),
+                      [&](const tbb::blocked_range<std::size_t>& range) {
+                        for (std::size_t b = range.begin(); b != range.end(); ++b) body(b);
+                      });
+  });
+}
+
+// Rows [first, first + count) of `rows` (width `dim`), minus `offset`, in a zero-padded
+// kBlockRows x dim matrix.
+RowMatrixF padded_block(const float* rows, std::size_t first, std::size_t count, std::size_t dim,
+                        const std::vector<float>* offset) {
+  RowMatrixF block = RowMatrixF::Zero(SvmModel::kBlockRows, static_cast<Eigen::Index>(dim));
+  for (std::size_t r = 0; r < count; ++r) {
+    const float* row = rows + (first + r) * dim;
+    for (std::size_t c = 0; c < dim; ++c) {
+      block(static_cast<Eigen::Index>(r), static_cast<Eigen::Index>(c)) =
+          offset == nullptr ? row[c] : row[c] - (*offset)[c];
+    }
+  }
+  return block;
+}
+
+RowMatrixF reduce_block(const SvmModel& m, const float* rows, std::size_t first,
+                        std::size_t count) {
+  const auto d = static_cast<Eigen::Index>(m.input_dimension());
+  const auto k = static_cast<Eigen::Index>(m.components());
+  const RowMatrixF centred = padded_block(rows, first, count, m.input_dimension(), &m.mean);
+  RowMatrixF z = centred * ConstRowMapF(m.basis.data(), k, d).transpose();
+  for (Eigen::Index j = 0; j < k; ++j) z.col(j) *= m.scale[static_cast<std::size_t>(j)];
+  return z;
+}
+
+void score_block(const SvmModel& m, const RowMatrixF& z, std::size_t first, std::size_t count,
+                 double* out) {
+  const auto k = static_cast<Eigen::Index>(m.components());
+  const auto nsv = static_cast<Eigen::Index>(m.support_vector_count());
+  const RowMatrixF dots = z * ConstRowMapF(m.support_vectors.data(), nsv, k).transpose();
+  for (std::size_t r = 0; r < count; ++r) {
+    double sum = 0.0;
+    for (Eigen::Index i = 0; i < nsv; ++i) {
+      const double dot = dots(static_cast<Eigen::Index>(r), i);
+      sum += m.alpha[static_cast<std::size_t>(i)] *
+             integer_power(m.kernel.gamma * dot + m.kernel.coef0, m.kernel.degree);
+    }
+    out[first + r] = sum - m.rho;
+  }
+}
+
+std::size_t block_rows(std::size_t n, std::size_t block) {
+  return std::min(SvmModel::kBlockRows, n - block * SvmModel::kBlockRows);
+}
+
+void check_dimension(const SvmModel& m, std::size_t dim) {
+  if (dim != m.input_dimension()) {
+    throw Error("SVM model: descriptors of " + std::to_string(dim) +
+                " numbers, but the model takes " + std::to_string(m.input_dimension()));
+  }
+}
+
+}  // namespace
+
+SvmDescriptorSpec SvmDescriptorSpec::of(const HandImageOptions& image,
+                                        const HandGeometry& geometry) {
+  SvmDescriptorSpec spec;
+  spec.image = image;
+  spec.depth_m = geometry.depth_m;
+  spec.max_aperture_m = geometry.max_aperture_m;
+  spec.height_m = geometry.height_m;
+  return spec;
+}
+
+std::string SvmDescriptorSpec::describe() const {
+  return "a " + number(depth_m) + " m deep, " + number(max_aperture_m) + " m wide, " +
+         number(height_m) + " m high hand with " + std::to_string(image.cells_along) + " x " +
+         std::to_string(image.cells_across) + " HOG cells of " + std::to_string(image.cell_px) +
+         " px (" + std::to_string(image.block_cells) + " x " + std::to_string(image.block_cells) +
+         " cell blocks, " + std::to_string(image.bins) + " bins, " + name + ")";
+}
+
+bool SvmDescriptorSpec::matches(const SvmDescriptorSpec& o) const {
+  const auto near = [](double a, double b) { return std::abs(a - b) <= 1e-9; };
+  const HandImageOptions& a = image;
+  const HandImageOptions& b = o.image;
+  return name == o.name && a.cells_along == b.cells_along && a.cells_across == b.cells_across &&
+         a.cell_px == b.cell_px && a.block_cells == b.block_cells && a.bins == b.bins &&
+         near(depth_m, o.depth_m) && near(max_aperture_m, o.max_aperture_m) &&
+         near(height_m, o.height_m);
+}
+
+void SvmModel::validate(const std::string& context) const {
+  const std::string problem = model_problem(*this);
+  if (!problem.empty()) throw Error(context + ": " + problem);
+}
+
+std::vector<float> SvmModel::reduce(const float* rows, std::size_t n, std::size_t dim,
+                                    int threads) const {
+  check_dimension(*this, dim);
+  const std::size_t k = components();
+  std::vector<float> reduced(n * k);
+  for_each_block(n, threads, [&](std::size_t b) {
+    const std::size_t first = b * kBlockRows;
+    const std::size_t count = block_rows(n, b);
+    const RowMatrixF z = reduce_block(*this, rows, first, count);
+    for (std::size_t r = 0; r < count; ++r) {
+      for (std::size_t j = 0; j < k; ++j) {
+        reduced[(first + r) * k + j] =
+            z(static_cast<Eigen::Index>(r), static_cast<Eigen::Index>(j));
+      }
+    }
+  });
+  return reduced;
+}
+
+std::vector<double> SvmModel::decision_values(const float* rows, std::size_t n, std::size_t dim,
+                                              int threads) const {
+  check_dimension(*this, dim);
+  std::vector<double> values(n);
+  for_each_block(n, threads, [&](std::size_t b) {
+    const std::size_t first = b * kBlockRows;
+    const std::size_t count = block_rows(n, b);
+    score_block(*this, reduce_block(*this, rows, first, count), first, count, values.data());
+  });
+  return values;
+}
+
+std::vector<double> SvmModel::decision_values(const std::vector<std::vector<float>>& descriptors,
+                                              int threads) const {
+  std::vector<float> rows;
+  rows.reserve(descriptors.size() * input_dimension());
+  for (const auto& d : descriptors) {
+    check_dimension(*this, d.size());
+    rows.insert(rows.end(), d.begin(), d.end());
+  }
+  return decision_values(rows.data(), descriptors.size(), input_dimension(), threads);
+}
+
+std::vector<double> SvmModel::decision_values_reduced(const float* reduced, std::size_t n,
+                                                      int threads) const {
+  std::vector<double> values(n);
+  for_each_block(n, threads, [&](std::size_t b) {
+    const std::size_t first = b * kBlockRows;
+    const std::size_t count = block_rows(n, b);
+    score_block(*this, padded_block(reduced, first, count, components(), nullptr), first, count,
+                values.data());
+  });
+  return values;
+}
+
+void SvmModel::check_compatible(const HandImageOptions& image, const HandGeometry& geometry,
+                                const std::string& model_name) const {
+  const SvmDescriptorSpec wanted = SvmDescriptorSpec::of(image, geometry);
+  if (descriptor.matches(wanted)) return;
+  throw Error(model_name + " was trained for " + descriptor.describe() + "; this hand set has " +
+              wanted.describe() + " (retrain with `antipode train`)");
+}
+
+void SvmModel::save(const std::string& path) const {
+  validate("SVM model for " + path);
+  BinaryWriter w(kMagic, kVersion);
+  w.put_string(descriptor.name);
+  const HandImageOptions& o = descriptor.image;
+  for (const int v : {o.cells_along, o.cells_across, o.cell_px, o.block_cells, o.bins}) {
+    w.put<std::int32_t>(v);
+  }
+  w.put(descriptor.depth_m);
+  w.put(descriptor.max_aperture_m);
+  w.put(descriptor.height_m);
+  w.put_string(kPolyKernel);
+  w.put<std::int32_t>(kernel.degree);
+  w.put(kernel.gamma);
+  w.put(kernel.coef0);
+  w.put(kernel.C);
+  w.put_vector(mean);
+  w.put_vector(basis);
+  w.put_vector(scale);
+  w.put_vector(support_vectors);
+  w.put_vector(alpha);
+  w.put(rho);
+  w.put<std::uint64_t>(info.positives);
+  w.put<std::uint64_t>(info.negatives);
+  w.put<std::uint64_t>(info.seed);
+  w.put(info.cv_accuracy);
+  w.put_string(info.description);
+  w.write(path);
+}
+
+SvmModel SvmModel::load(const std::string& path) {
+  BinaryReader r(path, kMagic, kVersion, "classifier model");
+  SvmModel m;
+  m.descriptor.name = r.get_string();
+  HandImageOptions& o = m.descriptor.image;
+  for (int* v : {&o.cells_along, &o.cells_across, &o.cell_px, &o.block_cells, &o.bins}) {
+    *v = r.get<std::int32_t>();
+  }
+  m.descriptor.depth_m = r.get<double>();
+  m.descriptor.max_aperture_m = r.get<double>();
+  m.descriptor.height_m = r.get<double>();
+  const std::string kernel_type = r.get_string();
+  if (kernel_type != kPolyKernel) r.fail("unknown kernel '" + kernel_type + "' (expected poly)");
+  m.kernel.degree = r.get<std::int32_t>();
+  m.kernel.gamma = r.get<double>();
+  m.kernel.coef0 = r.get<double>();
+  m.kernel.C = r.get<double>();
+  m.mean = r.get_vector<float>();
+  m.basis = r.get_vector<float>();
+  m.scale = r.get_vector<float>();
+  m.support_vectors = r.get_vector<float>();
+  m.alpha = r.get_vector<double>();
+  m.rho = r.get<double>();
+  m.info.positives = r.get<std::uint64_t>();
+  m.info.negatives = r.get<std::uint64_t>();
+  m.info.seed = r.get<std::uint64_t>();
+  m.info.cv_accuracy = r.get<double>();
+  m.info.description = r.get_string();
+  r.expect_end();
+  const std::string problem = model_problem(m);
+  if (!problem.empty()) r.fail("inconsistent: " + problem);
+  return m;
+}
+
+}  // namespace antipode

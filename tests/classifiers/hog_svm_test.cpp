@@ -1,0 +1,187 @@
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+
+#include <gtest/gtest.h>
+
+#include "antipode/core/error.hpp"
+#include "antipode/core/random.hpp"
+#include "antipode/grasp/hand_image.hpp"
+#include "antipode/grasp/svm_model.hpp"
+#include "antipode/grasp/svm_training.hpp"
+#include "antipode/interfaces/classifier.hpp"
+#include "antipode/plugin/plugin_host.hpp"
+#include "support/error_of.hpp"
+
+namespace antipode {
+namespace {
+
+namespace fs = std::filesystem;
+using testing::error_of;
+
+// Points in hand coordinates: two surfaces across the closing region (a grasp) or one.
+std::vector<Eigen::Vector3d> toy_points(bool positive, RandomStream& random) {
+  const double start_m = random.uniform(0.0, 0.03);
+  std::vector<double> lines_m;
+  if (positive) {
+    const double width_m = random.uniform(0.02, 0.05);
+    const double centre_m = random.uniform(-0.01, 0.01);
+    lines_m = {centre_m - width_m / 2, centre_m + width_m / 2};
+  } else {
+    lines_m = {random.uniform(-0.03, 0.03)};
+  }
+  std::vector<Eigen::Vector3d> points;
+  for (const double y : lines_m) {
+    for (double x = start_m; x < 0.06; x += 0.001) {
+      points.emplace_back(x, y + random.uniform(-0.001, 0.001), 0.0);
+    }
+  }
+  return points;
+}
+
+// `count` toy hands, each at its own place and orientation, sharing one cloud.
+struct ToyHands {
+  HandSet set;
+  std::vector<bool> positive;
+};
+
+ToyHands toy_hands(std::size_t count, std::uint64_t seed) {
+  RandomStream random(seed);
+  auto cloud = std::make_shared<Cloud>();
+  ToyHands toy;
+  for (std::size_t i = 0; i < count; ++i) {
+    const bool positive = i % 2 == 0;
+    Hand hand;
+    hand.X_FrameHand = Eigen::Translation3d(0.0, 0.0, static_cast<double>(i)) *
+                       Eigen::AngleAxisd(0.1 * static_cast<double>(i), Eigen::Vector3d::UnitZ());
+    hand.sample_index = static_cast<std::int32_t>(i);
+    for (const Eigen::Vector3d& p : toy_points(positive, random)) {
+      cloud->points_m.push_back((hand.X_FrameHand * p).cast<float>());
+      hand.closing_points.push_back(static_cast<std::int32_t>(cloud->size() - 1));
+    }
+    toy.set.hands.push_back(hand);
+    toy.positive.push_back(positive);
+  }
+  toy.set.cloud = cloud;
+  return toy;
+}
+
+std::string model_dir() { return (fs::temp_directory_path() / "antipode_hog_svm_test").string(); }
+
+// A model trained on toy hands, saved once in model_dir()/models/toy.model.
+const SvmModel& toy_model() {
+  static const SvmModel model = [] {
+    const ToyHands toy = toy_hands(200, 1);
+    const auto descriptors = hand_descriptors(toy.set, HandGeometry{}, {}, 2);
+    TrainingSet set;
+    for (std::size_t i = 0; i < descriptors.size(); ++i) {
+      set.add(descriptors[i], toy.positive[i], static_cast<std::int32_t>(i), 0);
+    }
+    SvmTrainingOptions options;
+    options.pca_components = 24;
+    options.c_values = {10.0};
+    options.folds = 0;
+    SvmModel trained = train_svm(set, options, HandImageOptions{}, HandGeometry{});
+    fs::create_directories(model_dir() + "/models");
+    trained.save(model_dir() + "/models/toy.model");
+    return trained;
+  }();
+  return model;
+}
+
+class HogSvmTest : public ::testing::Test {
+ protected:
+  HogSvmTest() : host_(std::vector<std::string>{}) {
+    host_.load_library(std::string(ANTIPODE_TEST_PLUGIN_DIR) + "/" +
+                       plugin_file_name("hog_svm_classifier"));
+    toy_model();
+  }
+
+  std::shared_ptr<Classifier> create(const std::string& yaml,
+                                     const std::string& file = "tree.yaml") {
+    return std::dynamic_pointer_cast<Classifier>(host_.create(
+        "hog_svm_classifier", Parameters(YAML::Load(yaml), "component 'classifier'", file)));
+  }
+
+  std::string model_yaml() const { return "model: " + model_dir() + "/models/toy.model"; }
+
+  PluginHost host_;
+};
+
+TEST_F(HogSvmTest, ScoresAreTheModelsDecisionValuesAndLabelsFollowTheThreshold) {
+  ASSERT_EQ(host_.kind_of("hog_svm_classifier"), ComponentKind::kClassifier);
+  const ToyHands toy = toy_hands(60, 2);
+  HandSet set = toy.set;
+  create(model_yaml())->classify(set);
+  const auto expected =
+      toy_model().decision_values(hand_descriptors(toy.set, HandGeometry{}, {}, 1), 1);
+  ASSERT_EQ(set.hands.size(), toy.set.hands.size());
+  int right = 0;
+  for (std::size_t i = 0; i < set.hands.size(); ++i) {
+    const Hand& hand = set.hands[i];
+    EXPECT_EQ(hand.score, expected[i]) << i;
+    EXPECT_EQ(hand.sample_index, toy.set.hands[i].sample_index);  // order kept
+    EXPECT_EQ(hand.label, hand.score >= 0.0 ? HandLabel::kPositive : HandLabel::kNegative);
+    EXPECT_EQ(hand.rejection, hand.score >= 0.0 ? Rejection::kNone : Rejection::kLowScore);
+    right += (hand.label == HandLabel::kPositive) == toy.positive[i];
+  }
+  EXPECT_GE(right, 58);  // held-out hands at new poses
+  HandSet strict = toy.set;
+  create(model_yaml() + "\nthreshold: 1e9\nthreads: 1")->classify(strict);
+  for (std::size_t i = 0; i < strict.hands.size(); ++i) {
+    EXPECT_EQ(strict.hands[i].label, HandLabel::kNegative);
+    EXPECT_EQ(strict.hands[i].score, set.hands[i].score);  // any thread count
+  }
+  HandSet empty;
+  EXPECT_NO_THROW(create(model_yaml())->classify(empty));
+}
+
+TEST_F(HogSvmTest, RelativeModelPathsAreFoundBesideTheTreeFile) {
+  const ToyHands toy = toy_hands(4, 3);
+  for (const std::string tree : {"/trees/x.yaml", "/models/x.yaml", "/x.yaml"}) {
+    HandSet set = toy.set;
+    create("model: models/toy.model", model_dir() + tree)->classify(set);
+    EXPECT_NE(set.hands[0].label, HandLabel::kUnknown) << tree;
+  }
+}
+
+TEST_F(HogSvmTest, BadModelsAndParametersAreErrorsAtTheirKeys) {
+  const std::string missing = error_of([&] { create("threads: 1\nmodel: nowhere.model"); });
+  EXPECT_NE(missing.find("tree.yaml:2:1: parameter 'model': nowhere.model"), std::string::npos)
+      << missing;
+  EXPECT_NE(missing.find("cannot open classifier model file"), std::string::npos) << missing;
+  EXPECT_NE(missing.find("antipode train"), std::string::npos) << missing;
+  const std::string corrupt_path = model_dir() + "/corrupt.model";
+  {
+    std::ifstream in(model_dir() + "/models/toy.model", std::ios::binary);
+    std::vector<char> bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    bytes[bytes.size() / 3] = static_cast<char>(bytes[bytes.size() / 3] ^ 1);
+    std::ofstream(corrupt_path, std::ios::binary)
+        .write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
+  }
+  const std::string corrupt = error_of([&] { create("model: " + corrupt_path); });
+  EXPECT_NE(corrupt.find("tree.yaml:1:1:"), std::string::npos) << corrupt;
+  EXPECT_NE(corrupt.find("corrupted (checksum mismatch)"), std::string::npos) << corrupt;
+  EXPECT_NE(error_of([&] {
+              create(model_yaml() + "\nthreshhold: 1");
+            }).find("unknown parameter 'threshhold'"),
+            std::string::npos);
+  EXPECT_NE(error_of([&] {
+              create(model_yaml() + "\nthreads: -1");
+            }).find("parameter 'threads' must be at least 0, got -1"),
+            std::string::npos);
+  EXPECT_NE(error_of([&] { create(model_yaml() + "\nthreshold: .nan"); }).find("finite"),
+            std::string::npos);
+}
+
+TEST_F(HogSvmTest, AHandSetOfAnotherGeometryIsRefused) {
+  HandSet set = toy_hands(3, 4).set;
+  set.geometry.depth_m = 0.05;
+  const std::string error = error_of([&] { create(model_yaml())->classify(set); });
+  EXPECT_NE(error.find("toy.model was trained for a 0.06 m deep"), std::string::npos) << error;
+  EXPECT_NE(error.find("this hand set has a 0.05 m deep"), std::string::npos) << error;
+}
+
+}  // namespace
+}  // namespace antipode

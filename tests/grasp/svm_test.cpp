@@ -1,0 +1,410 @@
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+
+#include <gtest/gtest.h>
+#include <opencv2/core.hpp>
+#include <opencv2/ml.hpp>
+
+#include "antipode/core/binary_file.hpp"
+#include "antipode/core/error.hpp"
+#include "antipode/core/random.hpp"
+#include "antipode/grasp/hand_image.hpp"
+#include "antipode/grasp/svm_model.hpp"
+#include "antipode/grasp/svm_training.hpp"
+#include "antipode/grasp/training_set.hpp"
+#include "support/error_of.hpp"
+
+namespace antipode {
+namespace {
+
+namespace fs = std::filesystem;
+using testing::error_of;
+
+// The descriptor of a synthetic grasp hypothesis image: a positive example sees an object's
+// surface on both sides of the closing region (two lines along the approach), a negative one
+// a single surface somewhere across it.
+std::vector<float> toy_descriptor(bool positive, RandomStream& random) {
+  Cloud cloud;
+  Hand hand;  // at the origin: hand coordinates are cloud coordinates
+  const double start_m = random.uniform(0.0, 0.03);
+  std::vector<double> lines_m;
+  if (positive) {
+    const double width_m = random.uniform(0.02, 0.05);
+    const double centre_m = random.uniform(-0.01, 0.01);
+    lines_m = {centre_m - width_m / 2, centre_m + width_m / 2};
+  } else {
+    lines_m = {random.uniform(-0.03, 0.03)};
+  }
+  for (const double y : lines_m) {
+    for (double x = start_m; x < 0.06; x += 0.001) {
+      cloud.points_m.emplace_back(static_cast<float>(x),
+                                  static_cast<float>(y + random.uniform(-0.001, 0.001)), 0.0f);
+      hand.closing_points.push_back(static_cast<std::int32_t>(cloud.size() - 1));
+    }
+  }
+  return hog_descriptor(hand_image(cloud, hand, HandGeometry{}));
+}
+
+// `hands` hands of three descriptors each (as C1, C2, C12), alternately positive.
+TrainingSet toy_set(std::size_t hands, std::uint64_t seed) {
+  RandomStream random(seed);
+  TrainingSet set;
+  for (std::size_t h = 0; h < hands; ++h) {
+    const bool positive = random.uniform() < 0.5;
+    for (int view = 0; view < 3; ++view) {
+      set.add(toy_descriptor(positive, random), positive, static_cast<std::int32_t>(h),
+              static_cast<std::int32_t>(h % 7));
+    }
+  }
+  return set;
+}
+
+SvmTrainingOptions small_options() {
+  SvmTrainingOptions o;
+  o.pca_components = 24;
+  o.c_values = {1.0, 10.0};
+  o.folds = 3;
+  o.seed = 5;
+  o.threads = 2;
+  return o;
+}
+
+const TrainingSet& training() {
+  static const TrainingSet set = toy_set(80, 1);
+  return set;
+}
+
+const TrainingSet& held_out() {
+  static const TrainingSet set = toy_set(60, 2);
+  return set;
+}
+
+const SvmModel& trained() {
+  static const SvmModel model =
+      train_svm(training(), small_options(), HandImageOptions{}, HandGeometry{});
+  return model;
+}
+
+std::string temp_path(const std::string& name) {
+  return (fs::temp_directory_path() / ("antipode_svm_test_" + name)).string();
+}
+
+std::vector<char> bytes_of(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  return std::vector<char>((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+}
+
+void write_bytes(const std::string& path, const std::vector<char>& bytes) {
+  std::ofstream out(path, std::ios::binary | std::ios::trunc);
+  out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
+}
+
+// Header: magic (8), version (4), payload size (8), FNV-1a 64 of the payload (8).
+constexpr std::size_t kHeaderBytes = 28;
+
+// Rewrites the checksum so that an edited payload passes the container's check.
+void fix_checksum(std::vector<char>& bytes) {
+  std::uint64_t hash = 14695981039346656037ULL;
+  for (std::size_t i = kHeaderBytes; i < bytes.size(); ++i) {
+    hash ^= static_cast<unsigned char>(bytes[i]);
+    hash *= 1099511628211ULL;
+  }
+  std::memcpy(bytes.data() + 20, &hash, sizeof(hash));
+}
+
+std::size_t find(const std::vector<char>& bytes, const std::string& text) {
+  const auto it = std::search(bytes.begin(), bytes.end(), text.begin(), text.end());
+  return static_cast<std::size_t>(it - bytes.begin());
+}
+
+TEST(SvmTest, LearnsASeparableToyProblem) {
+  const auto start = std::chrono::steady_clock::now();
+  const SvmModel& model = trained();
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  std::printf("trained on %zu descriptors in %.2f s: %zu components, %zu support vectors\n",
+              training().size(), seconds, model.components(), model.support_vector_count());
+  EXPECT_EQ(model.info.positives + model.info.negatives, training().size());
+  EXPECT_EQ(model.info.positives, training().positives());
+  EXPECT_GE(model.info.cv_accuracy, 0.95);
+  EXPECT_LE(model.components(), 24u);
+  const ConfusionMatrix confusion = evaluate(model, held_out(), 2);
+  EXPECT_EQ(confusion.total(), held_out().size());
+  EXPECT_GE(confusion.accuracy(), 0.97);
+  EXPECT_GT(confusion.tp, 0u);
+  EXPECT_GT(confusion.tn, 0u);
+}
+
+TEST(SvmTest, DecisionValuesMatchOpenCvsPredict) {
+  const SvmModel& model = trained();
+  const TrainingSet& set = training();
+  const std::vector<float> z = model.reduce(set.features.data(), set.size(), set.dimension, 2);
+  cv::Mat samples(static_cast<int>(set.size()), static_cast<int>(model.components()), CV_32F,
+                  const_cast<float*>(z.data()));
+  cv::Mat responses(static_cast<int>(set.size()), 1, CV_32S);
+  for (std::size_t i = 0; i < set.size(); ++i)
+    responses.at<int>(static_cast<int>(i)) = set.labels[i];
+  const cv::Ptr<cv::ml::SVM> svm = cv::ml::SVM::create();
+  svm->setType(cv::ml::SVM::C_SVC);
+  svm->setKernel(cv::ml::SVM::POLY);
+  svm->setDegree(model.kernel.degree);
+  svm->setGamma(model.kernel.gamma);
+  svm->setCoef0(model.kernel.coef0);
+  svm->setC(model.kernel.C);
+  svm->setTermCriteria(
+      cv::TermCriteria(cv::TermCriteria::MAX_ITER + cv::TermCriteria::EPS, 10000000, 1e-3));
+  svm->train(cv::ml::TrainData::create(samples, cv::ml::ROW_SAMPLE, responses));
+  const TrainingSet& test = held_out();
+  const std::vector<double> ours =
+      model.decision_values(test.features.data(), test.size(), test.dimension, 2);
+  const std::vector<float> test_z =
+      model.reduce(test.features.data(), test.size(), test.dimension, 1);
+  const std::vector<double> from_reduced =
+      model.decision_values_reduced(test_z.data(), test.size());
+  double largest = 0.0;
+  for (const double v : ours) largest = std::max(largest, std::abs(v));
+  for (std::size_t i = 0; i < test.size(); ++i) {
+    const cv::Mat row(1, static_cast<int>(model.components()), CV_32F,
+                      const_cast<float*>(test_z.data() + i * model.components()));
+    const float raw = svm->predict(row, cv::noArray(), cv::ml::StatModel::RAW_OUTPUT);
+    const float label = svm->predict(row);
+    // OpenCV's raw value is positive for its first class (-1): ours is its negation.
+    EXPECT_NEAR(ours[i], -raw, 1e-4 * std::max(1.0, largest)) << i;
+    EXPECT_EQ(ours[i] > 0.0, label > 0.0f) << i;
+    EXPECT_NEAR(from_reduced[i], ours[i], 1e-9 * std::max(1.0, largest)) << i;
+  }
+}
+
+TEST(SvmTest, DecisionValuesDoNotDependOnThreadsOrBatching) {
+  const SvmModel& model = trained();
+  const TrainingSet& set = held_out();
+  const auto one = model.decision_values(set.features.data(), set.size(), set.dimension, 1);
+  const auto two = model.decision_values(set.features.data(), set.size(), set.dimension, 2);
+  EXPECT_EQ(one, two);
+  // A row alone gives the value it has in a batch (fixed, padded blocks).
+  for (const std::size_t i : {std::size_t{0}, std::size_t{130}, set.size() - 1}) {
+    const auto alone = model.decision_values(set.row(i), 1, set.dimension, 1);
+    EXPECT_EQ(alone[0], one[i]) << i;
+  }
+  std::vector<std::vector<float>> rows;
+  for (std::size_t i = 0; i < set.size(); ++i)
+    rows.emplace_back(set.row(i), set.row(i) + set.dimension);
+  EXPECT_EQ(model.decision_values(rows, 2), one);
+  EXPECT_TRUE(model.decision_values(nullptr, 0, set.dimension, 2).empty());
+  const std::string wrong = error_of([&] { model.decision_values(set.row(0), 1, 100, 1); });
+  EXPECT_NE(wrong.find("descriptors of 100 numbers, but the model takes 3564"), std::string::npos)
+      << wrong;
+}
+
+TEST(SvmTest, SaveLoadRoundTripKeepsValuesAndBytes) {
+  const SvmModel& model = trained();
+  const std::string path = temp_path("round_trip.model");
+  const std::string again = temp_path("round_trip_again.model");
+  model.save(path);
+  const SvmModel loaded = SvmModel::load(path);
+  loaded.save(again);
+  EXPECT_EQ(bytes_of(path), bytes_of(again));
+  const TrainingSet& set = held_out();
+  EXPECT_EQ(loaded.decision_values(set.features.data(), set.size(), set.dimension, 2),
+            model.decision_values(set.features.data(), set.size(), set.dimension, 2));
+  EXPECT_EQ(loaded.info.cv_accuracy, model.info.cv_accuracy);
+  EXPECT_EQ(loaded.descriptor.name, "occupancy-hog-1");
+  EXPECT_EQ(loaded.kernel.C, model.kernel.C);
+  const auto size = fs::file_size(path);
+  std::printf("model: %zu components, %zu support vectors, %ju bytes\n", model.components(),
+              model.support_vector_count(), static_cast<std::uintmax_t>(size));
+  fs::remove(path);
+  fs::remove(again);
+}
+
+TEST(SvmTest, DamagedModelFilesAreClearErrors) {
+  const std::string path = temp_path("damaged.model");
+  trained().save(path);
+  const std::vector<char> good = bytes_of(path);
+  auto load_error = [&](std::vector<char> bytes) {
+    write_bytes(path, bytes);
+    return error_of([&] { SvmModel::load(path); });
+  };
+  std::vector<char> flipped = good;
+  flipped[good.size() / 2] = static_cast<char>(flipped[good.size() / 2] ^ 0x10);
+  EXPECT_NE(load_error(flipped).find("corrupted (checksum mismatch)"), std::string::npos);
+  const std::vector<char> truncated(good.begin(), good.end() - 100);
+  EXPECT_NE(load_error(truncated).find("truncated"), std::string::npos);
+  std::vector<char> foreign = good;
+  std::memcpy(foreign.data(), "ANTPDATA", 8);
+  const std::string foreign_error = load_error(foreign);
+  EXPECT_NE(foreign_error.find("not an antipode classifier model file"), std::string::npos)
+      << foreign_error;
+  EXPECT_NE(foreign_error.find(path), std::string::npos);
+  std::vector<char> rbf = good;
+  std::memcpy(rbf.data() + find(rbf, "poly"), "rbf_", 4);
+  fix_checksum(rbf);
+  EXPECT_NE(load_error(rbf).find("unknown kernel 'rbf_'"), std::string::npos);
+  std::vector<char> nan = good;
+  const double not_a_number = std::nan("");
+  // The file ends with rho, positives, negatives, seed, cv accuracy and the (empty)
+  // description's length, 8 bytes each.
+  std::memcpy(nan.data() + nan.size() - 48, &not_a_number, sizeof(double));
+  fix_checksum(nan);
+  EXPECT_NE(load_error(nan).find("non-finite number"), std::string::npos) << load_error(nan);
+  fs::remove(path);
+  EXPECT_NE(error_of([&] { SvmModel::load(path); }).find("cannot open classifier model file"),
+            std::string::npos);
+}
+
+TEST(SvmTest, IncompatibleDescriptorsOrHandsAreRefusedNamingBoth) {
+  const SvmModel& model = trained();
+  EXPECT_EQ(error_of([&] { model.check_compatible(HandImageOptions{}, HandGeometry{}); }), "");
+  HandGeometry deeper;
+  deeper.depth_m = 0.08;
+  const std::string hand_error =
+      error_of([&] { model.check_compatible(HandImageOptions{}, deeper, "model x.svm"); });
+  EXPECT_NE(hand_error.find("model x.svm was trained for a 0.06 m deep, 0.072 m wide"),
+            std::string::npos)
+      << hand_error;
+  EXPECT_NE(hand_error.find("this hand set has a 0.08 m deep, 0.072 m wide"), std::string::npos);
+  EXPECT_NE(hand_error.find("antipode train"), std::string::npos);
+  HandImageOptions coarse;
+  coarse.cell_px = 4;
+  const std::string image_error = error_of([&] { model.check_compatible(coarse, HandGeometry{}); });
+  EXPECT_NE(image_error.find("HOG cells of 6 px"), std::string::npos) << image_error;
+  EXPECT_NE(image_error.find("HOG cells of 4 px"), std::string::npos) << image_error;
+}
+
+TEST(SvmTest, SameSeedGivesIdenticalModelBytesForAnyThreadCount) {
+  SvmTrainingOptions one_thread = small_options();
+  one_thread.threads = 1;
+  const SvmModel again = train_svm(training(), one_thread, HandImageOptions{}, HandGeometry{});
+  const std::string a = temp_path("seed_a.model");
+  const std::string b = temp_path("seed_b.model");
+  trained().save(a);
+  again.save(b);
+  EXPECT_EQ(bytes_of(a), bytes_of(b));
+  fs::remove(a);
+  fs::remove(b);
+}
+
+TEST(SvmTest, BadTrainingInputIsAClearError) {
+  const HandImageOptions image;
+  const HandGeometry hand;
+  const SvmTrainingOptions options = small_options();
+  EXPECT_NE(error_of([&] { train_svm(TrainingSet{}, options, image, hand); }).find("empty"),
+            std::string::npos);
+  TrainingSet positives_only;
+  RandomStream random(3);
+  for (int i = 0; i < 6; ++i) positives_only.add(toy_descriptor(true, random), true, i, 0);
+  EXPECT_NE(error_of([&] {
+              train_svm(positives_only, options, image, hand);
+            }).find("only positive examples"),
+            std::string::npos);
+  TrainingSet short_rows;
+  short_rows.add({1.0f, 2.0f}, true, 0, 0);
+  short_rows.add({2.0f, 1.0f}, false, 1, 0);
+  const std::string dimension = error_of([&] { train_svm(short_rows, options, image, hand); });
+  EXPECT_NE(dimension.find("descriptors have 2 numbers"), std::string::npos) << dimension;
+  EXPECT_NE(dimension.find("gives 3564"), std::string::npos) << dimension;
+  SvmTrainingOptions no_c = options;
+  no_c.c_values.clear();
+  EXPECT_NE(error_of([&] { train_svm(training(), no_c, image, hand); }).find("no C candidates"),
+            std::string::npos);
+  SvmTrainingOptions too_many_folds = options;
+  too_many_folds.folds = 1000;
+  EXPECT_NE(error_of([&] {
+              cross_validate(training(), too_many_folds);
+            }).find("1000 folds need at least 1000 groups"),
+            std::string::npos);
+}
+
+TEST(SvmTest, FoldsKeepGroupsTogetherAndCrossValidationCountsEveryExampleOnce) {
+  const TrainingSet& set = training();
+  const std::vector<int> folds = assign_folds(set, 4, 9);
+  ASSERT_EQ(folds.size(), set.size());
+  std::vector<int> per_fold(4, 0);
+  for (std::size_t i = 0; i < set.size(); ++i) {
+    ASSERT_GE(folds[i], 0);
+    ASSERT_LT(folds[i], 4);
+    ++per_fold[static_cast<std::size_t>(folds[i])];
+    if (i > 0 && set.groups[i] == set.groups[i - 1]) {
+      EXPECT_EQ(folds[i], folds[i - 1]);
+    }
+  }
+  for (const int n : per_fold) EXPECT_EQ(n, 60);  // 80 groups of 3, dealt evenly
+  EXPECT_EQ(assign_folds(set, 4, 9), folds);
+  EXPECT_NE(assign_folds(set, 4, 10), folds);
+  SvmTrainingOptions options = small_options();
+  options.folds = 4;
+  const CrossValidationResult cv = cross_validate(set, options);
+  ASSERT_EQ(cv.points.size(), 2u);
+  for (const auto& point : cv.points) EXPECT_EQ(point.confusion.total(), set.size());
+  EXPECT_GE(cv.accuracy(), 0.95);
+  EXPECT_EQ(cv.folds, 4);
+}
+
+TEST(SvmTest, ConfusionMatrixRates) {
+  ConfusionMatrix m{6, 2, 10, 2};
+  EXPECT_DOUBLE_EQ(m.accuracy(), 0.8);
+  EXPECT_DOUBLE_EQ(m.precision(), 0.75);
+  EXPECT_DOUBLE_EQ(m.recall(), 0.75);
+  m += ConfusionMatrix{1, 0, 0, 0};
+  EXPECT_EQ(m.tp, 7u);
+  EXPECT_EQ(ConfusionMatrix{}.accuracy(), 0.0);
+  EXPECT_EQ(ConfusionMatrix{}.precision(), 0.0);
+}
+
+TEST(TrainingSetTest, SaveLoadRoundTripAndDimensionErrors) {
+  const TrainingSet set = toy_set(5, 4);
+  const std::string path = temp_path("set.data");
+  save_training_set(set, path);
+  const TrainingSet loaded = load_training_set(path);
+  EXPECT_EQ(loaded.dimension, set.dimension);
+  EXPECT_EQ(loaded.features, set.features);
+  EXPECT_EQ(loaded.labels, set.labels);
+  EXPECT_EQ(loaded.groups, set.groups);
+  EXPECT_EQ(loaded.sources, set.sources);
+  EXPECT_EQ(loaded.next_group(), 5);
+  TrainingSet copy = set;
+  const std::string mismatch = error_of([&] { copy.add({1.0f, 2.0f}, true, 9, 0); });
+  EXPECT_NE(mismatch.find("descriptor of 2 numbers, but the set holds descriptors of 3564"),
+            std::string::npos)
+      << mismatch;
+  EXPECT_NE(
+      error_of([&] { copy.add(std::vector<float>(3564, NAN), true, 9, 0); }).find("non-finite"),
+      std::string::npos);
+  std::vector<char> bytes = bytes_of(path);
+  bytes.resize(bytes.size() - 1);
+  write_bytes(path, bytes);
+  const std::string truncated = error_of([&] { load_training_set(path); });
+  EXPECT_NE(truncated.find("training set file: truncated"), std::string::npos) << truncated;
+  EXPECT_NE(truncated.find(path), std::string::npos);
+  const std::string model_error = error_of([&] { SvmModel::load(path); });
+  EXPECT_NE(model_error.find("not an antipode classifier model file"), std::string::npos)
+      << model_error;
+  fs::remove(path);
+}
+
+TEST(BinaryFileTest, ReaderRefusesFutureVersionsAndOverlongLengths) {
+  const std::string path = temp_path("binary.bin");
+  BinaryWriter writer("ANTPTEST", 3);
+  writer.put<std::uint64_t>(1000);  // a vector length with no elements behind it
+  writer.write(path);
+  EXPECT_NE(error_of([&] {
+              BinaryReader(path, "ANTPTEST", 2, "test");
+            }).find("format version 3, but this antipode reads versions 1-2"),
+            std::string::npos);
+  BinaryReader reader(path, "ANTPTEST", 3, "test");
+  EXPECT_NE(error_of([&] { reader.get_vector<double>(); }).find("runs past the end"),
+            std::string::npos);
+  BinaryReader short_reader(path, "ANTPTEST", 3, "test");
+  short_reader.get<std::uint32_t>();
+  EXPECT_NE(error_of([&] { short_reader.expect_end(); }).find("4 unexpected bytes at the end"),
+            std::string::npos);
+  fs::remove(path);
+}
+
+}  // namespace
+}  // namespace antipode
