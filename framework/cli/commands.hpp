@@ -28,6 +28,26 @@ struct DetectOptions {
   std::string hands_entry = "grasps";  ///< the entry whose hands are summarised
 };
 
+/// `antipode train` (trees/train.yaml) and `antipode eval-classifier`
+/// (trees/eval_classifier.yaml): trees run with file-name entries filled from the arguments.
+struct TrainOptions {
+  std::string tree_path = "trees/train.yaml";
+  std::string model_path = "models/hog_svm.model";  ///< entry model_file
+  std::string dataset_path;  ///< entry dataset_file: keep the examples ("" = don't)
+  std::vector<std::string> set;
+  std::uint64_t seed = 0;
+  bool verbose = false;
+};
+
+struct EvalOptions {
+  std::string tree_path = "trees/eval_classifier.yaml";
+  std::string model_path = "models/hog_svm.model";  ///< entry model_file
+  std::string report_path;                          ///< entry report_file ("" = none)
+  std::vector<std::string> set;
+  std::uint64_t seed = 0;
+  bool verbose = false;
+};
+
 struct SceneOptions {
   std::string scene_path;
   std::string tree_path = "trees/scene.yaml";
@@ -41,6 +61,8 @@ struct SceneOptions {
 int run_command(const RunOptions& options);
 int scene_command(const SceneOptions& options);
 int detect_command(const DetectOptions& options);
+int train_command(const TrainOptions& options);
+int eval_classifier_command(const EvalOptions& options);
 int validate_command(const std::string& tree_path);
 int plugins_command();
 

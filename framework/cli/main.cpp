@@ -16,6 +16,8 @@ constexpr const char* kExamples = R"(Examples:
   antipode validate trees/detect.yaml
   antipode detect ../shared/data/clouds/table_mug.pcd --out grasps.json --image grasps.png
   antipode scene scenes/pile_procedural.yaml --image scene.png
+  antipode train --out my.model --dataset examples.data
+  antipode eval-classifier --model my.model --report eval.json
   antipode plugins
 
 Exit codes: 0 success, 1 the tree returned FAILURE, 2 invalid input (command line, tree,
@@ -25,6 +27,8 @@ struct Commands {
   antipode::cli::RunOptions run;
   antipode::cli::DetectOptions detect;
   antipode::cli::SceneOptions scene;
+  antipode::cli::TrainOptions train;
+  antipode::cli::EvalOptions eval;
   std::string validate_path;
 };
 
@@ -63,10 +67,39 @@ void add_scene(CLI::App& app, Commands& commands) {
   scene->add_flag("-v,--verbose", options.verbose, "Print every node's status changes");
 }
 
+void add_train(CLI::App& app, Commands& commands) {
+  auto& options = commands.train;
+  CLI::App* train = app.add_subcommand(
+      "train", "Train the HOG + SVM grasp classifier in the simulated cell (trees/train.yaml)");
+  train->add_option("--out", options.model_path, "Model file to write")->capture_default_str();
+  train->add_option("--dataset", options.dataset_path, "Also keep the examples in this file");
+  train->add_option("--tree", options.tree_path, "Training tree")->capture_default_str();
+  train->add_option("--set", options.set, "Override, as for 'run' (repeatable)");
+  train->add_option("--seed", options.seed, "Seed of every random stream (default 0)");
+  train->add_flag("-v,--verbose", options.verbose, "Print every node's status changes");
+}
+
+void add_eval(CLI::App& app, Commands& commands) {
+  auto& options = commands.eval;
+  CLI::App* eval = app.add_subcommand(
+      "eval-classifier",
+      "Measure a classifier model on novel objects (trees/eval_classifier.yaml)");
+  eval->add_option("--model", options.model_path, "Model file")->capture_default_str();
+  eval->add_option("--report", options.report_path, "Write the numbers as JSON");
+  eval->add_option("--tree", options.tree_path, "Evaluation tree")->capture_default_str();
+  eval->add_option("--set", options.set, "Override, as for 'run' (repeatable)");
+  eval->add_option("--seed", options.seed, "Seed of every random stream (default 0)");
+  eval->add_flag("-v,--verbose", options.verbose, "Print every node's status changes");
+}
+
 int dispatch(const CLI::App& app, const Commands& commands) {
   if (app.got_subcommand("run")) return antipode::cli::run_command(commands.run);
   if (app.got_subcommand("detect")) return antipode::cli::detect_command(commands.detect);
   if (app.got_subcommand("scene")) return antipode::cli::scene_command(commands.scene);
+  if (app.got_subcommand("train")) return antipode::cli::train_command(commands.train);
+  if (app.got_subcommand("eval-classifier")) {
+    return antipode::cli::eval_classifier_command(commands.eval);
+  }
   if (app.got_subcommand("validate")) {
     return antipode::cli::validate_command(commands.validate_path);
   }
@@ -86,6 +119,8 @@ int main(int argc, char** argv) {
   add_run(app, commands);
   add_detect(app, commands);
   add_scene(app, commands);
+  add_train(app, commands);
+  add_eval(app, commands);
   CLI::App* validate = app.add_subcommand("validate", "Check a tree file without running it");
   validate->add_option("tree", commands.validate_path, "YAML tree file")->required();
   app.add_subcommand("plugins", "List plugin libraries found, loaded and refused, and why");

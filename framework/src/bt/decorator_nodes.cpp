@@ -81,8 +81,11 @@ void Retry::halt() {
 }
 
 NodeManifest Repeat::manifest() {
-  return decorator("Repeat", "Runs its child num_cycles times while it succeeds.",
-                   {input_port<int>("num_cycles", "how many successful runs; -1 = forever")});
+  return decorator(
+      "Repeat", "Runs its child num_cycles times while it succeeds.",
+      {input_port<int>("num_cycles", "how many successful runs; -1 = forever"),
+       input_port<std::string>("progress", std::string{},
+                               "a label: report each finished run as progress of this")});
 }
 
 Status Repeat::tick() {
@@ -97,10 +100,19 @@ Status Repeat::tick() {
       return Status::kFailure;
     }
     ++cycles_;
+    report_progress(cycles);
     if (cycles == -1) return Status::kRunning;  // unbounded: let the tree breathe
   }
   cycles_ = 0;
   return Status::kSuccess;
+}
+
+void Repeat::report_progress(int cycles) const {
+  if (cycles <= 0) return;
+  const auto label = get_input<std::string>("progress");
+  if (!label.empty()) {
+    progress(static_cast<std::size_t>(cycles_), static_cast<std::size_t>(cycles), label);
+  }
 }
 
 void Repeat::halt() {

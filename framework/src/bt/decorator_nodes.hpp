@@ -60,6 +60,7 @@ class Repeat : public DecoratorNode {
   void halt() override;
 
  private:
+  void report_progress(int cycles) const;
   int cycles_ = 0;
 };
 

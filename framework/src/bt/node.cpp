@@ -235,6 +235,12 @@ RandomStream Node::random() const {
   return RandomStream(seed).derive(hash_path(config_.path)).derive(run_count_);
 }
 
+void Node::progress(std::size_t done, std::size_t total, const std::string& what) const {
+  if (config_.context && config_.context->progress_sink) {
+    config_.context->progress_sink(*this, done, total, what);
+  }
+}
+
 void Node::log(const std::string& message) const {
   if (config_.context && config_.context->log_sink) {
     config_.context->log_sink(*this, message);

@@ -96,6 +96,8 @@ void Tree::remove_observer(TreeObserver* observer) {
 
 void Tree::set_log_sink(LogSink sink) { context_->log_sink = std::move(sink); }
 
+void Tree::set_progress_sink(ProgressSink sink) { context_->progress_sink = std::move(sink); }
+
 void Tree::visit(const std::function<void(const Node&, int)>& visitor) const {
   visit_node(*root_, 0, visitor);
 }

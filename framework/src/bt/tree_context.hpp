@@ -21,6 +21,7 @@ struct TreeContext {
   std::vector<TreeObserver*> observers;
   std::vector<std::shared_ptr<TreeObserver>> owned_observers;
   LogSink log_sink;
+  ProgressSink progress_sink;
   /// The plugin libraries whose code the tree's nodes run; released after the nodes and
   /// blackboards (every node holds this context, and the Tree drops it last).
   std::vector<std::shared_ptr<const void>> libraries;

@@ -26,8 +26,7 @@ bool same_descriptor(const HandImageOptions& a, const HandImageOptions& b) {
 }
 
 bool same_geometry(const HandGeometry& a, const HandGeometry& b) {
-  return a.depth_m == b.depth_m && a.max_aperture_m == b.max_aperture_m &&
-         a.height_m == b.height_m;
+  return a.depth_m == b.depth_m && a.max_aperture_m == b.max_aperture_m && a.height_m == b.height_m;
 }
 
 // The closing points of `hand` seen from `view` (-1: all of them).
@@ -44,8 +43,9 @@ std::vector<std::int32_t> points_seen_from(const Cloud& cloud, const Hand& hand,
 void check_views(const Cloud& cloud, const ExampleOptions& options) {
   for (const int view : options.single_views) {
     if (view < 0 || view >= 32 || static_cast<std::size_t>(view) >= cloud.view_origins_m.size()) {
-      throw Error("training examples: view " + std::to_string(view) + " is not in the cloud (it has " +
-                  std::to_string(cloud.view_origins_m.size()) + " view(s))");
+      throw Error("training examples: view " + std::to_string(view) +
+                  " is not in the cloud (it has " + std::to_string(cloud.view_origins_m.size()) +
+                  " view(s))");
     }
   }
   if (options.single_views.empty() && !options.all_views) {
@@ -68,6 +68,30 @@ void adopt_or_check(TrainingSet& out, const HandImageOptions& descriptor,
   }
 }
 
+// The hands of each label that make examples: all, or max_per_label drawn at random.
+std::vector<std::size_t> chosen_hands(const HandSet& set, std::size_t max_per_label,
+                                      RandomStream& random, ExampleCounts& counts) {
+  std::vector<std::size_t> chosen;
+  for (const HandLabel label : {HandLabel::kPositive, HandLabel::kNegative}) {
+    std::vector<std::size_t> hands;
+    for (std::size_t h = 0; h < set.hands.size(); ++h) {
+      if (set.hands[h].label == label) hands.push_back(h);
+    }
+    if (max_per_label > 0 && hands.size() > max_per_label) {
+      for (std::size_t i = 0; i < max_per_label; ++i) {  // partial Fisher-Yates
+        std::swap(hands[i], hands[i + random.below(hands.size() - i)]);
+      }
+      counts.dropped_hands += hands.size() - max_per_label;
+      hands.resize(max_per_label);
+    }
+    (label == HandLabel::kPositive ? counts.positive_hands : counts.negative_hands) = hands.size();
+    chosen.insert(chosen.end(), hands.begin(), hands.end());
+  }
+  std::sort(chosen.begin(), chosen.end());
+  counts.skipped_hands = set.hands.size() - chosen.size() - counts.dropped_hands;
+  return chosen;
+}
+
 }  // namespace
 
 HandSet with_closing_points_in(const HandSet& set, std::shared_ptr<const Cloud> reference,
@@ -81,8 +105,8 @@ HandSet with_closing_points_in(const HandSet& set, std::shared_ptr<const Cloud> 
                       [&](const tbb::blocked_range<std::size_t>& range) {
                         for (std::size_t h = range.begin(); h != range.end(); ++h) {
                           Hand& hand = out.hands[h];
-                          hand.closing_points = points_in_closing_region(
-                              body, hand.X_FrameHand, reference->points_m);
+                          hand.closing_points =
+                              points_in_closing_region(body, hand.X_FrameHand, reference->points_m);
                           hand.sample_index = -1;
                         }
                       });
@@ -91,7 +115,7 @@ HandSet with_closing_points_in(const HandSet& set, std::shared_ptr<const Cloud> 
 }
 
 ExampleCounts add_examples(const HandSet& labelled, const ExampleOptions& options,
-                           std::int32_t source, TrainingSet& out) {
+                           std::int32_t source, RandomStream random, TrainingSet& out) {
   ExampleCounts counts;
   if (labelled.hands.empty()) return counts;
   if (labelled.cloud == nullptr) throw Error("training examples: the hand set has no cloud");
@@ -103,14 +127,9 @@ ExampleCounts add_examples(const HandSet& labelled, const ExampleOptions& option
   if (options.all_views) views.push_back(-1);
   HandSet images{labelled.cloud, {}, labelled.geometry};
   std::vector<std::pair<std::size_t, bool>> owner;  // hand index, positive
-  for (std::size_t h = 0; h < labelled.hands.size(); ++h) {
+  for (const std::size_t h : chosen_hands(labelled, options.max_hands_per_label, random, counts)) {
     const Hand& hand = labelled.hands[h];
     const bool positive = hand.label == HandLabel::kPositive;
-    if (!positive && hand.label != HandLabel::kNegative) {
-      ++counts.skipped_hands;
-      continue;
-    }
-    ++(positive ? counts.positive_hands : counts.negative_hands);
     for (const int view : views) {
       Hand seen = hand;
       seen.closing_points = points_seen_from(*labelled.cloud, hand, view);
@@ -123,8 +142,8 @@ ExampleCounts add_examples(const HandSet& labelled, const ExampleOptions& option
       hand_descriptors(images, labelled.geometry, options.descriptor, options.threads);
   const std::int32_t first_group = out.next_group();
   for (std::size_t i = 0; i < descriptors.size(); ++i) {
-    out.add(descriptors[i], owner[i].second, first_group + static_cast<std::int32_t>(owner[i].first),
-            source);
+    out.add(descriptors[i], owner[i].second,
+            first_group + static_cast<std::int32_t>(owner[i].first), source);
     ++(owner[i].second ? counts.positive_examples : counts.negative_examples);
   }
   return counts;

@@ -16,6 +16,7 @@ void register_execute_grasp(bt::NodeRegistry& registry);
 void register_write_grasps(bt::NodeRegistry& registry);
 void register_read_grasps(bt::NodeRegistry& registry);
 void register_reset_scene(bt::NodeRegistry& registry);
+void register_select_views(bt::NodeRegistry& registry);
 void register_record_outcome(bt::NodeRegistry& registry);
 
 }  // namespace antipode::pipeline

@@ -15,6 +15,7 @@ const antipode::PluginFactory kFactories[] = {
     {"node", "ExecuteGrasp", "executes a grasp in a cell", nullptr, &register_execute_grasp},
     {"node", "WriteGrasps", "writes hands to JSON", nullptr, &register_write_grasps},
     {"node", "ReadGrasps", "reads hands from JSON", nullptr, &register_read_grasps},
+    {"node", "SelectViews", "keeps the points of some views", nullptr, &register_select_views},
     {"node", "ResetScene", "rebuilds a cell's scene from a seed", nullptr, &register_reset_scene},
     {"node", "RecordOutcome", "tallies grasp outcomes", nullptr, &register_record_outcome},
 };

@@ -170,6 +170,10 @@ class Node {
   /// Sends `message` to the tree's log sink.
   void log(const std::string& message) const;
 
+  /// Reports that `done` of `total` steps of `what` are finished to the tree's progress sink
+  /// (nothing happens without one). Call it from the thread that ticks the tree.
+  void progress(std::size_t done, std::size_t total, const std::string& what) const;
+
   /// The blackboard of the tree instance this node belongs to.
   Blackboard& blackboard() const { return *config_.blackboard; }
 

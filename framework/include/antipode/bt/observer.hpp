@@ -4,6 +4,7 @@
 /// Log messages (to a log sink).
 
 #include <chrono>
+#include <cstddef>
 #include <functional>
 #include <string>
 
@@ -32,5 +33,11 @@ using Tracer = TreeObserver;
 /// Where Log nodes (and Node::log()) send messages; the default prints the message and a
 /// newline to stdout.
 using LogSink = std::function<void(const Node& node, const std::string& message)>;
+
+/// Where long-running nodes report how far they are (Node::progress()): `done` of `total`
+/// steps of `what` ("training scenes", "cross-validation"). The default ignores reports;
+/// the CLI draws a progress bar on a terminal.
+using ProgressSink = std::function<void(const Node& node, std::size_t done, std::size_t total,
+                                        const std::string& what)>;
 
 }  // namespace antipode::bt

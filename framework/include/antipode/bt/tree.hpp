@@ -55,6 +55,8 @@ class Tree {
 
   /// Where Log messages go (default: stdout, one line per message).
   void set_log_sink(LogSink sink);
+  /// Where Node::progress() reports go (default: nowhere).
+  void set_progress_sink(ProgressSink sink);
 
   /// Calls `visitor` for every node, depth first, parents before children (depth 0 = root).
   void visit(const std::function<void(const Node& node, int depth)>& visitor) const;

@@ -1,0 +1,22 @@
+#pragma once
+// The training nodes: behaviour-tree leaves that label hands, collect HOG examples, and train
+// and evaluate the SVM classifier (docs/training.md). One registration function per node.
+
+#include <memory>
+
+#include "antipode/bt/node_registry.hpp"
+#include "antipode/grasp/training_set.hpp"
+
+namespace antipode::training {
+
+/// How a training set travels between nodes: shared and appended to in place by
+/// CollectExamples (one set grows over a loop of scenes).
+using TrainingSetPtr = std::shared_ptr<TrainingSet>;
+
+void register_new_training_set(bt::NodeRegistry& registry);
+void register_label_hands(bt::NodeRegistry& registry);
+void register_collect_examples(bt::NodeRegistry& registry);
+void register_save_training_set(bt::NodeRegistry& registry);
+void register_load_training_set(bt::NodeRegistry& registry);
+
+}  // namespace antipode::training

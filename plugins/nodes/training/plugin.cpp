@@ -1,0 +1,21 @@
+// The training_nodes plugin: labelling hands, collecting examples, training and evaluating
+// the SVM classifier (docs/training.md).
+#include "antipode/plugin/abi.hpp"
+#include "nodes.hpp"
+
+namespace {
+using namespace antipode::training;
+
+const antipode::PluginFactory kFactories[] = {
+    {"node", "NewTrainingSet", "starts an empty training set", nullptr, &register_new_training_set},
+    {"node", "LabelHands", "labels hands by the near-antipodal check", nullptr,
+     &register_label_hands},
+    {"node", "CollectExamples", "appends HOG examples of labelled hands", nullptr,
+     &register_collect_examples},
+    {"node", "SaveTrainingSet", "writes a training set", nullptr, &register_save_training_set},
+    {"node", "LoadTrainingSet", "reads a training set", nullptr, &register_load_training_set},
+};
+
+}  // namespace
+
+ANTIPODE_PLUGIN("training_nodes", "0.1.0", kFactories)
