@@ -18,5 +18,7 @@ void register_label_hands(bt::NodeRegistry& registry);
 void register_collect_examples(bt::NodeRegistry& registry);
 void register_save_training_set(bt::NodeRegistry& registry);
 void register_load_training_set(bt::NodeRegistry& registry);
+void register_train_classifier(bt::NodeRegistry& registry);
+void register_evaluate_classifier(bt::NodeRegistry& registry);
 
 }  // namespace antipode::training

@@ -14,6 +14,9 @@ const antipode::PluginFactory kFactories[] = {
      &register_collect_examples},
     {"node", "SaveTrainingSet", "writes a training set", nullptr, &register_save_training_set},
     {"node", "LoadTrainingSet", "reads a training set", nullptr, &register_load_training_set},
+    {"node", "TrainClassifier", "trains the SVM classifier", nullptr, &register_train_classifier},
+    {"node", "EvaluateClassifier", "measures a classifier model", nullptr,
+     &register_evaluate_classifier},
 };
 
 }  // namespace

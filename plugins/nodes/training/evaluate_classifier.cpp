@@ -1,0 +1,95 @@
+#include <cstdio>
+#include <fstream>
+
+#include <nlohmann/json.hpp>
+
+#include "antipode/bt/action_node.hpp"
+#include "antipode/core/atomic_file.hpp"
+#include "antipode/grasp/svm_training.hpp"
+#include "nodes.hpp"
+
+namespace antipode::training {
+namespace {
+
+std::string percent(double fraction) {
+  char text[16];
+  std::snprintf(text, sizeof(text), "%.2f%%", 100.0 * fraction);
+  return text;
+}
+
+nlohmann::json report(const ConfusionMatrix& c, const TrainingSet& set, const std::string& model) {
+  return {{"model", model},
+          {"examples", set.size()},
+          {"positives", set.positives()},
+          {"negatives", set.negatives()},
+          {"accuracy", c.accuracy()},
+          {"precision", c.precision()},
+          {"recall", c.recall()},
+          {"confusion", {{"tp", c.tp}, {"fp", c.fp}, {"tn", c.tn}, {"fn", c.fn}}}};
+}
+
+/// Measures a model on labelled examples: accuracy, precision, recall, confusion matrix.
+class EvaluateClassifier final : public bt::SyncActionNode {
+ public:
+  using SyncActionNode::SyncActionNode;
+  static bt::NodeManifest manifest() {
+    return {"EvaluateClassifier",
+            bt::NodeCategory::kAction,
+            {bt::input_port<std::string>("model_file", "the model to measure"),
+             bt::input_port<TrainingSetPtr>("dataset", "labelled examples it never saw"),
+             bt::input_port<double>("threshold", 0.0, "decision value from which a grasp"),
+             bt::input_port<std::string>("report_file", std::string{},
+                                         "also write the numbers as JSON (empty: no file)"),
+             bt::input_port<int>("threads", 0, "workers (0: all cores)")},
+            0,
+            0,
+            "Measures a classifier model on labelled examples.",
+            {}};
+  }
+
+ protected:
+  bt::Status tick() override {
+    const std::string model_file = get_input<std::string>("model_file");
+    const TrainingSetPtr set = get_input<TrainingSetPtr>("dataset");
+    const SvmModel model = SvmModel::load(model_file);
+    model.check_compatible(set->descriptor, set->geometry, model_file);
+    const ConfusionMatrix c =
+        evaluate(model, *set, get_input<int>("threads"), get_input<double>("threshold"));
+    log(std::to_string(set->size()) + " examples (" + std::to_string(set->positives()) +
+        " positive, " + std::to_string(set->negatives()) + " negative): accuracy " +
+        percent(c.accuracy()) + ", precision " + percent(c.precision()) + ", recall " +
+        percent(c.recall()));
+    log("               classified grasp   classified not");
+    log("  grasp        " + column(c.tp) + column(c.fn));
+    log("  not a grasp  " + column(c.fp) + column(c.tn));
+    write_report(report(c, *set, model_file));
+    return bt::Status::kSuccess;
+  }
+
+ private:
+  static std::string column(std::uint64_t count) {
+    char text[32];
+    std::snprintf(text, sizeof(text), "%16llu   ", static_cast<unsigned long long>(count));
+    return text;
+  }
+
+  void write_report(const nlohmann::json& numbers) const {
+    const std::string file = get_input<std::string>("report_file");
+    if (file.empty()) return;
+    write_file_atomically(file, [&](const std::string& temporary) {
+      std::ofstream out(temporary);
+      out << numbers.dump(2) << '\n';
+      out.flush();
+      if (!out) throw Error("cannot write " + temporary);
+    });
+    log("report written to " + file);
+  }
+};
+
+}  // namespace
+
+void register_evaluate_classifier(bt::NodeRegistry& registry) {
+  registry.register_node<EvaluateClassifier>();
+}
+
+}  // namespace antipode::training

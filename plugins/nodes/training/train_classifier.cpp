@@ -1,0 +1,106 @@
+#include <cstdio>
+#include <filesystem>
+
+#include "antipode/bt/action_node.hpp"
+#include "antipode/grasp/svm_training.hpp"
+#include "nodes.hpp"
+
+namespace antipode::training {
+namespace {
+
+std::string percent(double fraction) {
+  char text[16];
+  std::snprintf(text, sizeof(text), "%.2f%%", 100.0 * fraction);
+  return text;
+}
+
+/// Trains the HOG + SVM classifier on a training set and writes the model file.
+class TrainClassifier final : public bt::SyncActionNode {
+ public:
+  using SyncActionNode::SyncActionNode;
+  static bt::NodeManifest manifest() {
+    const SvmTrainingOptions d;
+    return {"TrainClassifier",
+            bt::NodeCategory::kAction,
+            {bt::input_port<TrainingSetPtr>("dataset", "the examples"),
+             bt::input_port<std::string>("model_file", "where to write the model"),
+             bt::input_port<int>("degree", d.degree, "polynomial kernel degree"),
+             bt::input_port<std::vector<double>>("c_values", d.c_values,
+                                                 "soft-margin costs tried by cross-validation"),
+             bt::input_port<std::vector<double>>("gamma_values", d.gamma_values,
+                                                 "kernel scales tried; empty = 1 / components"),
+             bt::input_port<int>("components", static_cast<int>(d.pca_components),
+                                 "PCA components the descriptors are reduced to"),
+             bt::input_port<int>("folds", d.folds, "cross-validation folds (0: none)"),
+             bt::input_port<int>("threads", 0, "workers (0: all cores)"),
+             bt::input_port<std::string>("description", std::string{},
+                                         "free text stored in the model")},
+            0,
+            0,
+            "Trains the SVM grasp classifier (C chosen by cross-validation) and writes it.",
+            {}};
+  }
+
+ protected:
+  bt::Status tick() override {
+    const TrainingSetPtr set = get_input<TrainingSetPtr>("dataset");
+    const std::string file = get_input<std::string>("model_file");
+    if (file.empty()) fail("model_file", "model_file is empty");
+    const SvmTrainingOptions options = read_options(*set);
+    log("training on " + std::to_string(set->size()) + " examples (" +
+        std::to_string(set->positives()) + " positive, " + std::to_string(set->negatives()) +
+        " negative)");
+    const SvmModel model = train_svm(*set, options);
+    model.save(file);
+    log(model_summary(model, file));
+    return bt::Status::kSuccess;
+  }
+
+ private:
+  SvmTrainingOptions read_options(const TrainingSet& set) const {
+    SvmTrainingOptions o;
+    o.degree = get_input<int>("degree");
+    o.c_values = get_input<std::vector<double>>("c_values");
+    o.gamma_values = get_input<std::vector<double>>("gamma_values");
+    const int components = get_input<int>("components");
+    if (components < 1) fail("components", "components must be at least 1");
+    o.pca_components = static_cast<std::size_t>(components);
+    o.folds = get_input<int>("folds");
+    o.threads = get_input<int>("threads");
+    o.seed = random().next_u64();
+    o.description = get_input<std::string>("description");
+    if (o.description.empty()) {
+      o.description = std::to_string(set.size()) + " examples from antipode train";
+    }
+    o.progress = [this](std::size_t done, std::size_t total, const std::string&) {
+      progress(done, total, "training the SVM");
+    };
+    try {
+      o.validate();
+    } catch (const Error& e) {
+      fail("c_values", e.message());
+    }
+    return o;
+  }
+
+  static std::string model_summary(const SvmModel& model, const std::string& file) {
+    std::string text = "C = " + std::to_string(model.kernel.C) +
+                       ", gamma = " + std::to_string(model.kernel.gamma) + ", " +
+                       std::to_string(model.support_vector_count()) + " support vectors, " +
+                       std::to_string(model.components()) + " components";
+    if (model.info.cv_accuracy >= 0.0) {
+      text += "; cross-validation accuracy " + percent(model.info.cv_accuracy);
+    }
+    std::error_code error;
+    const auto bytes = std::filesystem::file_size(file, error);
+    return text + "; " + file + (error ? "" : " (" + std::to_string(bytes / 1024) + " KiB)");
+  }
+};
+
+}  // namespace
+
+void register_train_classifier(bt::NodeRegistry& registry) {
+  registry.register_node<TrainClassifier>();
+}
+
+}  // namespace antipode::training
