@@ -13,10 +13,13 @@
 #include "antipode/core/binary_file.hpp"
 #include "antipode/core/error.hpp"
 #include "antipode/core/random.hpp"
+#include "antipode/geometry/sample_hands.hpp"
+#include "antipode/grasp/antipodal.hpp"
 #include "antipode/grasp/hand_image.hpp"
 #include "antipode/grasp/svm_model.hpp"
 #include "antipode/grasp/svm_training.hpp"
 #include "antipode/grasp/training_set.hpp"
+#include "antipode/io/load_cloud.hpp"
 #include "support/error_of.hpp"
 
 namespace antipode {
@@ -343,6 +346,83 @@ TEST(SvmTest, FoldsKeepGroupsTogetherAndCrossValidationCountsEveryExampleOnce) {
   for (const auto& point : cv.points) EXPECT_EQ(point.confusion.total(), set.size());
   EXPECT_GE(cv.accuracy(), 0.95);
   EXPECT_EQ(cv.folds, 4);
+}
+
+double seconds_since(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+// Balanced examples from hands sampled on the shared clouds, labelled by the near-antipodal
+// check (positive or not); one group per hand.
+TrainingSet real_hands(std::size_t wanted) {
+  std::vector<Cloud> clouds;
+  for (const char* name : {"krylon.pcd", "table_mug.pcd"}) {
+    clouds.push_back(load_cloud(std::string(ANTIPODE_TEST_DATA_DIR) + "/clouds/" + name));
+  }
+  TrainingSet set;
+  for (std::uint64_t seed = 0; set.size() < wanted && seed < 10; ++seed) {
+    for (const Cloud& cloud : clouds) {
+      HandSamplingOptions sampling;
+      sampling.search.samples = 1000;
+      sampling.search.keep_all_positions = true;
+      sampling.search.threads = 2;
+      const HandSet hands = sample_hands(cloud, sampling, RandomStream(seed));
+      AntipodalLabellingOptions labelling;
+      labelling.normals.threads = 2;
+      const auto counts = count_antipodal_normals(hands, labelling);
+      const auto descriptors = hand_descriptors(hands, hands.geometry, {}, 2);
+      for (std::size_t i = 0; i < descriptors.size() && set.size() < wanted; ++i) {
+        const bool positive = antipodal_label(counts[i], 6) == HandLabel::kPositive;
+        if (positive ? set.positives() > set.negatives() : set.negatives() > set.positives()) {
+          continue;
+        }
+        set.add(descriptors[i], positive, set.next_group(), static_cast<std::int32_t>(seed));
+      }
+    }
+  }
+  return set;
+}
+
+TEST(SvmTest, TrainsAndPredictsQuicklyOnRealHands) {
+  if (!fs::exists(std::string(ANTIPODE_TEST_DATA_DIR) + "/clouds/krylon.pcd")) {
+    GTEST_SKIP() << "shared clouds not found; test skipped";
+  }
+  const auto start_data = std::chrono::steady_clock::now();
+  const TrainingSet all = real_hands(6000);
+  std::printf("%zu descriptors of real hands in %.1f s\n", all.size(), seconds_since(start_data));
+  ASSERT_GE(all.size(), 6000u);
+  std::vector<std::size_t> train_rows;
+  std::vector<std::size_t> test_rows;
+  for (std::size_t i = 0; i < all.size(); ++i) (i % 5 == 4 ? test_rows : train_rows).push_back(i);
+  const TrainingSet train = all.subset(train_rows);
+  const TrainingSet test = all.subset(test_rows);
+  SvmTrainingOptions options;
+  options.folds = 3;
+  options.c_values = {1.0, 10.0};
+  options.threads = 2;
+  auto start = std::chrono::steady_clock::now();
+  const SvmModel model = train_svm(train, options, HandImageOptions{}, HandGeometry{});
+  const double training_s = seconds_since(start);
+  std::vector<float> rows;
+  while (rows.size() < 4000 * all.dimension) {
+    rows.insert(
+        rows.end(), all.features.begin(),
+        all.features.begin() + static_cast<std::ptrdiff_t>(std::min(
+                                   all.features.size(), 4000 * all.dimension - rows.size())));
+  }
+  start = std::chrono::steady_clock::now();
+  const auto values = model.decision_values(rows.data(), 4000, all.dimension, 2);
+  const double predict_s = seconds_since(start);
+  const ConfusionMatrix confusion = evaluate(model, test, 2);
+  std::printf(
+      "%zu training descriptors (%zu positive): trained in %.1f s (3 folds x 2 C), C = %g, "
+      "%zu components, %zu support vectors, cross-validation %.3f, held-out %.3f; 4000 "
+      "decision values in %.1f ms\n",
+      train.size(), train.positives(), training_s, model.kernel.C, model.components(),
+      model.support_vector_count(), model.info.cv_accuracy, confusion.accuracy(), 1e3 * predict_s);
+  EXPECT_EQ(values.size(), 4000u);
+  EXPECT_GE(confusion.accuracy(), 0.95);
+  EXPECT_LT(predict_s, 2.0);
 }
 
 TEST(SvmTest, ConfusionMatrixRates) {

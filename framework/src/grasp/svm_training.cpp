@@ -4,6 +4,7 @@
 #include <cmath>
 #include <mutex>
 #include <numeric>
+#include <sstream>
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
@@ -24,6 +25,12 @@ using RowMatrixF = Eigen::Matrix<float, Eigen::Dynamic, Eigen::Dynamic, Eigen::R
 using MatrixF = Eigen::MatrixXf;
 
 constexpr int kPowerIterations = 4;
+
+std::string number(double value) {
+  std::ostringstream out;
+  out << value;
+  return out.str();
+}
 constexpr std::size_t kOversampling = 16;
 
 // ---------------------------------------------------------------------------------------
@@ -294,8 +301,8 @@ CrossValidationResult cross_validate_reduced(const TrainingSet& set, const SvmMo
                           const SvmKernel& kernel = kernels[t / folds];
                           results[t] = run_fold(reduction, data, fold_of,
                                                 static_cast<int>(t % folds), kernel, options);
-                          progress.step("cross-validation C=" + std::to_string(kernel.C) +
-                                        " fold " + std::to_string(t % folds + 1));
+                          progress.step("cross-validation C=" + number(kernel.C) + " fold " +
+                                        std::to_string(t % folds + 1));
                         }
                       });
   });
