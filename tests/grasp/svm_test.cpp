@@ -28,12 +28,10 @@ namespace {
 namespace fs = std::filesystem;
 using testing::error_of;
 
-// The descriptor of a synthetic grasp hypothesis image: a positive example sees an object's
-// surface on both sides of the closing region (two lines along the approach), a negative one
-// a single surface somewhere across it.
-std::vector<float> toy_descriptor(bool positive, RandomStream& random) {
-  Cloud cloud;
-  Hand hand;  // at the origin: hand coordinates are cloud coordinates
+// Points in hand coordinates of a synthetic closing region: a positive example sees an
+// object's surface on both sides (two lines along the approach), a negative one a single
+// surface somewhere across it.
+std::vector<Eigen::Vector3d> toy_points(bool positive, RandomStream& random) {
   const double start_m = random.uniform(0.0, 0.03);
   std::vector<double> lines_m;
   if (positive) {
@@ -43,26 +41,46 @@ std::vector<float> toy_descriptor(bool positive, RandomStream& random) {
   } else {
     lines_m = {random.uniform(-0.03, 0.03)};
   }
+  std::vector<Eigen::Vector3d> points;
   for (const double y : lines_m) {
     for (double x = start_m; x < 0.06; x += 0.001) {
-      cloud.points_m.emplace_back(static_cast<float>(x),
-                                  static_cast<float>(y + random.uniform(-0.001, 0.001)), 0.0f);
-      hand.closing_points.push_back(static_cast<std::int32_t>(cloud.size() - 1));
+      points.emplace_back(x, y + random.uniform(-0.001, 0.001), 0.0);
     }
   }
-  return hog_descriptor(hand_image(cloud, hand, HandGeometry{}));
+  return points;
 }
 
-// `hands` hands of three descriptors each (as C1, C2, C12), alternately positive.
+// The descriptors (default options, default hand) of toy hands, each 1 m from the last.
+std::vector<std::vector<float>> toy_descriptors(const std::vector<bool>& positive,
+                                                RandomStream& random) {
+  auto cloud = std::make_shared<Cloud>();
+  HandSet set;
+  for (std::size_t i = 0; i < positive.size(); ++i) {
+    Hand hand;
+    hand.X_FrameHand = Eigen::Translation3d(0.0, 0.0, static_cast<double>(i)) *
+                       Eigen::AngleAxisd(0.3 * static_cast<double>(i), Eigen::Vector3d::UnitX());
+    for (const Eigen::Vector3d& p : toy_points(positive[i], random)) {
+      cloud->points_m.push_back((hand.X_FrameHand * p).cast<float>());
+      hand.closing_points.push_back(static_cast<std::int32_t>(cloud->size() - 1));
+    }
+    set.hands.push_back(hand);
+  }
+  set.cloud = cloud;
+  return hand_descriptors(set, HandGeometry{}, HandImageOptions{}, 2);
+}
+
+// `hands` hands of three descriptors each (as C1, C2, C12), about half of them positive.
 TrainingSet toy_set(std::size_t hands, std::uint64_t seed) {
   RandomStream random(seed);
+  std::vector<bool> positive;
+  for (std::size_t h = 0; h < hands; ++h) positive.push_back(random.uniform() < 0.5);
+  std::vector<bool> examples;
+  for (const bool p : positive) examples.insert(examples.end(), 3, p);
+  const auto descriptors = toy_descriptors(examples, random);
   TrainingSet set;
-  for (std::size_t h = 0; h < hands; ++h) {
-    const bool positive = random.uniform() < 0.5;
-    for (int view = 0; view < 3; ++view) {
-      set.add(toy_descriptor(positive, random), positive, static_cast<std::int32_t>(h),
-              static_cast<std::int32_t>(h % 7));
-    }
+  for (std::size_t i = 0; i < descriptors.size(); ++i) {
+    const auto hand = static_cast<std::int32_t>(i / 3);
+    set.add(descriptors[i], examples[i], hand, hand % 7);
   }
   return set;
 }
@@ -200,7 +218,9 @@ TEST(SvmTest, DecisionValuesDoNotDependOnThreadsOrBatching) {
   EXPECT_EQ(model.decision_values(rows, 2), one);
   EXPECT_TRUE(model.decision_values(nullptr, 0, set.dimension, 2).empty());
   const std::string wrong = error_of([&] { model.decision_values(set.row(0), 1, 100, 1); });
-  EXPECT_NE(wrong.find("descriptors of 100 numbers, but the model takes 3564"), std::string::npos)
+  EXPECT_NE(wrong.find("descriptors of 100 numbers, but the model takes " +
+                       std::to_string(set.dimension)),
+            std::string::npos)
       << wrong;
 }
 
@@ -216,7 +236,8 @@ TEST(SvmTest, SaveLoadRoundTripKeepsValuesAndBytes) {
   EXPECT_EQ(loaded.decision_values(set.features.data(), set.size(), set.dimension, 2),
             model.decision_values(set.features.data(), set.size(), set.dimension, 2));
   EXPECT_EQ(loaded.info.cv_accuracy, model.info.cv_accuracy);
-  EXPECT_EQ(loaded.descriptor.name, "occupancy-hog-1");
+  EXPECT_EQ(loaded.descriptor.name, SvmDescriptorSpec{}.name);
+  EXPECT_TRUE(loaded.descriptor.matches(model.descriptor));
   EXPECT_EQ(loaded.kernel.C, model.kernel.C);
   const auto size = fs::file_size(path);
   std::printf("model: %zu components, %zu support vectors, %ju bytes\n", model.components(),
@@ -300,7 +321,9 @@ TEST(SvmTest, BadTrainingInputIsAClearError) {
             std::string::npos);
   TrainingSet positives_only;
   RandomStream random(3);
-  for (int i = 0; i < 6; ++i) positives_only.add(toy_descriptor(true, random), true, i, 0);
+  const auto descriptors = toy_descriptors(std::vector<bool>(6, true), random);
+  for (int i = 0; i < 6; ++i)
+    positives_only.add(descriptors[static_cast<std::size_t>(i)], true, i, 0);
   EXPECT_NE(error_of([&] {
               train_svm(positives_only, options, image, hand);
             }).find("only positive examples"),
@@ -310,7 +333,8 @@ TEST(SvmTest, BadTrainingInputIsAClearError) {
   short_rows.add({2.0f, 1.0f}, false, 1, 0);
   const std::string dimension = error_of([&] { train_svm(short_rows, options, image, hand); });
   EXPECT_NE(dimension.find("descriptors have 2 numbers"), std::string::npos) << dimension;
-  EXPECT_NE(dimension.find("gives 3564"), std::string::npos) << dimension;
+  EXPECT_NE(dimension.find("gives " + std::to_string(image.descriptor_size())), std::string::npos)
+      << dimension;
   SvmTrainingOptions no_c = options;
   no_c.c_values.clear();
   EXPECT_NE(error_of([&] { train_svm(training(), no_c, image, hand); }).find("no C candidates"),
@@ -449,12 +473,14 @@ TEST(TrainingSetTest, SaveLoadRoundTripAndDimensionErrors) {
   EXPECT_EQ(loaded.next_group(), 5);
   TrainingSet copy = set;
   const std::string mismatch = error_of([&] { copy.add({1.0f, 2.0f}, true, 9, 0); });
-  EXPECT_NE(mismatch.find("descriptor of 2 numbers, but the set holds descriptors of 3564"),
+  EXPECT_NE(mismatch.find("descriptor of 2 numbers, but the set holds descriptors of " +
+                          std::to_string(set.dimension)),
             std::string::npos)
       << mismatch;
-  EXPECT_NE(
-      error_of([&] { copy.add(std::vector<float>(3564, NAN), true, 9, 0); }).find("non-finite"),
-      std::string::npos);
+  EXPECT_NE(error_of([&] {
+              copy.add(std::vector<float>(set.dimension, NAN), true, 9, 0);
+            }).find("non-finite"),
+            std::string::npos);
   std::vector<char> bytes = bytes_of(path);
   bytes.resize(bytes.size() - 1);
   write_bytes(path, bytes);
