@@ -34,8 +34,11 @@ Placed placed(const std::vector<Eigen::Vector3d>& in_hand) {
 
 TEST(HandImageTest, PointsLandInThePixelsOfTheirHandCoordinates) {
   // Baxter hand, default options: 1 mm pixels, 60 rows along the approach, 72 columns.
-  const Placed p = placed({{0.0105, 0.0005, 0.005}, {0.0595, 0.0355, -0.009}, {0.0305, -0.0355, 0.0}});
-  const HandImage image = hand_image(p.cloud, p.hand, HandGeometry{});
+  const Placed p =
+      placed({{0.0105, 0.0005, 0.005}, {0.0595, 0.0355, -0.009}, {0.0305, -0.0355, 0.0}});
+  HandImageOptions single_pixels;
+  single_pixels.point_radius_px = 0;
+  const HandImage image = hand_image(p.cloud, p.hand, HandGeometry{}, single_pixels);
   ASSERT_EQ(image.rows, 60);
   ASSERT_EQ(image.cols, 72);
   EXPECT_EQ(image.at(10, 36), 255);
@@ -46,9 +49,78 @@ TEST(HandImageTest, PointsLandInThePixelsOfTheirHandCoordinates) {
   EXPECT_EQ(set, 3);
 }
 
-TEST(HandImageTest, DescriptorHasThePapersLayoutAndIsZeroForAnEmptyImage) {
+TEST(HandImageTest, PointsAreDrawnAsDiscsClippedAtTheBorder) {
+  const Placed p = placed({{0.0305, 0.0005, 0.0}, {0.0005, -0.0355, 0.0}});
+  const HandImage image = hand_image(p.cloud, p.hand, HandGeometry{});  // radius 2 px
+  int set = 0;
+  for (const std::uint8_t v : image.pixels) set += v != 0;
+  // 13 pixels within 2 px of the inner point; a quarter disc (6 pixels) at the corner.
+  EXPECT_EQ(set, 13 + 6);
+  EXPECT_EQ(image.at(30, 38), 255);
+  EXPECT_EQ(image.at(32, 36), 255);
+  EXPECT_EQ(image.at(32, 38), 0);
+}
+
+TEST(HandImageTest, AHandTurnedAboutItsApproachSeesTheImageMirrored) {
+  // Points off the pixel borders, so that mirroring y maps each to the mirrored column.
+  const std::vector<Eigen::Vector3d> in_hand = {
+      {0.0105, 0.0204, 0.005}, {0.0402, -0.0303, -0.004}, {0.0555, 0.0011, 0.0}};
+  const Placed p = placed(in_hand);
+  Hand turned = p.hand;
+  turned.X_FrameHand = p.hand.X_FrameHand * Eigen::AngleAxisd(M_PI, Eigen::Vector3d::UnitX());
+  const HandImage image = hand_image(p.cloud, p.hand, HandGeometry{});
+  const HandImage mirrored = hand_image(p.cloud, turned, HandGeometry{});
+  for (int r = 0; r < image.rows; ++r) {
+    for (int c = 0; c < image.cols; ++c) {
+      ASSERT_EQ(image.at(r, c), mirrored.at(r, image.cols - 1 - c)) << r << ", " << c;
+    }
+  }
+  // The normal statistics: blocks mirrored, n . closing negated, |n . axis| kept.
+  std::vector<Eigen::Vector3f> normals(p.cloud.size());
+  for (std::size_t i = 0; i < normals.size(); ++i) {
+    normals[i] =
+        (p.hand.X_FrameHand.linear() * Eigen::Vector3d(0.3, 0.8, -0.52).normalized()).cast<float>();
+  }
   const HandImageOptions options;
-  EXPECT_EQ(options.descriptor_size(), 9u * 11u * 4u * 9u);  // 10 x 12 cells, 2 x 2 blocks
+  const auto a = normal_statistics(p.cloud, p.hand, HandGeometry{}, options, normals);
+  const auto b = normal_statistics(p.cloud, turned, HandGeometry{}, options, normals);
+  ASSERT_EQ(a.size(), options.normal_features_size());
+  const int across = 6;  // blocks of 2 x 2 cells across 12 cells
+  for (std::size_t block = 0; block < a.size() / 3; ++block) {
+    const std::size_t row = block / across, col = block % across;
+    const std::size_t other = row * across + (across - 1 - col);
+    EXPECT_NEAR(a[3 * block], -b[3 * other], 1e-6);
+    EXPECT_NEAR(a[3 * block + 1], b[3 * other + 1], 1e-6);
+    EXPECT_NEAR(a[3 * block + 2], b[3 * other + 2], 1e-6);
+  }
+}
+
+TEST(HandImageTest, NormalStatisticsAverageEachBlock) {
+  // Two points in the block at the palm's -y corner, one in the middle block of the tips.
+  const Placed p = placed({{0.001, -0.035, 0.0}, {0.002, -0.034, 0.0}, {0.059, 0.001, 0.0}});
+  const Eigen::Matrix3d R = p.hand.X_FrameHand.linear();
+  const std::vector<Eigen::Vector3f> normals = {(R * Eigen::Vector3d(0, 1, 0)).cast<float>(),
+                                                (R * Eigen::Vector3d(0, 0.6, 0.8)).cast<float>(),
+                                                Eigen::Vector3f::Zero()};  // no normal: not counted
+  const HandImageOptions options;
+  const auto f = normal_statistics(p.cloud, p.hand, HandGeometry{}, options, normals);
+  ASSERT_EQ(f.size(), 3u * 5u * 6u);
+  EXPECT_NEAR(f[0], 4.0 * (1.0 + 0.6) / 2.0, 1e-5);  // mean n . closing
+  EXPECT_NEAR(f[1], 4.0 * (0.0 + 0.8) / 2.0, 1e-5);  // mean |n . axis|
+  EXPECT_NEAR(f[2], 4.0 * std::log1p(2.0) / std::log1p(64.0), 1e-5);
+  const std::size_t tip = 3 * (4 * 6 + 3);  // last block row, column 36 -> block 3
+  EXPECT_EQ(f[tip + 2], 0.0f);
+  float others = 0.0f;
+  for (std::size_t i = 3; i < f.size(); ++i) others += std::abs(f[i]);
+  EXPECT_EQ(others, 0.0f);
+}
+
+TEST(HandImageTest, DescriptorHasThePapersLayoutAndIsZeroForAnEmptyImage) {
+  HandImageOptions options;
+  EXPECT_EQ(options.hog_size(), 9u * 11u * 4u * 9u);  // 10 x 12 cells, 2 x 2 blocks
+  EXPECT_EQ(options.descriptor_size(), options.hog_size() + 90u);
+  options.normal_features = false;
+  EXPECT_EQ(options.descriptor_size(), options.hog_size());
   const Placed empty = placed({});
   const auto zero = hog_descriptor(hand_image(empty.cloud, empty.hand, HandGeometry{}), options);
   ASSERT_EQ(zero.size(), options.descriptor_size());
@@ -79,7 +151,8 @@ TEST(HandImageTest, DescriptorsAreDeterministicForAnyThreadCount) {
   ASSERT_EQ(one.size(), set.hands.size());
   EXPECT_EQ(one, two);
   for (std::size_t i = 0; i < set.hands.size(); i += 7) {
-    EXPECT_EQ(one[i], hog_descriptor(hand_image(*set.cloud, set.hands[i], HandGeometry{})));
+    const auto hog = hog_descriptor(hand_image(*set.cloud, set.hands[i], HandGeometry{}));
+    EXPECT_EQ(std::vector<float>(one[i].begin(), one[i].begin() + hog.size()), hog);
   }
 }
 

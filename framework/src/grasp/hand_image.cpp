@@ -4,13 +4,14 @@
 #include <cmath>
 #include <string>
 
-#include <opencv2/core.hpp>
-#include <opencv2/objdetect.hpp>
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
+#include <opencv2/core.hpp>
+#include <opencv2/objdetect.hpp>
 
 #include "antipode/core/error.hpp"
+#include "antipode/grasp/normals.hpp"
 
 namespace antipode {
 namespace {
@@ -24,25 +25,99 @@ cv::HOGDescriptor make_hog(const HandImageOptions& o) {
 std::vector<float> compute_hog(const cv::HOGDescriptor& hog, const HandImage& image,
                                const HandImageOptions& options) {
   if (image.rows != options.rows() || image.cols != options.cols() ||
-      image.pixels.size() != static_cast<std::size_t>(image.rows) * static_cast<std::size_t>(image.cols)) {
+      image.pixels.size() !=
+          static_cast<std::size_t>(image.rows) * static_cast<std::size_t>(image.cols)) {
     throw Error("HOG descriptor: the image is " + std::to_string(image.rows) + " x " +
                 std::to_string(image.cols) + ", the options describe " +
                 std::to_string(options.rows()) + " x " + std::to_string(options.cols()));
   }
   // A read-only view of the pixels: compute() does not write its input.
-  const cv::Mat mat(image.rows, image.cols, CV_8UC1, const_cast<std::uint8_t*>(image.pixels.data()));
+  const cv::Mat mat(image.rows, image.cols, CV_8UC1,
+                    const_cast<std::uint8_t*>(image.pixels.data()));
   std::vector<float> descriptor;
   hog.compute(mat, descriptor);
   return descriptor;
 }
 
+// Sets the pixels within `radius_px` of (row, col).
+void draw_disc(HandImage& image, int row, int col, int radius_px) {
+  for (int dr = -radius_px; dr <= radius_px; ++dr) {
+    for (int dc = -radius_px; dc <= radius_px; ++dc) {
+      const int r = row + dr, c = col + dc;
+      if (dr * dr + dc * dc > radius_px * radius_px || r < 0 || c < 0 || r >= image.rows ||
+          c >= image.cols) {
+        continue;
+      }
+      image.pixels[static_cast<std::size_t>(r) * static_cast<std::size_t>(image.cols) +
+                   static_cast<std::size_t>(c)] = 255;
+    }
+  }
+}
+
+// Where a point of the closing region falls in the image (clamped to it).
+struct PixelMap {
+  Eigen::Isometry3d X_HandFrame;
+  double row_per_m, col_per_m, half_aperture_m;
+  int rows, cols;
+
+  PixelMap(const Hand& hand, const HandGeometry& geometry, const HandImageOptions& options)
+      : X_HandFrame(hand.X_FrameHand.inverse()),
+        row_per_m(options.rows() / geometry.depth_m),
+        col_per_m(options.cols() / geometry.max_aperture_m),
+        half_aperture_m(geometry.max_aperture_m / 2.0),
+        rows(options.rows()),
+        cols(options.cols()) {}
+
+  std::pair<int, int> operator()(const Eigen::Vector3f& p_frame) const {
+    const Eigen::Vector3d p = X_HandFrame * p_frame.cast<double>();
+    return {std::clamp(static_cast<int>(std::floor(p.x() * row_per_m)), 0, rows - 1),
+            std::clamp(static_cast<int>(std::floor((p.y() + half_aperture_m) * col_per_m)), 0,
+                       cols - 1)};
+  }
+};
+
+void check_point(const Cloud& cloud, std::int32_t i) {
+  if (i < 0 || static_cast<std::size_t>(i) >= cloud.size()) {
+    throw Error("hand image: closing point " + std::to_string(i) + " is outside the cloud of " +
+                std::to_string(cloud.size()) + " points");
+  }
+}
+
+std::vector<std::int32_t> all_closing_points(const HandSet& set) {
+  std::vector<std::int32_t> points;
+  for (const Hand& hand : set.hands) {
+    points.insert(points.end(), hand.closing_points.begin(), hand.closing_points.end());
+  }
+  std::sort(points.begin(), points.end());
+  points.erase(std::unique(points.begin(), points.end()), points.end());
+  return points;
+}
+
+int blocks(int cells, int block_cells) { return (cells + block_cells - 1) / block_cells; }
+
+// Weight of the normal statistics against the HOG numbers (each at most 0.2 after L2-Hys):
+// the PCA of the classifier is fitted on the raw descriptor, and at weight 1 the 90
+// statistics carried too little of its variance to survive the reduction (cross-validation
+// accuracy on the training scenes: 93.5% at weight 1, 93.9% at 4).
+constexpr double kNormalWeight = 4.0;
+
 }  // namespace
 
-std::size_t HandImageOptions::descriptor_size() const {
+std::size_t HandImageOptions::hog_size() const {
   const auto blocks_along = static_cast<std::size_t>(cells_along - block_cells + 1);
   const auto blocks_across = static_cast<std::size_t>(cells_across - block_cells + 1);
   return blocks_along * blocks_across * static_cast<std::size_t>(block_cells * block_cells) *
          static_cast<std::size_t>(bins);
+}
+
+std::size_t HandImageOptions::normal_features_size() const {
+  if (!normal_features) return 0;
+  return 3 * static_cast<std::size_t>(blocks(cells_along, block_cells)) *
+         static_cast<std::size_t>(blocks(cells_across, block_cells));
+}
+
+std::size_t HandImageOptions::descriptor_size() const {
+  return hog_size() + normal_features_size();
 }
 
 void HandImageOptions::validate() const {
@@ -56,6 +131,10 @@ void HandImageOptions::validate() const {
   check(cells_across, "cells_across");
   check(cell_px, "cell_px");
   check(block_cells, "block_cells");
+  if (point_radius_px < 0 || point_radius_px > 16) {
+    throw Error("hand image: point_radius_px must be in [0, 16], got " +
+                std::to_string(point_radius_px));
+  }
   check(bins, "bins");
   if (block_cells > cells_along || block_cells > cells_across) {
     throw Error("hand image: block_cells (" + std::to_string(block_cells) +
@@ -70,24 +149,51 @@ HandImage hand_image(const Cloud& cloud, const Hand& hand, const HandGeometry& g
   HandImage image;
   image.rows = options.rows();
   image.cols = options.cols();
-  image.pixels.assign(static_cast<std::size_t>(image.rows) * static_cast<std::size_t>(image.cols), 0);
-  const Eigen::Isometry3d X_HandFrame = hand.X_FrameHand.inverse();
-  const double row_per_m = image.rows / geometry.depth_m;
-  const double col_per_m = image.cols / geometry.max_aperture_m;
-  const double half_aperture_m = geometry.max_aperture_m / 2.0;
+  image.pixels.assign(static_cast<std::size_t>(image.rows) * static_cast<std::size_t>(image.cols),
+                      0);
+  const PixelMap pixel(hand, geometry, options);
   for (const std::int32_t i : hand.closing_points) {
-    if (i < 0 || static_cast<std::size_t>(i) >= cloud.size()) {
-      throw Error("hand image: closing point " + std::to_string(i) + " is outside the cloud of " +
-                  std::to_string(cloud.size()) + " points");
-    }
-    const Eigen::Vector3d p = X_HandFrame * cloud.points_m[static_cast<std::size_t>(i)].cast<double>();
-    const int row = std::clamp(static_cast<int>(std::floor(p.x() * row_per_m)), 0, image.rows - 1);
-    const int col = std::clamp(static_cast<int>(std::floor((p.y() + half_aperture_m) * col_per_m)),
-                               0, image.cols - 1);
-    image.pixels[static_cast<std::size_t>(row) * static_cast<std::size_t>(image.cols) +
-                 static_cast<std::size_t>(col)] = 255;
+    check_point(cloud, i);
+    const auto [row, col] = pixel(cloud.points_m[static_cast<std::size_t>(i)]);
+    draw_disc(image, row, col, options.point_radius_px);
   }
   return image;
+}
+
+std::vector<float> normal_statistics(const Cloud& cloud, const Hand& hand,
+                                     const HandGeometry& geometry, const HandImageOptions& options,
+                                     const std::vector<Eigen::Vector3f>& normals) {
+  if (normals.size() != cloud.size()) {
+    throw Error("normal statistics: " + std::to_string(normals.size()) + " normals for " +
+                std::to_string(cloud.size()) + " points");
+  }
+  const int block_px = options.block_cells * options.cell_px;
+  const int across = blocks(options.cells_across, options.block_cells);
+  const std::size_t count =
+      static_cast<std::size_t>(blocks(options.cells_along, options.block_cells) * across);
+  std::vector<double> closing(count, 0.0), tilt(count, 0.0);
+  std::vector<int> points(count, 0);
+  const PixelMap pixel(hand, geometry, options);
+  for (const std::int32_t i : hand.closing_points) {
+    check_point(cloud, i);
+    const Eigen::Vector3d n = normals[static_cast<std::size_t>(i)].cast<double>();
+    if (n.isZero()) continue;
+    const auto [row, col] = pixel(cloud.points_m[static_cast<std::size_t>(i)]);
+    const auto b = static_cast<std::size_t>((row / block_px) * across + col / block_px);
+    closing[b] += n.dot(hand.closing());
+    tilt[b] += std::abs(n.dot(hand.axis()));
+    ++points[b];
+  }
+  std::vector<float> features;
+  features.reserve(3 * count);
+  for (std::size_t b = 0; b < count; ++b) {
+    const double k = std::max(points[b], 1);
+    features.push_back(static_cast<float>(kNormalWeight * closing[b] / k));
+    features.push_back(static_cast<float>(kNormalWeight * tilt[b] / k));
+    features.push_back(
+        static_cast<float>(kNormalWeight * std::log1p(points[b]) / std::log1p(64.0)));
+  }
+  return features;
 }
 
 std::vector<float> hog_descriptor(const HandImage& image, const HandImageOptions& options) {
@@ -99,18 +205,31 @@ std::vector<std::vector<float>> hand_descriptors(const HandSet& set, const HandG
                                                  const HandImageOptions& options, int threads) {
   options.validate();
   geometry.validate();
-  if (threads < 0) throw Error("hand descriptors: threads must be >= 0, got " + std::to_string(threads));
+  if (threads < 0)
+    throw Error("hand descriptors: threads must be >= 0, got " + std::to_string(threads));
   std::vector<std::vector<float>> descriptors(set.hands.size());
   if (set.hands.empty()) return descriptors;
   if (set.cloud == nullptr) throw Error("hand descriptors: the hand set has no cloud");
+  std::vector<Eigen::Vector3f> normals;
+  if (options.normal_features) {
+    NormalEstimationOptions normal_options;
+    normal_options.threads = threads;
+    const auto points = all_closing_points(set);
+    normals = estimate_normals(*set.cloud, normal_options, &points);
+  }
   tbb::task_arena arena(threads > 0 ? threads : tbb::task_arena::automatic);
   arena.execute([&] {
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, set.hands.size(), 32),
                       [&](const tbb::blocked_range<std::size_t>& range) {
                         const cv::HOGDescriptor hog = make_hog(options);
                         for (std::size_t h = range.begin(); h != range.end(); ++h) {
+                          const Hand& hand = set.hands[h];
                           descriptors[h] = compute_hog(
-                              hog, hand_image(*set.cloud, set.hands[h], geometry, options), options);
+                              hog, hand_image(*set.cloud, hand, geometry, options), options);
+                          if (!options.normal_features) continue;
+                          const auto extra =
+                              normal_statistics(*set.cloud, hand, geometry, options, normals);
+                          descriptors[h].insert(descriptors[h].end(), extra.begin(), extra.end());
                         }
                       });
   });

@@ -180,7 +180,9 @@ std::string SvmDescriptorSpec::describe() const {
          number(height_m) + " m high hand with " + std::to_string(image.cells_along) + " x " +
          std::to_string(image.cells_across) + " HOG cells of " + std::to_string(image.cell_px) +
          " px (" + std::to_string(image.block_cells) + " x " + std::to_string(image.block_cells) +
-         " cell blocks, " + std::to_string(image.bins) + " bins, " + name + ")";
+         " cell blocks, " + std::to_string(image.bins) + " bins, points drawn " +
+         std::to_string(image.point_radius_px) + " px wide, " +
+         (image.normal_features ? "with" : "without") + " normal statistics, " + name + ")";
 }
 
 bool SvmDescriptorSpec::matches(const SvmDescriptorSpec& o) const {
@@ -189,6 +191,7 @@ bool SvmDescriptorSpec::matches(const SvmDescriptorSpec& o) const {
   const HandImageOptions& b = o.image;
   return name == o.name && a.cells_along == b.cells_along && a.cells_across == b.cells_across &&
          a.cell_px == b.cell_px && a.block_cells == b.block_cells && a.bins == b.bins &&
+         a.point_radius_px == b.point_radius_px && a.normal_features == b.normal_features &&
          near(depth_m, o.depth_m) && near(max_aperture_m, o.max_aperture_m) &&
          near(height_m, o.height_m);
 }
@@ -265,7 +268,8 @@ void SvmModel::save(const std::string& path) const {
   BinaryWriter w(kMagic, kVersion);
   w.put_string(descriptor.name);
   const HandImageOptions& o = descriptor.image;
-  for (const int v : {o.cells_along, o.cells_across, o.cell_px, o.block_cells, o.bins}) {
+  for (const int v : {o.cells_along, o.cells_across, o.cell_px, o.block_cells, o.bins,
+                      o.point_radius_px, o.normal_features ? 1 : 0}) {
     w.put<std::int32_t>(v);
   }
   w.put(descriptor.depth_m);
@@ -295,9 +299,13 @@ SvmModel SvmModel::load(const std::string& path) {
   SvmModel m;
   m.descriptor.name = r.get_string();
   HandImageOptions& o = m.descriptor.image;
-  for (int* v : {&o.cells_along, &o.cells_across, &o.cell_px, &o.block_cells, &o.bins}) {
+  for (int* v :
+       {&o.cells_along, &o.cells_across, &o.cell_px, &o.block_cells, &o.bins, &o.point_radius_px}) {
     *v = r.get<std::int32_t>();
   }
+  const auto normal_features = r.get<std::int32_t>();
+  if (normal_features != 0 && normal_features != 1) r.fail("normal_features flag is not 0 or 1");
+  o.normal_features = normal_features == 1;
   m.descriptor.depth_m = r.get<double>();
   m.descriptor.max_aperture_m = r.get<double>();
   m.descriptor.height_m = r.get<double>();

@@ -22,7 +22,8 @@ void in_arena(int threads, Work&& work) {
 
 bool same_descriptor(const HandImageOptions& a, const HandImageOptions& b) {
   return a.cells_along == b.cells_along && a.cells_across == b.cells_across &&
-         a.cell_px == b.cell_px && a.block_cells == b.block_cells && a.bins == b.bins;
+         a.cell_px == b.cell_px && a.block_cells == b.block_cells && a.bins == b.bins &&
+         a.point_radius_px == b.point_radius_px && a.normal_features == b.normal_features;
 }
 
 bool same_geometry(const HandGeometry& a, const HandGeometry& b) {

@@ -16,8 +16,8 @@
 namespace antipode {
 
 struct TrainingSet {
-  HandImageOptions descriptor;  ///< how the descriptors were computed
-  HandGeometry geometry;        ///< the hand whose closing region they image
+  HandImageOptions descriptor;        ///< how the descriptors were computed
+  HandGeometry geometry;              ///< the hand whose closing region they image
   std::size_t dimension = 0;          ///< numbers per descriptor (0 until the first add)
   std::vector<float> features;        ///< size() x dimension numbers, row-major
   std::vector<std::int8_t> labels;    ///< +1 positive (a grasp), -1 negative
