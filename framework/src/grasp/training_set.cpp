@@ -9,7 +9,34 @@
 namespace antipode {
 namespace {
 constexpr const char* kMagic = "ANTPDATA";
-constexpr std::uint32_t kVersion = 1;
+constexpr std::uint32_t kVersion = 2;  // 1: options as raw structs, no longer read
+
+// Field by field, so that the bytes depend only on the values (no struct padding).
+void put_descriptor(BinaryWriter& w, const HandImageOptions& o, const HandGeometry& g) {
+  for (const int v : {o.cells_along, o.cells_across, o.cell_px, o.block_cells, o.bins,
+                      o.point_radius_px, o.normal_features ? 1 : 0}) {
+    w.put<std::int32_t>(v);
+  }
+  for (const double v : {g.finger_width_m, g.outer_diameter_m, g.depth_m, g.height_m, g.init_bite_m,
+                         g.min_aperture_m, g.max_aperture_m}) {
+    w.put(v);
+  }
+}
+
+void get_descriptor(BinaryReader& r, HandImageOptions& o, HandGeometry& g) {
+  for (int* v :
+       {&o.cells_along, &o.cells_across, &o.cell_px, &o.block_cells, &o.bins, &o.point_radius_px}) {
+    *v = r.get<std::int32_t>();
+  }
+  const auto normal_features = r.get<std::int32_t>();
+  if (normal_features != 0 && normal_features != 1) r.fail("normal_features flag is not 0 or 1");
+  o.normal_features = normal_features == 1;
+  for (double* v : {&g.finger_width_m, &g.outer_diameter_m, &g.depth_m, &g.height_m, &g.init_bite_m,
+                    &g.min_aperture_m, &g.max_aperture_m}) {
+    *v = r.get<double>();
+  }
+}
+
 }  // namespace
 
 std::size_t TrainingSet::positives() const {
@@ -67,8 +94,7 @@ void TrainingSet::validate() const {
 void save_training_set(const TrainingSet& set, const std::string& path) {
   set.validate();
   BinaryWriter writer(kMagic, kVersion);
-  writer.put(set.descriptor);
-  writer.put(set.geometry);
+  put_descriptor(writer, set.descriptor, set.geometry);
   writer.put<std::uint64_t>(set.dimension);
   writer.put_vector(set.labels);
   writer.put_vector(set.groups);
@@ -80,8 +106,11 @@ void save_training_set(const TrainingSet& set, const std::string& path) {
 TrainingSet load_training_set(const std::string& path) {
   BinaryReader reader(path, kMagic, kVersion, "training set");
   TrainingSet set;
-  set.descriptor = reader.get<HandImageOptions>();
-  set.geometry = reader.get<HandGeometry>();
+  if (reader.version() < kVersion) {
+    reader.fail("format version " + std::to_string(reader.version()) +
+                " was written by an older antipode; re-create the file");
+  }
+  get_descriptor(reader, set.descriptor, set.geometry);
   set.dimension = static_cast<std::size_t>(reader.get<std::uint64_t>());
   set.labels = reader.get_vector<std::int8_t>();
   set.groups = reader.get_vector<std::int32_t>();
