@@ -20,5 +20,6 @@ void register_save_training_set(bt::NodeRegistry& registry);
 void register_load_training_set(bt::NodeRegistry& registry);
 void register_train_classifier(bt::NodeRegistry& registry);
 void register_evaluate_classifier(bt::NodeRegistry& registry);
+void register_cross_validate(bt::NodeRegistry& registry);
 
 }  // namespace antipode::training

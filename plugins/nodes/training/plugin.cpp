@@ -15,6 +15,7 @@ const antipode::PluginFactory kFactories[] = {
     {"node", "SaveTrainingSet", "writes a training set", nullptr, &register_save_training_set},
     {"node", "LoadTrainingSet", "reads a training set", nullptr, &register_load_training_set},
     {"node", "TrainClassifier", "trains the SVM classifier", nullptr, &register_train_classifier},
+    {"node", "CrossValidate", "cross-validates the SVM", nullptr, &register_cross_validate},
     {"node", "EvaluateClassifier", "measures a classifier model", nullptr,
      &register_evaluate_classifier},
 };
