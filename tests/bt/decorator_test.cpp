@@ -69,6 +69,20 @@ TEST_F(DecoratorTest, RepeatRunsASucceedingChildNumCyclesTimes) {
   EXPECT_EQ(probes()["a"].ticks, 3);
 }
 
+TEST_F(DecoratorTest, RepeatWithALabelReportsEachRunAsProgress) {
+  Tree tree = load(
+      one("    Sequence:\n"
+          "      - Repeat: { num_cycles: 3, progress: scenes, child: { Scripted: { id: a } } }\n"
+          "      - Repeat: { num_cycles: 2, child: { Scripted: { id: b } } }"));
+  std::vector<std::string> reports;
+  tree.set_progress_sink(
+      [&](const Node&, std::size_t done, std::size_t total, const std::string& what) {
+        reports.push_back(what + " " + std::to_string(done) + "/" + std::to_string(total));
+      });
+  EXPECT_EQ(tree.tick_once(), Status::kSuccess);
+  EXPECT_EQ(reports, (std::vector<std::string>{"scenes 1/3", "scenes 2/3", "scenes 3/3"}));
+}
+
 TEST_F(DecoratorTest, RepeatStopsAtTheFirstFailure) {
   Tree tree = load(one(
       "    Repeat: { num_cycles: 3, child: { Scripted: { id: a, script: [SUCCESS, FAILURE] } } }"));

@@ -230,8 +230,8 @@ TEST_F(DetectTest, WorkspaceOutsideTheCloudIsAnError) {
 TEST_F(CliTest, SceneDrawsTheSimulatedCellAndChecksGraspFrames) {
   const std::string source = ANTIPODE_TEST_SOURCE_DIR;
   const std::string image = (dir_ / "scene.png").string();
-  const std::string common = "scene " + source + "/scenes/isolated_cylinder.yaml --tree " +
-                             source + "/trees/scene.yaml --image " + image;
+  const std::string common = "scene " + source + "/scenes/isolated_cylinder.yaml --tree " + source +
+                             "/trees/scene.yaml --image " + image;
   Result result = run(common);
   ASSERT_EQ(result.exit_code, 0) << result.out;
   EXPECT_TRUE(fs::exists(image));
@@ -255,3 +255,102 @@ TEST_F(CliTest, VersionAndHelp) {
 }
 
 }  // namespace
+
+// `antipode train` and `eval-classifier` on a few scenes of the simulated cell.
+class TrainTest : public CliTest {
+ protected:
+  std::string tiny_tree() {
+    const std::string source = ANTIPODE_TEST_SOURCE_DIR;
+    return write(
+        "tiny_train.yaml",
+        "components:\n"
+        "  cell: { plugin: bullet_cell, scene: " +
+            source +
+            "/scenes/train_procedural.yaml }\n"
+            "  sampler: { plugin: antipodal_sampler, samples: 300, threads: 2 }\n"
+            "main: train\n"
+            "trees:\n"
+            "  train:\n"
+            "    Sequence:\n"
+            "      - NewTrainingSet: { dataset: \"{dataset}\" }\n"
+            "      - Repeat:\n"
+            "          num_cycles: 4\n"
+            "          progress: scenes\n"
+            "          child:\n"
+            "            Sequence:\n"
+            "              - ResetScene: { cell: cell, first_seed: 2, seed: \"{seed}\" }\n"
+            "              - CaptureCloud: { cell: cell, views: [left, right], cloud: "
+            "\"{cloud}\" }\n"
+            "              - ForceSuccess:\n"
+            "                  child:\n"
+            "                    Sequence:\n"
+            "                      - SampleHands: { sampler: sampler, cloud: \"{cloud}\", "
+            "hands: \"{hands}\" }\n"
+            "                      - LabelHands: { hands: \"{hands}\", labelled: "
+            "\"{labelled}\" }\n"
+            "                      - CollectExamples: { hands: \"{labelled}\", dataset: "
+            "\"{dataset}\", max_hands_per_label: 20, source: \"{seed}\" }\n"
+            "      - SaveTrainingSet: { dataset: \"{dataset}\", file: \"{dataset_file}\" }\n"
+            "      - TrainClassifier: { dataset: \"{dataset}\", model_file: "
+            "\"{model_file}\", c_values: [1], components: 16, folds: 2 }\n");
+  }
+  static std::string bytes_of(const fs::path& path) {
+    std::ifstream in(path, std::ios::binary);
+    return std::string((std::istreambuf_iterator<char>(in)), {});
+  }
+};
+
+TEST_F(TrainTest, SameSeedSameModelAndTheModelEvaluates) {
+  const std::string tree = tiny_tree();
+  const std::string a = (dir_ / "a.model").string(), b = (dir_ / "b.model").string();
+  const std::string data = (dir_ / "a.data").string();
+  Result result = run("train --tree " + tree + " --out " + a + " --dataset " + data);
+  ASSERT_EQ(result.exit_code, 0) << result.out;
+  EXPECT_NE(result.out.find("cross-validation accuracy"), std::string::npos) << result.out;
+  result = run("train --tree " + tree + " --out " + b);
+  ASSERT_EQ(result.exit_code, 0) << result.out;
+  EXPECT_EQ(bytes_of(a), bytes_of(b));
+  EXPECT_FALSE(fs::exists(dir_ / "b.data"));
+  result = run("train --tree " + tree + " --out " + b + " --seed 1");
+  ASSERT_EQ(result.exit_code, 0) << result.out;
+  EXPECT_NE(bytes_of(a), bytes_of(b));
+
+  // The model measured on the examples it was trained on, through a tree of one node.
+  const std::string eval = write("eval.yaml",
+                                 "main: e\n"
+                                 "trees:\n"
+                                 "  e:\n"
+                                 "    Sequence:\n"
+                                 "      - LoadTrainingSet: { file: " +
+                                     data +
+                                     ", dataset: \"{d}\" }\n"
+                                     "      - EvaluateClassifier: { model_file: \"{model_file}\", "
+                                     "dataset: \"{d}\", report_file: \"{report_file}\" }\n");
+  const fs::path report = dir_ / "report.json";
+  result = run("eval-classifier --tree " + eval + " --model " + a + " --report " + report.string());
+  ASSERT_EQ(result.exit_code, 0) << result.out;
+  EXPECT_NE(result.out.find("classified grasp"), std::string::npos) << result.out;
+  std::ifstream in(report);
+  const auto numbers = nlohmann::json::parse(in);
+  const auto& c = numbers["confusion"];
+  EXPECT_EQ(c["tp"].get<int>() + c["fp"].get<int>() + c["tn"].get<int>() + c["fn"].get<int>(),
+            numbers["examples"].get<int>());
+  EXPECT_GT(numbers["accuracy"].get<double>(), 0.8);  // its own training data
+}
+
+TEST_F(TrainTest, ACorruptedModelIsOneLineErrorAtItsKey) {
+  const std::string model = write("bad.model", "ANTPSVM1 but not a model at all");
+  const std::string tree = write("t.yaml",
+                                 "components:\n"
+                                 "  classifier: { plugin: hog_svm_classifier, model: " +
+                                     model +
+                                     " }\n"
+                                     "main: t\n"
+                                     "trees:\n"
+                                     "  t: { AlwaysSuccess: {} }\n");
+  const Result result = run("run -q " + tree);
+  EXPECT_EQ(result.exit_code, 2) << result.out;
+  EXPECT_EQ(result.out.rfind("antipode: error: " + tree + ":2:", 0), 0u) << result.out;
+  EXPECT_NE(result.out.find("classifier model file"), std::string::npos) << result.out;
+  EXPECT_EQ(std::count(result.out.begin(), result.out.end(), '\n'), 1) << result.out;
+}

@@ -4,6 +4,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <regex>
 
 #include "antipode/bt/loader.hpp"
 #include "antipode/plugin/plugin_host.hpp"
@@ -154,6 +155,35 @@ trees:
     CaptureCloud: { cell: cell, cloud: "{cloud}" }
 )");
   EXPECT_EQ(tree.tick_while_running(), bt::Status::kFailure);
+}
+
+TEST_F(PipelineNodesTest, SelectViewsKeepsAViewsPointsAndRefusesMissingViews) {
+  const std::string tree_text = R"(
+components:
+  cell: { plugin: line_cell, points: 5 }
+main: t
+trees:
+  t:
+    Sequence:
+      - CaptureCloud: { cell: cell, cloud: "{cloud}" }
+      - SelectViews: { cloud: "{cloud}", views: VIEWS, selected: "{one}" }
+)";
+  bt::Tree tree = load(std::regex_replace(tree_text, std::regex("VIEWS"), "[0]"));
+  tree.set_log_sink([](const bt::Node&, const std::string&) {});
+  ASSERT_EQ(tree.tick_while_running(), bt::Status::kSuccess);
+  const CloudPtr one = tree.blackboard().get<CloudPtr>("one");
+  EXPECT_EQ(one->size(), 5u);
+  EXPECT_EQ(one->view_masks, std::vector<std::uint32_t>(5, 1u));
+  bt::Tree wrong = load(std::regex_replace(tree_text, std::regex("VIEWS"), "[0, 1]"));
+  wrong.set_log_sink([](const bt::Node&, const std::string&) {});
+  try {
+    wrong.tick_while_running();
+    FAIL() << "expected an error";
+  } catch (const Error& error) {
+    EXPECT_NE(std::string(error.what()).find("view 1 is not in the cloud, which has 1 view(s)"),
+              std::string::npos)
+        << error.what();
+  }
 }
 
 TEST_F(PipelineNodesTest, ComponentOfWrongKindIsRejectedAtLoad) {

@@ -10,8 +10,11 @@ namespace {
 Cloud points_of_views(const Cloud& cloud, const std::vector<int>& views) {
   Cloud out;
   out.frame = cloud.frame;
-  for (const int v : views)
-    out.view_origins_m.push_back(cloud.view_origins_m[static_cast<std::size_t>(v)]);
+  for (const int v : views) {
+    if (static_cast<std::size_t>(v) < cloud.view_origins_m.size()) {
+      out.view_origins_m.push_back(cloud.view_origins_m[static_cast<std::size_t>(v)]);
+    }
+  }
   for (std::size_t i = 0; i < cloud.size(); ++i) {
     const std::uint32_t mask = cloud.view_masks.empty() ? 1u : cloud.view_masks[i];
     std::uint32_t kept = 0;
@@ -48,10 +51,12 @@ class SelectViews final : public bt::SyncActionNode {
     const CloudPtr cloud = get_input<CloudPtr>("cloud");
     const auto views = get_input<std::vector<int>>("views");
     if (views.empty()) fail("views", "views must name at least one view");
+    // A cloud without view origins is one view (view 0), as everywhere else.
+    const std::size_t count = std::max<std::size_t>(1, cloud->view_origins_m.size());
     for (const int v : views) {
-      if (v < 0 || v >= 32 || static_cast<std::size_t>(v) >= cloud->view_origins_m.size()) {
+      if (v < 0 || v >= 32 || static_cast<std::size_t>(v) >= count) {
         fail("views", "view " + std::to_string(v) + " is not in the cloud, which has " +
-                          std::to_string(cloud->view_origins_m.size()) + " view(s)");
+                          std::to_string(count) + " view(s)");
       }
     }
     auto selected = std::make_shared<Cloud>(points_of_views(*cloud, views));
