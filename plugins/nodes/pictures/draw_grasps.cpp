@@ -131,8 +131,14 @@ class DrawGrasps final : public bt::SyncActionNode {
       draw_hand(image, view, hand_body, *hands[i],
                 best ? cv::Scalar(40, 170, 40) : cv::Scalar(0, 140, 255), best ? 2 : 1);
     }
-    const std::string caption = title + ": " + std::to_string(hands.size()) + " of " +
-                                std::to_string(set.hands.size()) + " hands";
+    const auto candidates = std::count_if(set.hands.begin(), set.hands.end(), [](const Hand& h) {
+      return h.rejection == Rejection::kNone;
+    });
+    std::string caption = title + ": best " + std::to_string(hands.size()) + " of " +
+                          std::to_string(candidates) + " hands";
+    if (static_cast<std::size_t>(candidates) != set.hands.size()) {
+      caption += " (" + std::to_string(set.hands.size()) + " before classification)";
+    }
     cv::putText(image, caption, {10, 24}, cv::FONT_HERSHEY_SIMPLEX, 0.6, cv::Scalar(0, 0, 0), 1,
                 cv::LINE_AA);
   }
