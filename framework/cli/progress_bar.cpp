@@ -2,6 +2,7 @@
 
 #include <unistd.h>
 
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <iostream>
@@ -12,7 +13,7 @@ namespace {
 constexpr int kBarWidth = 24;
 
 std::string clock_text(double seconds) {
-  const long total = static_cast<long>(seconds + 0.5);
+  const long total = std::lround(seconds);
   char text[32];
   std::snprintf(text, sizeof(text), "%ld:%02ld", total / 60, total % 60);
   return text;
