@@ -13,6 +13,7 @@
 #include "antipode/interfaces/classifier.hpp"
 #include "antipode/plugin/plugin_host.hpp"
 #include "support/error_of.hpp"
+#include "support/toy_hands.hpp"
 
 namespace antipode {
 namespace {
@@ -20,27 +21,7 @@ namespace {
 namespace fs = std::filesystem;
 using testing::error_of;
 
-// Points in hand coordinates: two surfaces across the closing region (a grasp) or one.
-std::vector<Eigen::Vector3d> toy_points(bool positive, RandomStream& random) {
-  const double start_m = random.uniform(0.0, 0.03);
-  std::vector<double> lines_m;
-  if (positive) {
-    const double width_m = random.uniform(0.02, 0.05);
-    const double centre_m = random.uniform(-0.01, 0.01);
-    lines_m = {centre_m - width_m / 2, centre_m + width_m / 2};
-  } else {
-    lines_m = {random.uniform(-0.03, 0.03)};
-  }
-  std::vector<Eigen::Vector3d> points;
-  for (const double y : lines_m) {
-    for (double x = start_m; x < 0.06; x += 0.001) {
-      points.emplace_back(x, y + random.uniform(-0.001, 0.001), 0.0);
-    }
-  }
-  return points;
-}
-
-// `count` toy hands, each at its own place and orientation, sharing one cloud.
+// `count` toy hands, alternately positive and negative, sharing one cloud.
 struct ToyHands {
   HandSet set;
   std::vector<bool> positive;
@@ -48,22 +29,9 @@ struct ToyHands {
 
 ToyHands toy_hands(std::size_t count, std::uint64_t seed) {
   RandomStream random(seed);
-  auto cloud = std::make_shared<Cloud>();
   ToyHands toy;
-  for (std::size_t i = 0; i < count; ++i) {
-    const bool positive = i % 2 == 0;
-    Hand hand;
-    hand.X_FrameHand = Eigen::Translation3d(0.0, 0.0, static_cast<double>(i)) *
-                       Eigen::AngleAxisd(0.1 * static_cast<double>(i), Eigen::Vector3d::UnitZ());
-    hand.sample_index = static_cast<std::int32_t>(i);
-    for (const Eigen::Vector3d& p : toy_points(positive, random)) {
-      cloud->points_m.push_back((hand.X_FrameHand * p).cast<float>());
-      hand.closing_points.push_back(static_cast<std::int32_t>(cloud->size() - 1));
-    }
-    toy.set.hands.push_back(hand);
-    toy.positive.push_back(positive);
-  }
-  toy.set.cloud = cloud;
+  for (std::size_t i = 0; i < count; ++i) toy.positive.push_back(i % 2 == 0);
+  toy.set = testing::toy_hand_set(toy.positive, random);
   return toy;
 }
 

@@ -21,6 +21,7 @@
 #include "antipode/grasp/training_set.hpp"
 #include "antipode/io/load_cloud.hpp"
 #include "support/error_of.hpp"
+#include "support/toy_hands.hpp"
 
 namespace antipode {
 namespace {
@@ -28,45 +29,11 @@ namespace {
 namespace fs = std::filesystem;
 using testing::error_of;
 
-// Points in hand coordinates of a synthetic closing region: a positive example sees an
-// object's surface on both sides (two lines along the approach), a negative one a single
-// surface somewhere across it.
-std::vector<Eigen::Vector3d> toy_points(bool positive, RandomStream& random) {
-  const double start_m = random.uniform(0.0, 0.03);
-  std::vector<double> lines_m;
-  if (positive) {
-    const double width_m = random.uniform(0.02, 0.05);
-    const double centre_m = random.uniform(-0.01, 0.01);
-    lines_m = {centre_m - width_m / 2, centre_m + width_m / 2};
-  } else {
-    lines_m = {random.uniform(-0.03, 0.03)};
-  }
-  std::vector<Eigen::Vector3d> points;
-  for (const double y : lines_m) {
-    for (double x = start_m; x < 0.06; x += 0.001) {
-      points.emplace_back(x, y + random.uniform(-0.001, 0.001), 0.0);
-    }
-  }
-  return points;
-}
-
-// The descriptors (default options, default hand) of toy hands, each 1 m from the last.
+// The descriptors (default options, default hand) of toy hands.
 std::vector<std::vector<float>> toy_descriptors(const std::vector<bool>& positive,
                                                 RandomStream& random) {
-  auto cloud = std::make_shared<Cloud>();
-  HandSet set;
-  for (std::size_t i = 0; i < positive.size(); ++i) {
-    Hand hand;
-    hand.X_FrameHand = Eigen::Translation3d(0.0, 0.0, static_cast<double>(i)) *
-                       Eigen::AngleAxisd(0.3 * static_cast<double>(i), Eigen::Vector3d::UnitX());
-    for (const Eigen::Vector3d& p : toy_points(positive[i], random)) {
-      cloud->points_m.push_back((hand.X_FrameHand * p).cast<float>());
-      hand.closing_points.push_back(static_cast<std::int32_t>(cloud->size() - 1));
-    }
-    set.hands.push_back(hand);
-  }
-  set.cloud = cloud;
-  return hand_descriptors(set, HandGeometry{}, HandImageOptions{}, 2);
+  return hand_descriptors(testing::toy_hand_set(positive, random), HandGeometry{},
+                          HandImageOptions{}, 2);
 }
 
 // `hands` hands of three descriptors each (as C1, C2, C12), about half of them positive.
