@@ -14,7 +14,8 @@ namespace antipode {
 
 void AntipodalParameters::validate() const {
   if (min_points < 1) {
-    throw Error("antipodal check: min_points must be at least 1, got " + std::to_string(min_points));
+    throw Error("antipodal check: min_points must be at least 1, got " +
+                std::to_string(min_points));
   }
   if (!(max_angle_deg > 0.0 && max_angle_deg <= 90.0)) {
     throw Error("antipodal check: max_angle_deg must be in (0, 90], got " +
@@ -22,7 +23,8 @@ void AntipodalParameters::validate() const {
   }
 }
 
-AntipodalCount count_antipodal_normals(const Hand& hand, const std::vector<Eigen::Vector3f>& normals,
+AntipodalCount count_antipodal_normals(const Hand& hand,
+                                       const std::vector<Eigen::Vector3f>& normals,
                                        double max_angle_deg) {
   const float cos_theta = static_cast<float>(std::cos(max_angle_deg * M_PI / 180.0));
   const Eigen::Vector3f closing = hand.closing().cast<float>();
@@ -57,24 +59,8 @@ std::vector<AntipodalCount> count_antipodal_normals(const HandSet& set,
   options.antipodal.validate();
   options.normals.validate();
   if (set.hands.empty()) return {};
-  if (set.cloud == nullptr) throw Error("antipodal check: the hand set has no cloud");
-  const Cloud& cloud = *set.cloud;
-  // The union of all closing points, in index order: each normal is estimated once.
-  std::vector<std::uint8_t> needed(cloud.size(), 0);
-  for (const Hand& hand : set.hands) {
-    for (const std::int32_t i : hand.closing_points) {
-      if (i < 0 || static_cast<std::size_t>(i) >= cloud.size()) {
-        throw Error("antipodal check: closing point " + std::to_string(i) +
-                    " is outside the cloud of " + std::to_string(cloud.size()) + " points");
-      }
-      needed[static_cast<std::size_t>(i)] = 1;
-    }
-  }
-  std::vector<std::int32_t> which;
-  for (std::size_t i = 0; i < needed.size(); ++i) {
-    if (needed[i]) which.push_back(static_cast<std::int32_t>(i));
-  }
-  const std::vector<Eigen::Vector3f> normals = estimate_normals(cloud, options.normals, &which);
+  const std::vector<Eigen::Vector3f> normals =
+      closing_point_normals(set, options.normals, "antipodal check");
   std::vector<AntipodalCount> counts(set.hands.size());
   const int threads = options.normals.threads;
   tbb::task_arena arena(threads > 0 ? threads : tbb::task_arena::automatic);

@@ -83,16 +83,6 @@ void check_point(const Cloud& cloud, std::int32_t i) {
   }
 }
 
-std::vector<std::int32_t> all_closing_points(const HandSet& set) {
-  std::vector<std::int32_t> points;
-  for (const Hand& hand : set.hands) {
-    points.insert(points.end(), hand.closing_points.begin(), hand.closing_points.end());
-  }
-  std::sort(points.begin(), points.end());
-  points.erase(std::unique(points.begin(), points.end()), points.end());
-  return points;
-}
-
 int blocks(int cells, int block_cells) { return (cells + block_cells - 1) / block_cells; }
 
 // Weight of the normal statistics against the HOG numbers (each at most 0.2 after L2-Hys):
@@ -214,8 +204,7 @@ std::vector<std::vector<float>> hand_descriptors(const HandSet& set, const HandG
   if (options.normal_features) {
     NormalEstimationOptions normal_options;
     normal_options.threads = threads;
-    const auto points = all_closing_points(set);
-    normals = estimate_normals(*set.cloud, normal_options, &points);
+    normals = closing_point_normals(set, normal_options, "hand descriptors");
   }
   tbb::task_arena arena(threads > 0 ? threads : tbb::task_arena::automatic);
   arena.execute([&] {

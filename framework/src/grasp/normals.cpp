@@ -18,7 +18,8 @@ namespace {
 
 // Unit direction from point `i` towards what saw it (see estimate_normals); zero when the
 // directions cancel out.
-Eigen::Vector3f toward_sensors(const Cloud& cloud, std::size_t i, const Eigen::Vector3f& outward_from) {
+Eigen::Vector3f toward_sensors(const Cloud& cloud, std::size_t i,
+                               const Eigen::Vector3f& outward_from) {
   const Eigen::Vector3f& p = cloud.points_m[i];
   Eigen::Vector3f sum = Eigen::Vector3f::Zero();
   if (cloud.view_origins_m.empty()) {
@@ -96,13 +97,37 @@ std::vector<Eigen::Vector3f> estimate_normals(const Cloud& cloud,
                           if (viewer.isZero()) continue;
                           const Eigen::Vector3f& p = cloud.points_m[i];
                           index.radius_search(p, radius, neighbours);
-                          const LocalFrame frame =
-                              estimate_local_frame(cloud.points_m, neighbours, p, viewer, frame_options);
+                          const LocalFrame frame = estimate_local_frame(cloud.points_m, neighbours,
+                                                                        p, viewer, frame_options);
                           if (frame.usable()) normals[i] = frame.normal;
                         }
                       });
   });
   return normals;
+}
+
+std::vector<Eigen::Vector3f> closing_point_normals(const HandSet& set,
+                                                   const NormalEstimationOptions& options,
+                                                   const std::string& who) {
+  if (set.hands.empty()) return {};
+  if (set.cloud == nullptr) throw Error(who + ": the hand set has no cloud");
+  const Cloud& cloud = *set.cloud;
+  // The union of all closing points, in index order: each normal is estimated once.
+  std::vector<std::uint8_t> needed(cloud.size(), 0);
+  for (const Hand& hand : set.hands) {
+    for (const std::int32_t i : hand.closing_points) {
+      if (i < 0 || static_cast<std::size_t>(i) >= cloud.size()) {
+        throw Error(who + ": closing point " + std::to_string(i) + " is outside the cloud of " +
+                    std::to_string(cloud.size()) + " points");
+      }
+      needed[static_cast<std::size_t>(i)] = 1;
+    }
+  }
+  std::vector<std::int32_t> which;
+  for (std::size_t i = 0; i < needed.size(); ++i) {
+    if (needed[i]) which.push_back(static_cast<std::int32_t>(i));
+  }
+  return estimate_normals(cloud, options, &which);
 }
 
 }  // namespace antipode

@@ -4,11 +4,13 @@
 
 #include <cstdint>
 #include <optional>
+#include <string>
 #include <vector>
 
 #include <Eigen/Core>
 
 #include "antipode/core/cloud.hpp"
+#include "antipode/interfaces/hand_set.hpp"
 
 namespace antipode {
 
@@ -43,5 +45,12 @@ struct NormalEstimationOptions {
 std::vector<Eigen::Vector3f> estimate_normals(const Cloud& cloud,
                                               const NormalEstimationOptions& options,
                                               const std::vector<std::int32_t>* which = nullptr);
+
+/// estimate_normals() of `set`'s cloud for the union of all its hands' closing points, each
+/// estimated once (the others get zero). Throws antipode::Error when the set has hands but
+/// no cloud, or a closing point is outside the cloud (`who` names the caller in messages).
+std::vector<Eigen::Vector3f> closing_point_normals(const HandSet& set,
+                                                   const NormalEstimationOptions& options,
+                                                   const std::string& who);
 
 }  // namespace antipode
