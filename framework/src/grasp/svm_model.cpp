@@ -11,6 +11,7 @@
 
 #include "antipode/core/binary_file.hpp"
 #include "antipode/core/error.hpp"
+#include "image_options_io.hpp"
 
 namespace antipode {
 namespace {
@@ -267,11 +268,7 @@ void SvmModel::save(const std::string& path) const {
   validate("SVM model for " + path);
   BinaryWriter w(kMagic, kVersion);
   w.put_string(descriptor.name);
-  const HandImageOptions& o = descriptor.image;
-  for (const int v : {o.cells_along, o.cells_across, o.cell_px, o.block_cells, o.bins,
-                      o.point_radius_px, o.normal_features ? 1 : 0}) {
-    w.put<std::int32_t>(v);
-  }
+  detail::put_image_options(w, descriptor.image);
   w.put(descriptor.depth_m);
   w.put(descriptor.max_aperture_m);
   w.put(descriptor.height_m);
@@ -298,14 +295,7 @@ SvmModel SvmModel::load(const std::string& path) {
   BinaryReader r(path, kMagic, kVersion, "classifier model");
   SvmModel m;
   m.descriptor.name = r.get_string();
-  HandImageOptions& o = m.descriptor.image;
-  for (int* v :
-       {&o.cells_along, &o.cells_across, &o.cell_px, &o.block_cells, &o.bins, &o.point_radius_px}) {
-    *v = r.get<std::int32_t>();
-  }
-  const auto normal_features = r.get<std::int32_t>();
-  if (normal_features != 0 && normal_features != 1) r.fail("normal_features flag is not 0 or 1");
-  o.normal_features = normal_features == 1;
+  m.descriptor.image = detail::get_image_options(r);
   m.descriptor.depth_m = r.get<double>();
   m.descriptor.max_aperture_m = r.get<double>();
   m.descriptor.height_m = r.get<double>();

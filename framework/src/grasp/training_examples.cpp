@@ -9,6 +9,7 @@
 
 #include "antipode/core/error.hpp"
 #include "antipode/geometry/hand_body.hpp"
+#include "antipode/grasp/svm_model.hpp"
 
 namespace antipode {
 namespace {
@@ -18,16 +19,6 @@ void in_arena(int threads, Work&& work) {
   if (threads < 0) throw Error("threads must be >= 0, got " + std::to_string(threads));
   tbb::task_arena arena(threads > 0 ? threads : tbb::task_arena::automatic);
   arena.execute(work);
-}
-
-bool same_descriptor(const HandImageOptions& a, const HandImageOptions& b) {
-  return a.cells_along == b.cells_along && a.cells_across == b.cells_across &&
-         a.cell_px == b.cell_px && a.block_cells == b.block_cells && a.bins == b.bins &&
-         a.point_radius_px == b.point_radius_px && a.normal_features == b.normal_features;
-}
-
-bool same_geometry(const HandGeometry& a, const HandGeometry& b) {
-  return a.depth_m == b.depth_m && a.max_aperture_m == b.max_aperture_m && a.height_m == b.height_m;
 }
 
 // The closing points of `hand` seen from `view` (-1: all of them).
@@ -62,7 +53,8 @@ void adopt_or_check(TrainingSet& out, const HandImageOptions& descriptor,
     out.dimension = descriptor.descriptor_size();
     return;
   }
-  if (!same_descriptor(out.descriptor, descriptor) || !same_geometry(out.geometry, geometry)) {
+  if (!SvmDescriptorSpec::of(out.descriptor, out.geometry)
+           .matches(SvmDescriptorSpec::of(descriptor, geometry))) {
     throw Error(
         "training examples: these hands' descriptors (or hand geometry) differ from the "
         "training set's; collect one set per descriptor and hand");

@@ -5,6 +5,7 @@
 
 #include "antipode/core/binary_file.hpp"
 #include "antipode/core/error.hpp"
+#include "image_options_io.hpp"
 
 namespace antipode {
 namespace {
@@ -13,10 +14,7 @@ constexpr std::uint32_t kVersion = 2;  // 1: options as raw structs, no longer r
 
 // Field by field, so that the bytes depend only on the values (no struct padding).
 void put_descriptor(BinaryWriter& w, const HandImageOptions& o, const HandGeometry& g) {
-  for (const int v : {o.cells_along, o.cells_across, o.cell_px, o.block_cells, o.bins,
-                      o.point_radius_px, o.normal_features ? 1 : 0}) {
-    w.put<std::int32_t>(v);
-  }
+  detail::put_image_options(w, o);
   for (const double v : {g.finger_width_m, g.outer_diameter_m, g.depth_m, g.height_m, g.init_bite_m,
                          g.min_aperture_m, g.max_aperture_m}) {
     w.put(v);
@@ -24,13 +22,7 @@ void put_descriptor(BinaryWriter& w, const HandImageOptions& o, const HandGeomet
 }
 
 void get_descriptor(BinaryReader& r, HandImageOptions& o, HandGeometry& g) {
-  for (int* v :
-       {&o.cells_along, &o.cells_across, &o.cell_px, &o.block_cells, &o.bins, &o.point_radius_px}) {
-    *v = r.get<std::int32_t>();
-  }
-  const auto normal_features = r.get<std::int32_t>();
-  if (normal_features != 0 && normal_features != 1) r.fail("normal_features flag is not 0 or 1");
-  o.normal_features = normal_features == 1;
+  o = detail::get_image_options(r);
   for (double* v : {&g.finger_width_m, &g.outer_diameter_m, &g.depth_m, &g.height_m, &g.init_bite_m,
                     &g.min_aperture_m, &g.max_aperture_m}) {
     *v = r.get<double>();
