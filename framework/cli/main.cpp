@@ -43,6 +43,14 @@ void add_run(CLI::App& app, Commands& commands) {
   run->add_flag("-q,--quiet", commands.run.quiet, "No per-node trace on the console");
 }
 
+// --set, --seed and -v of the commands that run a tree of their own (detect, scene, ...).
+void add_tree_run_options(CLI::App& command, std::vector<std::string>& set, std::uint64_t& seed,
+                          bool& verbose) {
+  command.add_option("--set", set, "Override, as for 'run' (repeatable)");
+  command.add_option("--seed", seed, "Seed of every random stream (default 0)");
+  command.add_flag("-v,--verbose", verbose, "Print every node's status changes");
+}
+
 void add_detect(CLI::App& app, Commands& commands) {
   auto& options = commands.detect;
   CLI::App* detect = app.add_subcommand("detect", "Detect grasps in a PCD or PLY cloud");
@@ -50,9 +58,7 @@ void add_detect(CLI::App& app, Commands& commands) {
   detect->add_option("--tree", options.tree_path, "Detection tree")->capture_default_str();
   detect->add_option("--out", options.out_path, "Write the grasps as JSON");
   detect->add_option("--image", options.image_path, "Draw the cloud and grasps into a PNG");
-  detect->add_option("--set", options.set, "Override, as for 'run' (repeatable)");
-  detect->add_option("--seed", options.seed, "Seed of every random stream (default 0)");
-  detect->add_flag("-v,--verbose", options.verbose, "Print every node's status changes");
+  add_tree_run_options(*detect, options.set, options.seed, options.verbose);
 }
 
 void add_scene(CLI::App& app, Commands& commands) {
@@ -62,9 +68,7 @@ void add_scene(CLI::App& app, Commands& commands) {
   scene->add_option("--image", options.image_path, "Output PNG")->capture_default_str();
   scene->add_option("--grasps", options.grasps_path, "Grasps JSON to draw (from --out)");
   scene->add_option("--tree", options.tree_path, "Scene tree")->capture_default_str();
-  scene->add_option("--set", options.set, "Override, as for 'run' (repeatable)");
-  scene->add_option("--seed", options.seed, "Seed of every random stream (default 0)");
-  scene->add_flag("-v,--verbose", options.verbose, "Print every node's status changes");
+  add_tree_run_options(*scene, options.set, options.seed, options.verbose);
 }
 
 void add_train(CLI::App& app, Commands& commands) {
@@ -74,9 +78,7 @@ void add_train(CLI::App& app, Commands& commands) {
   train->add_option("--out", options.model_path, "Model file to write")->capture_default_str();
   train->add_option("--dataset", options.dataset_path, "Also keep the examples in this file");
   train->add_option("--tree", options.tree_path, "Training tree")->capture_default_str();
-  train->add_option("--set", options.set, "Override, as for 'run' (repeatable)");
-  train->add_option("--seed", options.seed, "Seed of every random stream (default 0)");
-  train->add_flag("-v,--verbose", options.verbose, "Print every node's status changes");
+  add_tree_run_options(*train, options.set, options.seed, options.verbose);
 }
 
 void add_eval(CLI::App& app, Commands& commands) {
@@ -87,9 +89,7 @@ void add_eval(CLI::App& app, Commands& commands) {
   eval->add_option("--model", options.model_path, "Model file")->capture_default_str();
   eval->add_option("--report", options.report_path, "Write the numbers as JSON");
   eval->add_option("--tree", options.tree_path, "Evaluation tree")->capture_default_str();
-  eval->add_option("--set", options.set, "Override, as for 'run' (repeatable)");
-  eval->add_option("--seed", options.seed, "Seed of every random stream (default 0)");
-  eval->add_flag("-v,--verbose", options.verbose, "Print every node's status changes");
+  add_tree_run_options(*eval, options.set, options.seed, options.verbose);
 }
 
 int dispatch(const CLI::App& app, const Commands& commands) {
