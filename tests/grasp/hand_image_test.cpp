@@ -86,12 +86,18 @@ TEST(HandImageTest, AHandTurnedAboutItsApproachSeesTheImageMirrored) {
   const auto b = normal_statistics(p.cloud, turned, HandGeometry{}, options, normals);
   ASSERT_EQ(a.size(), options.normal_features_size());
   const int across = 6;  // blocks of 2 x 2 cells across 12 cells
-  for (std::size_t block = 0; block < a.size() / 3; ++block) {
+  const std::size_t blocks = 5 * 6;
+  for (std::size_t block = 0; block < blocks; ++block) {
     const std::size_t row = block / across, col = block % across;
     const std::size_t other = row * across + (across - 1 - col);
     EXPECT_NEAR(a[3 * block], -b[3 * other], 1e-6);
     EXPECT_NEAR(a[3 * block + 1], b[3 * other + 1], 1e-6);
     EXPECT_NEAR(a[3 * block + 2], b[3 * other + 2], 1e-6);
+  }
+  // The alignment counts: +closing and -closing swap.
+  for (std::size_t k = 0; k < 4; ++k) {
+    EXPECT_EQ(a[3 * blocks + k], b[3 * blocks + 4 + k]);
+    EXPECT_EQ(a[3 * blocks + 4 + k], b[3 * blocks + k]);
   }
 }
 
@@ -104,21 +110,45 @@ TEST(HandImageTest, NormalStatisticsAverageEachBlock) {
                                                 Eigen::Vector3f::Zero()};  // no normal: not counted
   const HandImageOptions options;
   const auto f = normal_statistics(p.cloud, p.hand, HandGeometry{}, options, normals);
-  ASSERT_EQ(f.size(), 3u * 5u * 6u);
+  ASSERT_EQ(f.size(), 3u * 5u * 6u + 8u);
   EXPECT_NEAR(f[0], 4.0 * (1.0 + 0.6) / 2.0, 1e-5);  // mean n . closing
   EXPECT_NEAR(f[1], 4.0 * (0.0 + 0.8) / 2.0, 1e-5);  // mean |n . axis|
   EXPECT_NEAR(f[2], 4.0 * std::log1p(2.0) / std::log1p(64.0), 1e-5);
   const std::size_t tip = 3 * (4 * 6 + 3);  // last block row, column 36 -> block 3
   EXPECT_EQ(f[tip + 2], 0.0f);
   float others = 0.0f;
-  for (std::size_t i = 3; i < f.size(); ++i) others += std::abs(f[i]);
+  for (std::size_t i = 3; i < 3u * 5u * 6u; ++i) others += std::abs(f[i]);
   EXPECT_EQ(others, 0.0f);
+}
+
+TEST(HandImageTest, AlignmentCountsFollowDefinition3sAngles) {
+  // Normals at 5, 15, 25, 40 and 60 degrees from +closing, one at 15 degrees from -closing.
+  std::vector<Eigen::Vector3d> in_hand;
+  for (int i = 0; i < 6; ++i) in_hand.emplace_back(0.01 + 0.008 * i, 0.0, 0.0);
+  const Placed p = placed(in_hand);
+  const Eigen::Matrix3d R = p.hand.X_FrameHand.linear();
+  const auto at = [&](double degrees, double side) {
+    const double a = degrees * M_PI / 180.0;
+    return (R * Eigen::Vector3d(std::sin(a), side * std::cos(a), 0.0)).cast<float>().eval();
+  };
+  const std::vector<Eigen::Vector3f> normals = {at(5, 1),  at(15, 1), at(25, 1),
+                                                at(40, 1), at(60, 1), at(15, -1)};
+  const HandImageOptions options;
+  const auto f = normal_statistics(p.cloud, p.hand, HandGeometry{}, options, normals);
+  ASSERT_EQ(f.size(), options.normal_features_size());
+  const auto log_count = [](int k) { return 12.0 * std::log1p(k) / std::log1p(64.0); };
+  const std::size_t first = 3 * 5 * 6;
+  // Within 10, 20, 30, 45 degrees of +closing: 1, 2, 3, 4 points; of -closing: 0, 1, 1, 1.
+  const std::vector<int> expected = {1, 2, 3, 4, 0, 1, 1, 1};
+  for (std::size_t k = 0; k < expected.size(); ++k) {
+    EXPECT_NEAR(f[first + k], log_count(expected[k]), 1e-5) << k;
+  }
 }
 
 TEST(HandImageTest, DescriptorHasThePapersLayoutAndIsZeroForAnEmptyImage) {
   HandImageOptions options;
   EXPECT_EQ(options.hog_size(), 9u * 11u * 4u * 9u);  // 10 x 12 cells, 2 x 2 blocks
-  EXPECT_EQ(options.descriptor_size(), options.hog_size() + 90u);
+  EXPECT_EQ(options.descriptor_size(), options.hog_size() + 90u + 8u);
   options.normal_features = false;
   EXPECT_EQ(options.descriptor_size(), options.hog_size());
   const Placed empty = placed({});

@@ -427,6 +427,20 @@ TEST(SvmTest, ConfusionMatrixRates) {
   EXPECT_EQ(ConfusionMatrix{}.precision(), 0.0);
 }
 
+TEST(TrainingSetTest, GroupedByRedrawsTheFoldGroups) {
+  TrainingSet set;
+  set.add({1.0f}, true, 0, 5);  // hand 0 (two views) and hand 1 from scene 5, hand 2 from 6
+  set.add({2.0f}, true, 0, 5);
+  set.add({3.0f}, false, 1, 5);
+  set.add({4.0f}, false, 2, 6);
+  EXPECT_EQ(grouped_by(set, "example").groups, (std::vector<std::int32_t>{0, 1, 2, 3}));
+  EXPECT_EQ(grouped_by(set, "hand").groups, (std::vector<std::int32_t>{0, 0, 1, 2}));
+  EXPECT_EQ(grouped_by(set, "scene").groups, (std::vector<std::int32_t>{5, 5, 5, 6}));
+  EXPECT_EQ(grouped_by(set, "scene").features, set.features);
+  EXPECT_EQ(error_of([&] { grouped_by(set, "object"); }),
+            "folds by 'object': expected example, hand or scene");
+}
+
 TEST(TrainingSetTest, SaveLoadRoundTripAndDimensionErrors) {
   const TrainingSet set = toy_set(5, 4);
   const std::string path = temp_path("set.data");

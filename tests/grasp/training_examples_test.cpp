@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <memory>
 
+#include "antipode/core/view_selection.hpp"
 #include "antipode/grasp/training_examples.hpp"
 #include "support/error_of.hpp"
 #include "synthetic_shapes.hpp"
@@ -85,6 +86,49 @@ TEST(TrainingExamplesTest, EveryLabelledHandGivesOneDescriptorPerView) {
   EXPECT_NE(row(0), row(1));
   EXPECT_NE(row(2), row(0));
   EXPECT_NE(row(2), row(1));
+}
+
+TEST(TrainingExamplesTest, ASingleViewDescriptorIsComputedOnThatViewsPointsAlone) {
+  // Hands on the box's top edge, where the views' neighbourhoods differ: normals fitted on
+  // the two-view cloud are not those a one-sensor robot would get.
+  const auto both = two_view_box();
+  HandSet set{both, {}, HandGeometry{}};
+  for (const double y : {-0.02, 0.0, 0.02}) {
+    Hand hand = hand_at(*both, kDown, Eigen::Vector3d::UnitX(), {0.0, y, 0.06});
+    hand.label = HandLabel::kPositive;
+    set.hands.push_back(hand);
+  }
+  ExampleOptions options;
+  options.single_views = {1};
+  options.all_views = false;
+  TrainingSet out;
+  add_examples(set, options, 0, RandomStream(1), out);
+  ASSERT_EQ(out.size(), set.hands.size());
+
+  std::vector<std::int32_t> new_index;
+  HandSet right{std::make_shared<Cloud>(points_of_views(*both, {1}, &new_index)), {}, set.geometry};
+  HandSet right_on_both{both, {}, set.geometry};  // same points, two-view neighbourhoods
+  for (const Hand& hand : set.hands) {
+    Hand seen = hand, seen_in_both = hand;
+    seen.closing_points.clear();
+    seen_in_both.closing_points.clear();
+    for (const std::int32_t i : hand.closing_points) {
+      if (new_index[static_cast<std::size_t>(i)] < 0) continue;
+      seen.closing_points.push_back(new_index[static_cast<std::size_t>(i)]);
+      seen_in_both.closing_points.push_back(i);
+    }
+    right.hands.push_back(seen);
+    right_on_both.hands.push_back(seen_in_both);
+  }
+  const auto expected = hand_descriptors(right, set.geometry, options.descriptor, 1);
+  const auto two_view_normals =
+      hand_descriptors(right_on_both, set.geometry, options.descriptor, 1);
+  bool differs = false;
+  for (std::size_t h = 0; h < expected.size(); ++h) {
+    EXPECT_EQ(std::vector<float>(out.row(h), out.row(h) + out.dimension), expected[h]) << h;
+    differs = differs || expected[h] != two_view_normals[h];
+  }
+  EXPECT_TRUE(differs) << "the test's hands do not tell the two clouds apart";
 }
 
 TEST(TrainingExamplesTest, AViewWithTooFewPointsGivesNoDescriptor) {

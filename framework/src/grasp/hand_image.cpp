@@ -1,6 +1,7 @@
 #include "antipode/grasp/hand_image.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <string>
 
@@ -91,6 +92,17 @@ int blocks(int cells, int block_cells) { return (cells + block_cells - 1) / bloc
 // accuracy on the training scenes: 93.5% at weight 1, 93.9% at 4).
 constexpr double kNormalWeight = 4.0;
 
+// Angles (degrees) between a normal and +closing or -closing under which normal_statistics()
+// counts points: Definition 3 asks for k points within theta (20 degrees by default) on each
+// side, and the counts at neighbouring angles let the classifier allow for the noise of
+// normals fitted to one view.
+constexpr std::array<double, 4> kAlignmentAnglesDeg = {10.0, 20.0, 30.0, 45.0};
+
+// Weight of those counts: they are what the label is made of, and the classifier's kernel
+// weighs a feature by its variance (svm_training.cpp). Chosen by cross-validation on the
+// training set, whole scenes held out (C = 0.1): 92.96% at 4 (kNormalWeight), 94.48% at 12.
+constexpr double kAlignmentWeight = 12.0;
+
 }  // namespace
 
 std::size_t HandImageOptions::hog_size() const {
@@ -103,7 +115,8 @@ std::size_t HandImageOptions::hog_size() const {
 std::size_t HandImageOptions::normal_features_size() const {
   if (!normal_features) return 0;
   return 3 * static_cast<std::size_t>(blocks(cells_along, block_cells)) *
-         static_cast<std::size_t>(blocks(cells_across, block_cells));
+             static_cast<std::size_t>(blocks(cells_across, block_cells)) +
+         2 * kAlignmentAnglesDeg.size();
 }
 
 std::size_t HandImageOptions::descriptor_size() const {
@@ -163,6 +176,11 @@ std::vector<float> normal_statistics(const Cloud& cloud, const Hand& hand,
       static_cast<std::size_t>(blocks(options.cells_along, options.block_cells) * across);
   std::vector<double> closing(count, 0.0), tilt(count, 0.0);
   std::vector<int> points(count, 0);
+  std::array<int, 2 * kAlignmentAnglesDeg.size()> aligned{};  // +closing angles, -closing angles
+  std::array<double, kAlignmentAnglesDeg.size()> cos_angle{};
+  for (std::size_t a = 0; a < cos_angle.size(); ++a) {
+    cos_angle[a] = std::cos(kAlignmentAnglesDeg[a] * M_PI / 180.0);
+  }
   const PixelMap pixel(hand, geometry, options);
   for (const std::int32_t i : hand.closing_points) {
     check_point(cloud, i);
@@ -170,19 +188,27 @@ std::vector<float> normal_statistics(const Cloud& cloud, const Hand& hand,
     if (n.isZero()) continue;
     const auto [row, col] = pixel(cloud.points_m[static_cast<std::size_t>(i)]);
     const auto b = static_cast<std::size_t>((row / block_px) * across + col / block_px);
-    closing[b] += n.dot(hand.closing());
+    const double along_closing = n.dot(hand.closing());
+    closing[b] += along_closing;
     tilt[b] += std::abs(n.dot(hand.axis()));
     ++points[b];
+    for (std::size_t a = 0; a < cos_angle.size(); ++a) {
+      if (along_closing >= cos_angle[a]) ++aligned[a];
+      if (-along_closing >= cos_angle[a]) ++aligned[cos_angle.size() + a];
+    }
   }
+  const auto log_count = [](int k, double weight) {
+    return static_cast<float>(weight * std::log1p(k) / std::log1p(64.0));
+  };
   std::vector<float> features;
-  features.reserve(3 * count);
+  features.reserve(options.normal_features_size());
   for (std::size_t b = 0; b < count; ++b) {
     const double k = std::max(points[b], 1);
     features.push_back(static_cast<float>(kNormalWeight * closing[b] / k));
     features.push_back(static_cast<float>(kNormalWeight * tilt[b] / k));
-    features.push_back(
-        static_cast<float>(kNormalWeight * std::log1p(points[b]) / std::log1p(64.0)));
+    features.push_back(log_count(points[b], kNormalWeight));
   }
+  for (const int k : aligned) features.push_back(log_count(k, kAlignmentWeight));
   return features;
 }
 

@@ -115,7 +115,13 @@ MatrixF orthonormal_columns(const MatrixF& y) {
   return q.cast<float>();
 }
 
-// Fills model.basis and model.scale with the top `wanted` principal directions of `a`.
+// Fills model.basis and model.scale with the top `wanted` principal directions of `a`. All
+// components share one scale, 1 / the root mean square of their standard deviations, so the
+// reduced descriptors keep the PCA's proportions (a component's weight in the kernel is its
+// variance) at unit variance per component on average. Whitening each component to unit
+// variance instead gave the many weak components (mostly HOG detail) as much say as the
+// leading ones: 94.2% against 95.9% hand-grouped cross-validation on the shipped training
+// set, 91.7% against 94.9% on novel objects (docs/results.md).
 void principal_components(const RowMatrixF& a, std::size_t wanted, std::uint64_t seed,
                           SvmModel& model) {
   const Eigen::Index d = a.cols();
@@ -139,6 +145,7 @@ void principal_components(const RowMatrixF& a, std::size_t wanted, std::uint64_t
   const double samples = std::max<double>(static_cast<double>(a.rows()) - 1.0, 1.0);
   model.basis.clear();
   model.scale.clear();
+  double variance_sum = 0.0;
   for (Eigen::Index j = width - 1; j >= 0 && model.scale.size() < wanted; --j) {
     if (!(values(j) > 1e-10 * largest) || largest <= 0.0) break;
     Eigen::VectorXd direction = q.cast<double>() * eigen.eigenvectors().col(j);
@@ -147,11 +154,15 @@ void principal_components(const RowMatrixF& a, std::size_t wanted, std::uint64_t
     direction.cwiseAbs().maxCoeff(&peak);
     if (direction(peak) < 0.0) direction = -direction;  // a canonical sign
     for (Eigen::Index c = 0; c < d; ++c) model.basis.push_back(static_cast<float>(direction(c)));
-    model.scale.push_back(static_cast<float>(1.0 / std::sqrt(values(j) / samples)));
+    variance_sum += values(j) / samples;
+    model.scale.push_back(0.0f);
   }
   if (model.scale.empty()) {
     throw Error("SVM training: all training descriptors are identical; nothing to learn");
   }
+  const double mean_variance = variance_sum / static_cast<double>(model.scale.size());
+  std::fill(model.scale.begin(), model.scale.end(),
+            static_cast<float>(1.0 / std::sqrt(mean_variance)));
 }
 
 // A model holding only the reduction (mean, basis, scale) fitted to `set`.

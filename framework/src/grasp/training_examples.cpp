@@ -8,6 +8,7 @@
 #include <string>
 
 #include "antipode/core/error.hpp"
+#include "antipode/core/view_selection.hpp"
 #include "antipode/geometry/hand_body.hpp"
 #include "antipode/grasp/svm_model.hpp"
 
@@ -21,15 +22,45 @@ void in_arena(int threads, Work&& work) {
   arena.execute(work);
 }
 
-// The closing points of `hand` seen from `view` (-1: all of them).
-std::vector<std::int32_t> points_seen_from(const Cloud& cloud, const Hand& hand, int view) {
-  if (view < 0 || cloud.view_masks.empty()) return hand.closing_points;
+// The closing points of `hand` seen from the view whose points `new_index` renumbers (see
+// points_of_views), in that view's numbering.
+std::vector<std::int32_t> points_seen(const Hand& hand,
+                                      const std::vector<std::int32_t>& new_index) {
   std::vector<std::int32_t> seen;
-  const std::uint32_t bit = 1u << static_cast<unsigned>(view);
   for (const std::int32_t i : hand.closing_points) {
-    if ((cloud.view_masks[static_cast<std::size_t>(i)] & bit) != 0) seen.push_back(i);
+    const std::int32_t j = new_index[static_cast<std::size_t>(i)];
+    if (j >= 0) seen.push_back(j);
   }
   return seen;
+}
+
+// What one view (or all of them) shows of the chosen hands, as the classifier would get it:
+// a hand set on the points of that view alone, so that descriptors (normals included) are
+// computed from what that view saw.
+struct ViewImages {
+  HandSet hands;
+  std::vector<std::size_t> owner;  // per image: index into the chosen hands
+};
+
+ViewImages view_images(const HandSet& labelled, const std::vector<std::size_t>& chosen, int view,
+                       std::size_t min_points) {
+  ViewImages out;
+  out.hands.geometry = labelled.geometry;
+  std::vector<std::int32_t> new_index;
+  if (view < 0) {
+    out.hands.cloud = labelled.cloud;
+  } else {
+    out.hands.cloud =
+        std::make_shared<const Cloud>(points_of_views(*labelled.cloud, {view}, &new_index));
+  }
+  for (std::size_t c = 0; c < chosen.size(); ++c) {
+    Hand seen = labelled.hands[chosen[c]];
+    if (view >= 0) seen.closing_points = points_seen(seen, new_index);
+    if (seen.closing_points.size() < min_points) continue;
+    out.hands.hands.push_back(std::move(seen));
+    out.owner.push_back(c);
+  }
+  return out;
 }
 
 void check_views(const Cloud& cloud, const ExampleOptions& options) {
@@ -115,29 +146,29 @@ ExampleCounts add_examples(const HandSet& labelled, const ExampleOptions& option
   check_views(*labelled.cloud, options);
   adopt_or_check(out, options.descriptor, labelled.geometry);
 
-  // One pseudo-hand per (hand, view) whose closing points are that view's; imaged together.
+  // Per view, the descriptors of the chosen hands it shows; then examples hand by hand.
   std::vector<int> views = options.single_views;
   if (options.all_views) views.push_back(-1);
-  HandSet images{labelled.cloud, {}, labelled.geometry};
-  std::vector<std::pair<std::size_t, bool>> owner;  // hand index, positive
-  for (const std::size_t h : chosen_hands(labelled, options.max_hands_per_label, random, counts)) {
-    const Hand& hand = labelled.hands[h];
-    const bool positive = hand.label == HandLabel::kPositive;
-    for (const int view : views) {
-      Hand seen = hand;
-      seen.closing_points = points_seen_from(*labelled.cloud, hand, view);
-      if (seen.closing_points.size() < options.min_points) continue;
-      images.hands.push_back(std::move(seen));
-      owner.emplace_back(h, positive);
+  const std::vector<std::size_t> chosen =
+      chosen_hands(labelled, options.max_hands_per_label, random, counts);
+  std::vector<std::vector<const std::vector<float>*>> per_hand(chosen.size());
+  std::vector<std::vector<std::vector<float>>> descriptors;
+  descriptors.reserve(views.size());
+  for (const int view : views) {
+    const ViewImages images = view_images(labelled, chosen, view, options.min_points);
+    descriptors.push_back(
+        hand_descriptors(images.hands, labelled.geometry, options.descriptor, options.threads));
+    for (std::size_t i = 0; i < images.owner.size(); ++i) {
+      per_hand[images.owner[i]].push_back(&descriptors.back()[i]);
     }
   }
-  const auto descriptors =
-      hand_descriptors(images, labelled.geometry, options.descriptor, options.threads);
   const std::int32_t first_group = out.next_group();
-  for (std::size_t i = 0; i < descriptors.size(); ++i) {
-    out.add(descriptors[i], owner[i].second,
-            first_group + static_cast<std::int32_t>(owner[i].first), source);
-    ++(owner[i].second ? counts.positive_examples : counts.negative_examples);
+  for (std::size_t c = 0; c < chosen.size(); ++c) {
+    const bool positive = labelled.hands[chosen[c]].label == HandLabel::kPositive;
+    for (const std::vector<float>* descriptor : per_hand[c]) {
+      out.add(*descriptor, positive, first_group + static_cast<std::int32_t>(chosen[c]), source);
+      ++(positive ? counts.positive_examples : counts.negative_examples);
+    }
   }
   return counts;
 }

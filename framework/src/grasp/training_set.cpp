@@ -10,7 +10,8 @@
 namespace antipode {
 namespace {
 constexpr const char* kMagic = "ANTPDATA";
-constexpr std::uint32_t kVersion = 2;  // 1: options as raw structs, no longer read
+// 1: options as raw structs; 2: descriptors without the alignment counts. Neither is read.
+constexpr std::uint32_t kVersion = 3;
 
 // Field by field, so that the bytes depend only on the values (no struct padding).
 void put_descriptor(BinaryWriter& w, const HandImageOptions& o, const HandGeometry& g) {
@@ -81,6 +82,18 @@ void TrainingSet::validate() const {
   for (const auto label : labels) {
     if (label != 1 && label != -1) throw Error("training set: a label that is not +1 or -1");
   }
+}
+
+TrainingSet grouped_by(const TrainingSet& set, const std::string& unit) {
+  if (unit != "example" && unit != "hand" && unit != "scene") {
+    throw Error("folds by '" + unit + "': expected example, hand or scene");
+  }
+  TrainingSet out = set;
+  for (std::size_t i = 0; i < out.size(); ++i) {
+    if (unit == "example") out.groups[i] = static_cast<std::int32_t>(i);
+    if (unit == "scene") out.groups[i] = out.sources[i];
+  }
+  return out;
 }
 
 void save_training_set(const TrainingSet& set, const std::string& path) {

@@ -7,16 +7,6 @@
 namespace antipode::training {
 namespace {
 
-// `set` with groups redrawn: one per example, per hand (as collected) or per scene.
-TrainingSet regrouped(const TrainingSet& set, const std::string& by) {
-  TrainingSet out = set;
-  for (std::size_t i = 0; i < out.size(); ++i) {
-    if (by == "example") out.groups[i] = static_cast<std::int32_t>(i);
-    if (by == "scene") out.groups[i] = out.sources[i];
-  }
-  return out;
-}
-
 std::string line(const CrossValidationPoint& p, int folds, const std::string& by) {
   const ConfusionMatrix& c = p.confusion;
   char text[256];
@@ -56,7 +46,10 @@ class CrossValidate final : public bt::SyncActionNode {
  protected:
   bt::Status tick() override {
     const std::string by = get_input<std::string>("folds_by");
-    if (by != "example" && by != "hand" && by != "scene") {
+    TrainingSet set;
+    try {
+      set = grouped_by(*get_input<TrainingSetPtr>("dataset"), by);
+    } catch (const Error&) {
       fail("folds_by", "folds_by must be example, hand or scene, got '" + by + "'");
     }
     SvmTrainingOptions o;
@@ -70,8 +63,7 @@ class CrossValidate final : public bt::SyncActionNode {
     o.progress = [this](std::size_t done, std::size_t total, const std::string&) {
       progress(done, total, "cross-validation");
     };
-    const CrossValidationResult result =
-        cross_validate(regrouped(*get_input<TrainingSetPtr>("dataset"), by), o);
+    const CrossValidationResult result = cross_validate(set, o);
     for (const auto& point : result.points) log(line(point, result.folds, by));
     return bt::Status::kSuccess;
   }

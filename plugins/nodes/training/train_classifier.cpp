@@ -32,6 +32,9 @@ class TrainClassifier final : public bt::SyncActionNode {
              bt::input_port<int>("components", static_cast<int>(d.pca_components),
                                  "PCA components the descriptors are reduced to"),
              bt::input_port<int>("folds", d.folds, "cross-validation folds (0: none)"),
+             bt::input_port<std::string>("folds_by", std::string("scene"),
+                                         "what a fold keeps together while C is chosen: "
+                                         "scene (objects held out), hand or example"),
              bt::input_port<int>("threads", 0, "workers (0: all cores)"),
              bt::input_port<std::string>("description", std::string{},
                                          "free text stored in the model")},
@@ -50,13 +53,22 @@ class TrainClassifier final : public bt::SyncActionNode {
     log("training on " + std::to_string(set->size()) + " examples (" +
         std::to_string(set->positives()) + " positive, " + std::to_string(set->negatives()) +
         " negative)");
-    const SvmModel model = train_svm(*set, options);
+    const SvmModel model = train_svm(grouped(*set), options);
     model.save(file);
     log(model_summary(model, file));
     return bt::Status::kSuccess;
   }
 
  private:
+  TrainingSet grouped(const TrainingSet& set) const {
+    const std::string by = get_input<std::string>("folds_by");
+    try {
+      return grouped_by(set, by);
+    } catch (const Error&) {
+      fail("folds_by", "folds_by must be scene, hand or example, got '" + by + "'");
+    }
+  }
+
   SvmTrainingOptions read_options(const TrainingSet& set) const {
     SvmTrainingOptions o;
     o.degree = get_input<int>("degree");

@@ -43,7 +43,8 @@ struct HandImageOptions {
   /// Length of the HOG part: blocks x cells per block x bins.
   std::size_t hog_size() const;
   /// Length of the normal statistics: 3 numbers per block of block_cells x block_cells
-  /// cells tiling the image (partial blocks at the far edges count), 0 without them.
+  /// cells tiling the image (partial blocks at the far edges count) and 8 alignment counts,
+  /// 0 without them.
   std::size_t normal_features_size() const;
   /// Length of a descriptor: hog_size() + normal_features_size().
   std::size_t descriptor_size() const;
@@ -83,8 +84,11 @@ std::vector<float> hog_descriptor(const HandImage& image, const HandImageOptions
 /// image plane. The image is tiled into blocks as normal_features_size() says; per block
 /// (row-major), over the closing points drawn in it that have a normal: the mean of
 /// n . closing, the mean of |n . axis| (surface tilted out of the closing plane) and
-/// log(1 + points) / log(1 + 64), each times 4 (see hand_image.cpp). `normals` is indexed
-/// like the cloud (zero = no normal).
+/// log(1 + points) / log(1 + 64). Then, over the whole region, log(1 + k) / log(1 + 64) of
+/// the number k of points whose normal lies within 10, 20, 30 and 45 degrees of +closing,
+/// then the same four of -closing (Definition 3's counts, which a mirrored closing direction
+/// swaps). The block numbers are times 4, the counts times 12 (see hand_image.cpp). `normals` is
+/// indexed like the cloud (zero = no normal).
 std::vector<float> normal_statistics(const Cloud& cloud, const Hand& hand,
                                      const HandGeometry& geometry, const HandImageOptions& options,
                                      const std::vector<Eigen::Vector3f>& normals);

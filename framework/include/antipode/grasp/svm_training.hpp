@@ -1,10 +1,11 @@
 #pragma once
 /// @file
-/// Training and evaluating the paper's hand classifier (section 4.3): PCA-reduced,
-/// standardised HOG descriptors, a polynomial-kernel soft-margin SVM whose C (and gamma)
-/// are chosen by grouped k-fold cross-validation. The solver is OpenCV's (used privately);
-/// the result is an SvmModel that predicts without OpenCV. Everything is deterministic: the
-/// same training set and options give a bit-identical model, whatever the thread count.
+/// Training and evaluating the paper's hand classifier (section 4.3): PCA-reduced HOG
+/// descriptors (one common scale, not whitened), a polynomial-kernel soft-margin SVM whose
+/// C (and gamma) are chosen by grouped k-fold cross-validation. The solver is OpenCV's (used
+/// privately); the result is an SvmModel that predicts without OpenCV. Everything is
+/// deterministic: the same training set and options give a bit-identical model, whatever the
+/// thread count.
 
 #include <cstddef>
 #include <cstdint>
@@ -28,7 +29,7 @@ struct SvmTrainingOptions {
   double coef0 = 1.0;                                ///< kernel (gamma a . b + coef0)^degree
   std::vector<double> c_values = {0.1, 1, 10, 100};  ///< C candidates
   /// gamma candidates; empty means the single value 1 / components (the reduced features
-  /// have unit variance, so gamma a . b is of order one).
+  /// have unit variance on average, so gamma a . b is of order one).
   std::vector<double> gamma_values;
   std::size_t pca_components = 96;      ///< k (fewer when the data has lower rank)
   std::size_t max_pca_examples = 6000;  ///< PCA is fitted on a seeded subsample this large

@@ -31,7 +31,9 @@ HandSet with_closing_points_in(const HandSet& set, std::shared_ptr<const Cloud> 
 /// Which views of a hand's closing region make descriptors.
 struct ExampleOptions {
   /// Views whose points alone make a descriptor (view v = bit v of the cloud's view masks:
-  /// C1 is view 0, C2 view 1). Each must exist in the cloud.
+  /// C1 is view 0, C2 view 1). Each must exist in the cloud. The descriptor is computed on
+  /// the cloud of that view's points alone (points_of_views()), normals included, exactly as
+  /// a classifier sees a single-view capture.
   std::vector<int> single_views = {0, 1};
   /// Also a descriptor of all the closing points (C12).
   bool all_views = true;
