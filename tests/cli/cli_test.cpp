@@ -336,6 +336,32 @@ TEST_F(TrainTest, SameSeedSameModelAndTheModelEvaluates) {
   EXPECT_EQ(c["tp"].get<int>() + c["fp"].get<int>() + c["tn"].get<int>() + c["fn"].get<int>(),
             numbers["examples"].get<int>());
   EXPECT_GT(numbers["accuracy"].get<double>(), 0.8);  // its own training data
+
+  // Folds the training set cannot make are refused at the folds_by port.
+  const auto retrain = [&](const std::string& ports) {
+    return write("retrain.yaml",
+                 "main: r\n"
+                 "trees:\n"
+                 "  r:\n"
+                 "    Sequence:\n"
+                 "      - LoadTrainingSet: { file: " +
+                     data +
+                     ", dataset: \"{d}\" }\n"
+                     "      - TrainClassifier: { dataset: \"{d}\", model_file: " +
+                     b + ", c_values: [1], " + ports + " }\n");
+  };
+  result = run("run " + retrain("folds_by: object"));
+  EXPECT_EQ(result.exit_code, 2) << result.out;
+  EXPECT_NE(result.out.find("folds by 'object': expected example, hand or scene"),
+            std::string::npos)
+      << result.out;
+  EXPECT_NE(result.out.find("retrain.yaml:6:"), std::string::npos) << result.out;  // located
+  result = run("run " + retrain("folds: 10, folds_by: scene"));
+  EXPECT_NE(result.exit_code, 0) << result.out;
+  EXPECT_NE(result.out.find("10 folds need at least 10 scenes (distinct sources), the training "
+                            "set has 4; give CollectExamples a different `source` per scene"),
+            std::string::npos)
+      << result.out;
 }
 
 TEST_F(TrainTest, ACorruptedModelIsOneLineErrorAtItsKey) {

@@ -28,6 +28,18 @@ TEST(ViewSelectionTest, KeepsThePointsOfTheViewsRenumberingThem) {
   ASSERT_EQ(right.view_origins_m.size(), 1u);
   EXPECT_EQ(right.view_origins_m[0].z(), 2.0f);
   EXPECT_EQ(new_index, (std::vector<std::int32_t>{-1, 0, 1, -1}));
+  EXPECT_NO_THROW(right.validate());
+}
+
+TEST(ViewSelectionTest, KeepsNormalsAndFrame) {
+  Cloud cloud = three_views();
+  cloud.frame = "sensor";
+  for (int i = 0; i < 4; ++i) cloud.normals.push_back(Eigen::Vector3f::Unit(i % 3));
+  const Cloud left = points_of_views(cloud, {0});
+  EXPECT_EQ(left.frame, "sensor");
+  ASSERT_EQ(left.normals.size(), 2u);  // points 0 and 2
+  EXPECT_EQ(left.normals[1], Eigen::Vector3f::UnitZ());
+  EXPECT_NO_THROW(left.validate());
 }
 
 TEST(ViewSelectionTest, ViewsAreNumberedInTheOrderListed) {
@@ -42,10 +54,19 @@ TEST(ViewSelectionTest, RefusesNoViewsAndViewsTheCloudLacks) {
   EXPECT_EQ(error_of([] { points_of_views(three_views(), {}); }), "view selection: no view given");
   EXPECT_EQ(error_of([] { points_of_views(three_views(), {3}); }),
             "view selection: view 3 is not in the cloud, which has 3 view(s)");
+  EXPECT_EQ(error_of([] {
+              points_of_views(three_views(), {1, 0, 1});
+            }),
+            "view selection: view 1 is listed twice");
   Cloud no_views = three_views();
   no_views.view_masks.clear();
   no_views.view_origins_m.clear();
-  EXPECT_EQ(points_of_views(no_views, {0}).size(), 4u);  // one view: view 0
+  const Cloud all = points_of_views(no_views, {0});  // one view: view 0
+  EXPECT_EQ(all.size(), 4u);
+  EXPECT_TRUE(all.view_masks.empty());
+  EXPECT_NO_THROW(all.validate());
+  EXPECT_NE(error_of([&] { points_of_views(no_views, {1}); }).find("which has 1 view(s)"),
+            std::string::npos);
 }
 
 }  // namespace

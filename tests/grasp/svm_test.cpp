@@ -310,8 +310,70 @@ TEST(SvmTest, BadTrainingInputIsAClearError) {
   too_many_folds.folds = 1000;
   EXPECT_NE(error_of([&] {
               cross_validate(training(), too_many_folds);
-            }).find("1000 folds need at least 1000 groups"),
+            }).find("1000 folds need at least 1000 hands, the training set has 80"),
             std::string::npos);
+  too_many_folds.folds = 8;
+  too_many_folds.folds_by = FoldUnit::kScene;  // the toy set has 7 sources
+  EXPECT_NE(error_of([&] {
+              cross_validate(training(), too_many_folds);
+            }).find("8 folds need at least 8 scenes (distinct sources), the training set has 7"),
+            std::string::npos);
+  EXPECT_EQ(error_of([] { fold_unit("object"); }),
+            "folds by 'object': expected example, hand or scene");
+}
+
+TEST(SvmTest, FoldsByExampleHandOrScene) {
+  const TrainingSet& set = training();  // hand h: examples 3h..3h+2, source h % 7
+  EXPECT_EQ(fold_unit("example"), FoldUnit::kExample);
+  EXPECT_EQ(fold_unit("hand"), FoldUnit::kHand);
+  EXPECT_EQ(fold_unit("scene"), FoldUnit::kScene);
+  const std::vector<int> by_scene = assign_folds(set, 3, 4, FoldUnit::kScene);
+  std::vector<int> fold_of_source(7, -1);
+  for (std::size_t i = 0; i < set.size(); ++i) {
+    int& fold = fold_of_source[static_cast<std::size_t>(set.sources[i])];
+    if (fold < 0) fold = by_scene[i];
+    EXPECT_EQ(by_scene[i], fold) << i;
+  }
+  // By example, one hand's three descriptors are dealt one by one: some land apart.
+  const std::vector<int> by_example = assign_folds(set, 3, 4, FoldUnit::kExample);
+  std::vector<int> per_fold(3, 0);
+  bool split = false;
+  for (std::size_t i = 0; i < set.size(); ++i) {
+    ++per_fold[static_cast<std::size_t>(by_example[i])];
+    split = split || by_example[i] != by_example[i - i % 3];
+  }
+  EXPECT_TRUE(split);
+  for (const int n : per_fold) EXPECT_EQ(n, 80);  // 240 examples dealt evenly
+}
+
+TEST(SvmTest, ComponentsShareOneScaleAndKeepTheirVarianceOrder) {
+  const SvmModel& model = trained();
+  ASSERT_GT(model.components(), 2u);
+  for (const float scale : model.scale) EXPECT_EQ(scale, model.scale[0]);
+  // Reduced training features: variances descend, and average about one (the PCA was fitted
+  // on all 240 examples, so exactly one up to float rounding).
+  const TrainingSet& set = training();
+  const std::vector<float> z = model.reduce(set.features.data(), set.size(), set.dimension, 1);
+  const std::size_t k = model.components();
+  std::vector<double> variance(k, 0.0);
+  for (std::size_t j = 0; j < k; ++j) {
+    double sum = 0.0, squares = 0.0;
+    for (std::size_t i = 0; i < set.size(); ++i) {
+      sum += z[i * k + j];
+      squares += static_cast<double>(z[i * k + j]) * z[i * k + j];
+    }
+    const double n = static_cast<double>(set.size());
+    variance[j] = (squares - sum * sum / n) / (n - 1.0);
+  }
+  double mean = 0.0;
+  for (std::size_t j = 0; j < k; ++j) {
+    mean += variance[j] / static_cast<double>(k);
+    if (j > 0) {
+      EXPECT_LE(variance[j], variance[j - 1] * 1.001) << j;
+    }
+  }
+  EXPECT_NEAR(mean, 1.0, 1e-3);
+  EXPECT_GT(variance[0], 2.0 * variance[k - 1]);  // not whitened
 }
 
 TEST(SvmTest, FoldsKeepGroupsTogetherAndCrossValidationCountsEveryExampleOnce) {
@@ -425,20 +487,6 @@ TEST(SvmTest, ConfusionMatrixRates) {
   EXPECT_EQ(m.tp, 7u);
   EXPECT_EQ(ConfusionMatrix{}.accuracy(), 0.0);
   EXPECT_EQ(ConfusionMatrix{}.precision(), 0.0);
-}
-
-TEST(TrainingSetTest, GroupedByRedrawsTheFoldGroups) {
-  TrainingSet set;
-  set.add({1.0f}, true, 0, 5);  // hand 0 (two views) and hand 1 from scene 5, hand 2 from 6
-  set.add({2.0f}, true, 0, 5);
-  set.add({3.0f}, false, 1, 5);
-  set.add({4.0f}, false, 2, 6);
-  EXPECT_EQ(grouped_by(set, "example").groups, (std::vector<std::int32_t>{0, 1, 2, 3}));
-  EXPECT_EQ(grouped_by(set, "hand").groups, (std::vector<std::int32_t>{0, 0, 1, 2}));
-  EXPECT_EQ(grouped_by(set, "scene").groups, (std::vector<std::int32_t>{5, 5, 5, 6}));
-  EXPECT_EQ(grouped_by(set, "scene").features, set.features);
-  EXPECT_EQ(error_of([&] { grouped_by(set, "object"); }),
-            "folds by 'object': expected example, hand or scene");
 }
 
 TEST(TrainingSetTest, SaveLoadRoundTripAndDimensionErrors) {

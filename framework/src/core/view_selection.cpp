@@ -12,10 +12,14 @@ Cloud points_of_views(const Cloud& cloud, const std::vector<int>& views,
   if (views.empty()) throw Error("view selection: no view given");
   // A cloud without view origins is one view (view 0).
   const std::size_t count = std::max<std::size_t>(1, cloud.view_origins_m.size());
-  for (const int v : views) {
+  for (auto it = views.begin(); it != views.end(); ++it) {
+    const int v = *it;
     if (v < 0 || v >= 32 || static_cast<std::size_t>(v) >= count) {
       throw Error("view selection: view " + std::to_string(v) + " is not in the cloud, which has " +
                   std::to_string(count) + " view(s)");
+    }
+    if (std::find(views.begin(), it, v) != it) {
+      throw Error("view selection: view " + std::to_string(v) + " is listed twice");
     }
   }
   Cloud out;
@@ -36,7 +40,7 @@ Cloud points_of_views(const Cloud& cloud, const std::vector<int>& views,
     if (new_index != nullptr) (*new_index)[i] = static_cast<std::int32_t>(out.points_m.size());
     out.points_m.push_back(cloud.points_m[i]);
     if (!cloud.normals.empty()) out.normals.push_back(cloud.normals[i]);
-    out.view_masks.push_back(kept);
+    if (!cloud.view_origins_m.empty()) out.view_masks.push_back(kept);
   }
   return out;
 }

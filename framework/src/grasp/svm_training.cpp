@@ -120,8 +120,9 @@ MatrixF orthonormal_columns(const MatrixF& y) {
 // reduced descriptors keep the PCA's proportions (a component's weight in the kernel is its
 // variance) at unit variance per component on average. Whitening each component to unit
 // variance instead gave the many weak components (mostly HOG detail) as much say as the
-// leading ones: 94.2% against 95.9% hand-grouped cross-validation on the shipped training
-// set, 91.7% against 94.9% on novel objects (docs/results.md).
+// leading ones: 94.2% against 95.1% hand-grouped cross-validation on the shipped training
+// set, 91.7% against 93.0% on novel objects (docs/results.md); it also let descriptor
+// weights chosen by cross-validation take effect.
 void principal_components(const RowMatrixF& a, std::size_t wanted, std::uint64_t seed,
                           SvmModel& model) {
   const Eigen::Index d = a.cols();
@@ -300,7 +301,7 @@ CrossValidationResult cross_validate_reduced(const TrainingSet& set, const SvmMo
                                              const ReducedSet& data,
                                              const SvmTrainingOptions& options,
                                              ProgressReporter& progress) {
-  const std::vector<int> fold_of = assign_folds(set, options.folds, options.seed);
+  const std::vector<int> fold_of = assign_folds(set, options.folds, options.seed, options.folds_by);
   const std::vector<SvmKernel> kernels = candidates(options, reduction.components());
   const std::size_t folds = static_cast<std::size_t>(options.folds);
   std::vector<ConfusionMatrix> results(kernels.size() * folds);
@@ -387,14 +388,31 @@ ConfusionMatrix& ConfusionMatrix::operator+=(const ConfusionMatrix& o) {
   return *this;
 }
 
-std::vector<int> assign_folds(const TrainingSet& set, int folds, std::uint64_t seed) {
+FoldUnit fold_unit(const std::string& name) {
+  if (name == "example") return FoldUnit::kExample;
+  if (name == "hand") return FoldUnit::kHand;
+  if (name == "scene") return FoldUnit::kScene;
+  throw Error("folds by '" + name + "': expected example, hand or scene");
+}
+
+std::vector<int> assign_folds(const TrainingSet& set, int folds, std::uint64_t seed,
+                              FoldUnit unit) {
   if (folds < 1) throw Error("cross-validation: folds must be at least 1");
-  std::vector<std::int32_t> groups = set.groups;
+  std::vector<std::int32_t> unit_of(set.size());
+  for (std::size_t i = 0; i < set.size(); ++i) {
+    unit_of[i] = unit == FoldUnit::kExample ? static_cast<std::int32_t>(i)
+                 : unit == FoldUnit::kHand  ? set.groups[i]
+                                            : set.sources[i];
+  }
+  std::vector<std::int32_t> groups = unit_of;
   std::sort(groups.begin(), groups.end());
   groups.erase(std::unique(groups.begin(), groups.end()), groups.end());
   if (groups.size() < static_cast<std::size_t>(folds)) {
+    const char* what = unit == FoldUnit::kExample ? "examples"
+                       : unit == FoldUnit::kHand  ? "hands"
+                                                  : "scenes (distinct sources)";
     throw Error("cross-validation: " + std::to_string(folds) + " folds need at least " +
-                std::to_string(folds) + " groups (hands), the training set has " +
+                std::to_string(folds) + " " + what + ", the training set has " +
                 std::to_string(groups.size()));
   }
   RandomStream random = RandomStream(seed).derive(0);
@@ -408,8 +426,8 @@ std::vector<int> assign_folds(const TrainingSet& set, int folds, std::uint64_t s
   std::sort(fold_of_group.begin(), fold_of_group.end());
   std::vector<int> fold_of(set.size());
   for (std::size_t i = 0; i < set.size(); ++i) {
-    const auto it = std::lower_bound(fold_of_group.begin(), fold_of_group.end(),
-                                     std::make_pair(set.groups[i], 0));
+    const auto it =
+        std::lower_bound(fold_of_group.begin(), fold_of_group.end(), std::make_pair(unit_of[i], 0));
     fold_of[i] = it->second;
   }
   return fold_of;

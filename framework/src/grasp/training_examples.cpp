@@ -55,7 +55,10 @@ ViewImages view_images(const HandSet& labelled, const std::vector<std::size_t>& 
   }
   for (std::size_t c = 0; c < chosen.size(); ++c) {
     Hand seen = labelled.hands[chosen[c]];
-    if (view >= 0) seen.closing_points = points_seen(seen, new_index);
+    if (view >= 0) {
+      seen.closing_points = points_seen(seen, new_index);
+      seen.sample_index = -1;  // an index into the two-view cloud
+    }
     if (seen.closing_points.size() < min_points) continue;
     out.hands.hands.push_back(std::move(seen));
     out.owner.push_back(c);

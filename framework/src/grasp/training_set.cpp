@@ -84,18 +84,6 @@ void TrainingSet::validate() const {
   }
 }
 
-TrainingSet grouped_by(const TrainingSet& set, const std::string& unit) {
-  if (unit != "example" && unit != "hand" && unit != "scene") {
-    throw Error("folds by '" + unit + "': expected example, hand or scene");
-  }
-  TrainingSet out = set;
-  for (std::size_t i = 0; i < out.size(); ++i) {
-    if (unit == "example") out.groups[i] = static_cast<std::int32_t>(i);
-    if (unit == "scene") out.groups[i] = out.sources[i];
-  }
-  return out;
-}
-
 void save_training_set(const TrainingSet& set, const std::string& path) {
   set.validate();
   BinaryWriter writer(kMagic, kVersion);

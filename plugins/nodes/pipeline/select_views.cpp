@@ -34,7 +34,7 @@ class SelectViews final : public bt::SyncActionNode {
     try {
       points = points_of_views(*cloud, views);
     } catch (const Error& e) {
-      fail("views", e.what());
+      fail("views", e.message());
     }
     auto selected = std::make_shared<Cloud>(std::move(points));
     log(std::to_string(selected->size()) + " of " + std::to_string(cloud->size()) + " points");

@@ -2,6 +2,7 @@
 
 #include "antipode/bt/action_node.hpp"
 #include "antipode/grasp/svm_training.hpp"
+#include "fold_check.hpp"
 #include "nodes.hpp"
 
 namespace antipode::training {
@@ -30,9 +31,10 @@ class CrossValidate final : public bt::SyncActionNode {
         "CrossValidate",
         bt::NodeCategory::kAction,
         {bt::input_port<TrainingSetPtr>("dataset", "the examples"),
-         bt::input_port<std::string>("folds_by", std::string("hand"),
-                                     "what a fold keeps together: example (the paper), "
-                                     "hand (its C1, C2 and C12 descriptors) or scene"),
+         bt::input_port<std::string>("folds_by", std::string("scene"),
+                                     "what a fold keeps together: scene (objects held out), "
+                                     "hand (its C1, C2 and C12 descriptors) or example (the "
+                                     "paper)"),
          bt::input_port<int>("folds", d.folds, "number of folds"),
          bt::input_port<std::vector<double>>("c_values", d.c_values, "costs to try"),
          bt::input_port<int>("components", static_cast<int>(d.pca_components), "PCA components"),
@@ -46,13 +48,12 @@ class CrossValidate final : public bt::SyncActionNode {
  protected:
   bt::Status tick() override {
     const std::string by = get_input<std::string>("folds_by");
-    TrainingSet set;
-    try {
-      set = grouped_by(*get_input<TrainingSetPtr>("dataset"), by);
-    } catch (const Error&) {
-      fail("folds_by", "folds_by must be example, hand or scene, got '" + by + "'");
-    }
     SvmTrainingOptions o;
+    try {
+      o.folds_by = fold_unit(by);
+    } catch (const Error& e) {
+      fail("folds_by", e.message());
+    }
     o.folds = get_input<int>("folds");
     o.c_values = get_input<std::vector<double>>("c_values");
     const int components = get_input<int>("components");
@@ -63,7 +64,11 @@ class CrossValidate final : public bt::SyncActionNode {
     o.progress = [this](std::size_t done, std::size_t total, const std::string&) {
       progress(done, total, "cross-validation");
     };
-    const CrossValidationResult result = cross_validate(set, o);
+    const TrainingSetPtr set = get_input<TrainingSetPtr>("dataset");
+    if (const std::string problem = fold_problem(*set, o); !problem.empty()) {
+      fail("folds_by", problem);
+    }
+    const CrossValidationResult result = cross_validate(*set, o);
     for (const auto& point : result.points) log(line(point, result.folds, by));
     return bt::Status::kSuccess;
   }

@@ -3,6 +3,7 @@
 
 #include "antipode/bt/action_node.hpp"
 #include "antipode/grasp/svm_training.hpp"
+#include "fold_check.hpp"
 #include "nodes.hpp"
 
 namespace antipode::training {
@@ -53,22 +54,16 @@ class TrainClassifier final : public bt::SyncActionNode {
     log("training on " + std::to_string(set->size()) + " examples (" +
         std::to_string(set->positives()) + " positive, " + std::to_string(set->negatives()) +
         " negative)");
-    const SvmModel model = train_svm(grouped(*set), options);
+    if (const std::string problem = fold_problem(*set, options); !problem.empty()) {
+      fail("folds_by", problem);
+    }
+    const SvmModel model = train_svm(*set, options);
     model.save(file);
     log(model_summary(model, file));
     return bt::Status::kSuccess;
   }
 
  private:
-  TrainingSet grouped(const TrainingSet& set) const {
-    const std::string by = get_input<std::string>("folds_by");
-    try {
-      return grouped_by(set, by);
-    } catch (const Error&) {
-      fail("folds_by", "folds_by must be scene, hand or example, got '" + by + "'");
-    }
-  }
-
   SvmTrainingOptions read_options(const TrainingSet& set) const {
     SvmTrainingOptions o;
     o.degree = get_input<int>("degree");
@@ -78,6 +73,11 @@ class TrainClassifier final : public bt::SyncActionNode {
     if (components < 1) fail("components", "components must be at least 1");
     o.pca_components = static_cast<std::size_t>(components);
     o.folds = get_input<int>("folds");
+    try {
+      o.folds_by = fold_unit(get_input<std::string>("folds_by"));
+    } catch (const Error& e) {
+      fail("folds_by", e.message());
+    }
     o.threads = get_input<int>("threads");
     o.seed = random().next_u64();
     o.description = get_input<std::string>("description");

@@ -24,6 +24,17 @@ namespace antipode {
 using SvmProgress =
     std::function<void(std::size_t done, std::size_t total, const std::string& step)>;
 
+/// What a cross-validation fold keeps together.
+enum class FoldUnit {
+  kExample,  ///< nothing: every example on its own (the paper's random folds)
+  kHand,     ///< a hand's descriptors (TrainingSet::groups: its C1, C2 and C12 images)
+  kScene,    ///< every example of one scene (TrainingSet::sources): whole objects held out
+};
+
+/// The unit named "example", "hand" or "scene"; another word is an antipode::Error that
+/// lists them.
+FoldUnit fold_unit(const std::string& name);
+
 struct SvmTrainingOptions {
   int degree = 3;                                    ///< polynomial degree (the paper: 3)
   double coef0 = 1.0;                                ///< kernel (gamma a . b + coef0)^degree
@@ -34,6 +45,7 @@ struct SvmTrainingOptions {
   std::size_t pca_components = 96;      ///< k (fewer when the data has lower rank)
   std::size_t max_pca_examples = 6000;  ///< PCA is fitted on a seeded subsample this large
   int folds = 10;                       ///< cross-validation folds; 0 skips cross-validation
+  FoldUnit folds_by = FoldUnit::kHand;  ///< what a fold keeps together
   std::uint64_t seed = 0;               ///< fold assignment and PCA subsample
   int threads = 0;                      ///< workers (0: all); results do not depend on it
   double tolerance = 1e-3;              ///< solver stopping tolerance (as libsvm's eps)
@@ -75,13 +87,15 @@ struct CrossValidationResult {
   double accuracy() const { return best_point().confusion.accuracy(); }
 };
 
-/// Fold (0..folds-1) of every example: whole groups are dealt round-robin to folds in a
-/// seeded shuffled order, so a hand's descriptors never straddle training and held-out data.
-/// Throws antipode::Error when there are fewer groups than folds.
-std::vector<int> assign_folds(const TrainingSet& set, int folds, std::uint64_t seed);
+/// Fold (0..folds-1) of every example: whole units (hands, scenes or single examples, as
+/// `unit` says) are dealt round-robin to folds in a seeded shuffled order, so no unit
+/// straddles training and held-out data. Throws antipode::Error when there are fewer units
+/// than folds.
+std::vector<int> assign_folds(const TrainingSet& set, int folds, std::uint64_t seed,
+                              FoldUnit unit = FoldUnit::kHand);
 
-/// Grouped k-fold cross-validation of every (C, gamma) candidate (PCA fitted once on the
-/// whole set, as train_svm() does). `options.folds` must be at least 2.
+/// k-fold cross-validation, folds by `options.folds_by`, of every (C, gamma) candidate (PCA fitted
+/// once on the whole set, as train_svm() does). `options.folds` must be at least 2.
 CrossValidationResult cross_validate(const TrainingSet& set, const SvmTrainingOptions& options);
 
 /// Fits the PCA reduction, chooses C and gamma by grouped cross-validation (the first

@@ -32,8 +32,8 @@ HandSet with_closing_points_in(const HandSet& set, std::shared_ptr<const Cloud> 
 struct ExampleOptions {
   /// Views whose points alone make a descriptor (view v = bit v of the cloud's view masks:
   /// C1 is view 0, C2 view 1). Each must exist in the cloud. The descriptor is computed on
-  /// the cloud of that view's points alone (points_of_views()), normals included, exactly as
-  /// a classifier sees a single-view capture.
+  /// the points of the cloud that view saw (points_of_views()), normals re-estimated on them
+  /// alone, as on a single-view capture.
   std::vector<int> single_views = {0, 1};
   /// Also a descriptor of all the closing points (C12).
   bool all_views = true;
@@ -60,7 +60,8 @@ struct ExampleCounts {
 
 /// Appends examples of every hand of `labelled` whose label is kPositive or kNegative to
 /// `out`: one descriptor per view of ExampleOptions with at least `min_points` closing points,
-/// all in a new group (one per hand) with source `source`. `random` draws the hands kept under
+/// all in a new group (one per hand) with source `source`. Examples come hand by hand, each
+/// hand's in the order of `single_views` and then all views. `random` draws the hands kept under
 /// max_hands_per_label (kept in their original order). An empty `out` takes the options'
 /// descriptor and the set's geometry; a non-empty one must have the same, or an
 /// antipode::Error says what differs. Deterministic for any thread count.

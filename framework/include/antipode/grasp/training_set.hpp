@@ -45,12 +45,6 @@ struct TrainingSet {
   void validate() const;
 };
 
-/// `set` with its groups redrawn for cross-validation by what a fold keeps together:
-/// "example" (each alone: the paper's random folds), "hand" (its C1, C2 and C12 descriptors,
-/// the groups as collected) or "scene" (every example of one source: whole objects held out,
-/// as novel objects would be). Throws antipode::Error for another word.
-TrainingSet grouped_by(const TrainingSet& set, const std::string& unit);
-
 /// Writes `set` to `path` in antipode's binary training-set format (a header with a magic
 /// word, version, sizes and a checksum, then the columns), all-or-nothing.
 void save_training_set(const TrainingSet& set, const std::string& path);
