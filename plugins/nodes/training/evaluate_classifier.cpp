@@ -11,12 +11,6 @@
 namespace antipode::training {
 namespace {
 
-std::string percent(double fraction) {
-  char text[16];
-  std::snprintf(text, sizeof(text), "%.2f%%", 100.0 * fraction);
-  return text;
-}
-
 nlohmann::json report(const ConfusionMatrix& c, const TrainingSet& set, const std::string& model) {
   return {{"model", model},
           {"examples", set.size()},

@@ -9,12 +9,6 @@
 namespace antipode::training {
 namespace {
 
-std::string percent(double fraction) {
-  char text[16];
-  std::snprintf(text, sizeof(text), "%.2f%%", 100.0 * fraction);
-  return text;
-}
-
 /// Trains the HOG + SVM classifier on a training set and writes the model file.
 class TrainClassifier final : public bt::SyncActionNode {
  public:
