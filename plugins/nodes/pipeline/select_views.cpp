@@ -29,7 +29,6 @@ class SelectViews final : public bt::SyncActionNode {
   bt::Status tick() override {
     const CloudPtr cloud = get_input<CloudPtr>("cloud");
     const auto views = get_input<std::vector<int>>("views");
-    if (views.empty()) fail("views", "views must name at least one view");
     Cloud points;
     try {
       points = points_of_views(*cloud, views);

@@ -41,7 +41,8 @@ struct AntipodalCount {
 /// Counts the points `hand.closing_points` whose normal (`normals[i]`, indexed like the
 /// cloud; zero vectors count for neither side) lies within `max_angle_deg` of +closing and
 /// of -closing. Throws antipode::Error for an index outside `normals`.
-AntipodalCount count_antipodal_normals(const Hand& hand, const std::vector<Eigen::Vector3f>& normals,
+AntipodalCount count_antipodal_normals(const Hand& hand,
+                                       const std::vector<Eigen::Vector3f>& normals,
                                        double max_angle_deg);
 
 /// The label for `count` with threshold k = `min_points`:
