@@ -9,12 +9,18 @@
 
 namespace antipode::cli {
 
+/// What every command that runs a tree takes from --set, --seed and -v (or run's -q); main.cpp
+/// declares these options once, for all of them.
+struct TreeRunSettings {
+  std::vector<std::string> set;  ///< "key=value" overrides, applied after the command's own
+  std::uint64_t seed = 0;        ///< seed of every random stream
+  bool verbose = false;          ///< per-node console trace
+};
+
 struct RunOptions {
   std::string tree_path;
-  std::vector<std::string> set;  ///< "key=value" overrides
-  std::uint64_t seed = 0;
-  std::string trace_path;  ///< JSON-lines trace file; "" for none
-  bool quiet = false;      ///< no per-node console trace
+  TreeRunSettings settings{{}, 0, true};  ///< `run` traces every node unless --quiet
+  std::string trace_path;                 ///< JSON-lines trace file; "" for none
 };
 
 struct DetectOptions {
@@ -22,9 +28,7 @@ struct DetectOptions {
   std::string tree_path = "trees/detect.yaml";
   std::string out_path;    ///< grasps JSON; "" for none
   std::string image_path;  ///< PNG picture; "" for none
-  std::vector<std::string> set;
-  std::uint64_t seed = 0;
-  bool verbose = false;                ///< per-node console trace
+  TreeRunSettings settings;
   std::string hands_entry = "grasps";  ///< the entry whose hands are summarised
 };
 
@@ -34,18 +38,14 @@ struct TrainOptions {
   std::string tree_path = "trees/train.yaml";
   std::string model_path = "models/hog_svm.model";  ///< entry model_file
   std::string dataset_path;  ///< entry dataset_file: keep the examples ("" = don't)
-  std::vector<std::string> set;
-  std::uint64_t seed = 0;
-  bool verbose = false;
+  TreeRunSettings settings;
 };
 
 struct EvalOptions {
   std::string tree_path = "trees/eval_classifier.yaml";
   std::string model_path = "models/hog_svm.model";  ///< entry model_file
   std::string report_path;                          ///< entry report_file ("" = none)
-  std::vector<std::string> set;
-  std::uint64_t seed = 0;
-  bool verbose = false;
+  TreeRunSettings settings;
 };
 
 struct SceneOptions {
@@ -53,9 +53,7 @@ struct SceneOptions {
   std::string tree_path = "trees/scene.yaml";
   std::string image_path = "scene.png";
   std::string grasps_path;  ///< grasps JSON to draw; "" for none
-  std::vector<std::string> set;
-  std::uint64_t seed = 0;
-  bool verbose = false;
+  TreeRunSettings settings;
 };
 
 int run_command(const RunOptions& options);

@@ -41,14 +41,10 @@ void print_summary(const HandSet& set, std::size_t count) {
 }  // namespace
 
 int detect_command(const DetectOptions& options) {
-  RunOptions run;
-  run.tree_path = options.tree_path;
-  run.set = detect_entries(options);
-  run.set.insert(run.set.end(), options.set.begin(), options.set.end());
-  run.seed = options.seed;
   Session session = open_session();
-  bt::Tree tree = load_tree_for(session, run);
-  const Tracing tracing = attach_tracers(tree, options.verbose, "");
+  bt::Tree tree =
+      load_tree_for(session, options.tree_path, detect_entries(options), options.settings);
+  const Tracing tracing = attach_tracers(tree, options.settings.verbose, "");
   const bt::Status status = tree.tick_while_running();
   if (const auto* hands = tree.blackboard().find(options.hands_entry)) {
     if (const auto* set = std::any_cast<HandSetPtr>(hands); set != nullptr && *set) {

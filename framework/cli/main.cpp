@@ -32,23 +32,24 @@ struct Commands {
   std::string validate_path;
 };
 
-void add_run(CLI::App& app, Commands& commands) {
-  CLI::App* run = app.add_subcommand("run", "Run a behaviour tree");
-  run->add_option("tree", commands.run.tree_path, "YAML tree file")->required();
-  run->add_option("--set", commands.run.set,
-                  "Override: component.parameter=value, or key=value for a blackboard entry "
-                  "of the main tree (repeatable)");
-  run->add_option("--seed", commands.run.seed, "Seed of every random stream (default 0)");
-  run->add_option("--trace", commands.run.trace_path, "Write every status change as JSON lines");
-  run->add_flag("-q,--quiet", commands.run.quiet, "No per-node trace on the console");
+// --set, --seed and -v: the options of every command that runs a tree.
+void add_tree_run_options(CLI::App& command, antipode::cli::TreeRunSettings& settings) {
+  command.add_option("--set", settings.set,
+                     "Override: component.parameter=value, or key=value for a blackboard entry "
+                     "of the main tree (repeatable)");
+  command.add_option("--seed", settings.seed, "Seed of every random stream (default 0)");
+  command.add_flag("-v,--verbose", settings.verbose, "Print every node's status changes");
 }
 
-// --set, --seed and -v of the commands that run a tree of their own (detect, scene, ...).
-void add_tree_run_options(CLI::App& command, std::vector<std::string>& set, std::uint64_t& seed,
-                          bool& verbose) {
-  command.add_option("--set", set, "Override, as for 'run' (repeatable)");
-  command.add_option("--seed", seed, "Seed of every random stream (default 0)");
-  command.add_flag("-v,--verbose", verbose, "Print every node's status changes");
+void add_run(CLI::App& app, Commands& commands) {
+  auto& options = commands.run;
+  CLI::App* run = app.add_subcommand("run", "Run a behaviour tree");
+  run->add_option("tree", options.tree_path, "YAML tree file")->required();
+  add_tree_run_options(*run, options.settings);
+  run->add_option("--trace", options.trace_path, "Write every status change as JSON lines");
+  run->add_flag_callback(
+      "-q,--quiet", [&options] { options.settings.verbose = false; },
+      "No per-node trace on the console (run prints it by default)");
 }
 
 void add_detect(CLI::App& app, Commands& commands) {
@@ -58,7 +59,7 @@ void add_detect(CLI::App& app, Commands& commands) {
   detect->add_option("--tree", options.tree_path, "Detection tree")->capture_default_str();
   detect->add_option("--out", options.out_path, "Write the grasps as JSON");
   detect->add_option("--image", options.image_path, "Draw the cloud and grasps into a PNG");
-  add_tree_run_options(*detect, options.set, options.seed, options.verbose);
+  add_tree_run_options(*detect, options.settings);
 }
 
 void add_scene(CLI::App& app, Commands& commands) {
@@ -68,7 +69,7 @@ void add_scene(CLI::App& app, Commands& commands) {
   scene->add_option("--image", options.image_path, "Output PNG")->capture_default_str();
   scene->add_option("--grasps", options.grasps_path, "Grasps JSON to draw (from --out)");
   scene->add_option("--tree", options.tree_path, "Scene tree")->capture_default_str();
-  add_tree_run_options(*scene, options.set, options.seed, options.verbose);
+  add_tree_run_options(*scene, options.settings);
 }
 
 void add_train(CLI::App& app, Commands& commands) {
@@ -78,7 +79,7 @@ void add_train(CLI::App& app, Commands& commands) {
   train->add_option("--out", options.model_path, "Model file to write")->capture_default_str();
   train->add_option("--dataset", options.dataset_path, "Also keep the examples in this file");
   train->add_option("--tree", options.tree_path, "Training tree")->capture_default_str();
-  add_tree_run_options(*train, options.set, options.seed, options.verbose);
+  add_tree_run_options(*train, options.settings);
 }
 
 void add_eval(CLI::App& app, Commands& commands) {
@@ -89,7 +90,7 @@ void add_eval(CLI::App& app, Commands& commands) {
   eval->add_option("--model", options.model_path, "Model file")->capture_default_str();
   eval->add_option("--report", options.report_path, "Write the numbers as JSON");
   eval->add_option("--tree", options.tree_path, "Evaluation tree")->capture_default_str();
-  add_tree_run_options(*eval, options.set, options.seed, options.verbose);
+  add_tree_run_options(*eval, options.settings);
 }
 
 int dispatch(const CLI::App& app, const Commands& commands) {

@@ -12,20 +12,24 @@
 namespace antipode::cli {
 namespace {
 
-bt::LoadOptions load_options(const Session& session, const RunOptions& options) {
+bt::LoadOptions load_options(const Session& session, const std::vector<std::string>& entries,
+                             const TreeRunSettings& settings) {
+  std::vector<std::string> overrides = entries;
+  overrides.insert(overrides.end(), settings.set.begin(), settings.set.end());
   bt::LoadOptions load;
   load.registry = &session.registry;
   load.components = session.host.get();
-  load.seed = options.seed;
-  load.overrides = parse_overrides(options.set);
+  load.seed = settings.seed;
+  load.overrides = parse_overrides(overrides);
   return load;
 }
 
 }  // namespace
 
-bt::Tree load_tree_for(const Session& session, const RunOptions& options) {
+bt::Tree load_tree_for(const Session& session, const std::string& tree_path,
+                       const std::vector<std::string>& entries, const TreeRunSettings& settings) {
   try {
-    return bt::load_tree_file(options.tree_path, load_options(session, options));
+    return bt::load_tree_file(tree_path, load_options(session, entries, settings));
   } catch (const Error& error) {
     const std::string note = refused_plugins_note(*session.host);
     if (note.empty()) throw;
@@ -35,8 +39,8 @@ bt::Tree load_tree_for(const Session& session, const RunOptions& options) {
 
 int run_command(const RunOptions& options) {
   Session session = open_session();
-  bt::Tree tree = load_tree_for(session, options);
-  const Tracing tracing = attach_tracers(tree, !options.quiet, options.trace_path);
+  bt::Tree tree = load_tree_for(session, options.tree_path, {}, options.settings);
+  const Tracing tracing = attach_tracers(tree, options.settings.verbose, options.trace_path);
   const bt::Status status = tree.tick_while_running();
   std::cout << options.tree_path << ": " << bt::to_string(status) << "\n";
   return status == bt::Status::kSuccess ? kExitSuccess : kExitTreeFailed;
@@ -44,10 +48,8 @@ int run_command(const RunOptions& options) {
 
 int validate_command(const std::string& tree_path) {
   Session session = open_session();
-  RunOptions options;
-  options.tree_path = tree_path;
   try {
-    bt::validate_tree_file(tree_path, load_options(session, options));
+    bt::validate_tree_file(tree_path, load_options(session, {}, TreeRunSettings{}));
   } catch (const Error& error) {
     const std::string note = refused_plugins_note(*session.host);
     if (note.empty()) throw;

@@ -3,6 +3,8 @@
 // the search path, and a node registry with the built-in and plugin node types.
 
 #include <memory>
+#include <string>
+#include <vector>
 
 #include "antipode/bt/node_registry.hpp"
 #include "antipode/bt/tracers.hpp"
@@ -19,11 +21,15 @@ struct Session {
 /// Loads every plugin on the search path and registers built-in and plugin nodes.
 Session open_session();
 
-struct RunOptions;
+struct TreeRunSettings;
 
-/// Loads `options.tree_path` with the session's registry and components; unknown-name errors
-/// get a note when plugins were refused (a refused plugin is the usual cause).
-bt::Tree load_tree_for(const Session& session, const RunOptions& options);
+/// Loads `tree_path` with the session's registry and components, seeded with `settings.seed`.
+/// `entries` ("key=value", as --set takes them) are what the command fills in from its own
+/// arguments; the user's `settings.set` is applied after them, so it can change any of them.
+/// Unknown-name errors get a note when plugins were refused (a refused plugin is the usual
+/// cause).
+bt::Tree load_tree_for(const Session& session, const std::string& tree_path,
+                       const std::vector<std::string>& entries, const TreeRunSettings& settings);
 
 /// The tracers a command attached to a tree; they must outlive its ticks.
 struct Tracing {

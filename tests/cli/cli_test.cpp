@@ -117,6 +117,29 @@ TEST_F(CliTest, TraceFileIsJsonLines) {
   EXPECT_EQ(events[3]["to"], "FAILURE");
 }
 
+// Every command that runs a tree takes --set, --seed and -v the same way.
+TEST_F(CliTest, TreeCommandsShareSetSeedAndVerbose) {
+  for (const char* command : {"run", "detect", "scene", "train", "eval-classifier"}) {
+    const Result help = run(std::string(command) + " --help");
+    EXPECT_EQ(help.exit_code, 0) << command;
+    for (const char* option : {"--set", "--seed", "-v,--verbose"}) {
+      EXPECT_NE(help.out.find(option), std::string::npos) << command << " lacks " << option;
+    }
+  }
+  const std::string tree = write("log.yaml",
+                                 "main: t\ntrees:\n  t:\n    Sequence:\n"
+                                 "      - Log: { message: \"entry is {e}\" }\n");
+  // run traces every node unless --quiet; --set fills a blackboard entry as for the others.
+  const Result traced = run("run " + tree + " --set e=one --seed 4 -v");
+  EXPECT_EQ(traced.exit_code, 0) << traced.out;
+  EXPECT_NE(traced.out.find("entry is one"), std::string::npos) << traced.out;
+  EXPECT_NE(traced.out.find("Sequence"), std::string::npos) << traced.out;
+  const Result quiet = run("run -q " + tree + " --set e=two");
+  EXPECT_EQ(quiet.exit_code, 0) << quiet.out;
+  EXPECT_NE(quiet.out.find("entry is two"), std::string::npos) << quiet.out;
+  EXPECT_EQ(quiet.out.find("Sequence"), std::string::npos) << quiet.out;
+}
+
 TEST_F(CliTest, MissingTreeFileIsOneLineError) {
   const Result result = run("run /nonexistent/tree.yaml");
   EXPECT_EQ(result.exit_code, 2);
