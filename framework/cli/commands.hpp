@@ -63,6 +63,8 @@ int train_command(const TrainOptions& options);
 int eval_classifier_command(const EvalOptions& options);
 int validate_command(const std::string& tree_path);
 int plugins_command();
+/// Lists every node type, or (when `type` is not empty) the ports of one.
+int nodes_command(const std::string& type);
 
 /// Splits "key=value" overrides; throws Error for an entry without '='.
 std::vector<std::pair<std::string, std::string>> parse_overrides(

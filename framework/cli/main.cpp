@@ -19,6 +19,8 @@ constexpr const char* kExamples = R"(Examples:
   antipode train --out my.model --dataset examples.data
   antipode eval-classifier --model my.model --report eval.json
   antipode plugins
+  antipode nodes
+  antipode nodes CollectExamples
 
 Exit codes: 0 success, 1 the tree returned FAILURE, 2 invalid input (command line, tree,
 parameters, data file), 3 internal error. See docs/cli.md.)";
@@ -30,6 +32,7 @@ struct Commands {
   antipode::cli::TrainOptions train;
   antipode::cli::EvalOptions eval;
   std::string validate_path;
+  std::string node_type;  ///< `antipode nodes [TYPE]`
 };
 
 // --set, --seed and -v: the options of every command that runs a tree.
@@ -105,6 +108,7 @@ int dispatch(const CLI::App& app, const Commands& commands) {
     return antipode::cli::validate_command(commands.validate_path);
   }
   if (app.got_subcommand("plugins")) return antipode::cli::plugins_command();
+  if (app.got_subcommand("nodes")) return antipode::cli::nodes_command(commands.node_type);
   std::cout << app.help();
   return antipode::cli::kExitInvalidInput;
 }
@@ -125,6 +129,9 @@ int main(int argc, char** argv) {
   CLI::App* validate = app.add_subcommand("validate", "Check a tree file without running it");
   validate->add_option("tree", commands.validate_path, "YAML tree file")->required();
   app.add_subcommand("plugins", "List plugin libraries found, loaded and refused, and why");
+  CLI::App* nodes =
+      app.add_subcommand("nodes", "List the node types trees can use, or one's ports");
+  nodes->add_option("type", commands.node_type, "A node type, e.g. SampleHands");
   app.require_subcommand(0, 1);
   try {
     app.parse(argc, argv);

@@ -70,6 +70,11 @@ TEST(RegistryTest, PortHelpersDescribeTheirPorts) {
   EXPECT_EQ(std::any_cast<double>(optional.default_value), 0.01);
   const PortInfo text = input_port_text_default<std::vector<double>>("xs", "[1, 2]", "");
   EXPECT_EQ(text.default_text, "[1, 2]");
+  // Typed defaults are documented as a tree would write them.
+  EXPECT_EQ(input_port<std::vector<int>>("views", std::vector<int>{0, 1}, "").default_text,
+            "[0, 1]");
+  EXPECT_EQ(input_port<std::vector<double>>("none", std::vector<double>{}, "").default_text, "[]");
+  EXPECT_EQ(input_port<std::shared_ptr<const int>>("cloud", nullptr, "").default_text, "unset");
   const PortInfo component = component_port<Classifier>("classifier", "");
   EXPECT_EQ(component.component_kind, ComponentKind::kClassifier);
   EXPECT_EQ(component.type_name, "classifier component");

@@ -1,14 +1,18 @@
 // The `antipode` command as a user meets it: exit codes, one-line errors, plugin listings.
 #include <sys/wait.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <map>
 #include <sstream>
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
+
+#include "antipode/grasp/training_set.hpp"
 
 namespace {
 namespace fs = std::filesystem;
@@ -138,6 +142,25 @@ TEST_F(CliTest, TreeCommandsShareSetSeedAndVerbose) {
   EXPECT_EQ(quiet.exit_code, 0) << quiet.out;
   EXPECT_NE(quiet.out.find("entry is two"), std::string::npos) << quiet.out;
   EXPECT_EQ(quiet.out.find("Sequence"), std::string::npos) << quiet.out;
+}
+
+// `antipode nodes` lists built-in and plugin node types; with a type, its ports.
+TEST_F(CliTest, NodesListsTypesAndPorts) {
+  const Result list = run("nodes");
+  EXPECT_EQ(list.exit_code, 0) << list.out;
+  EXPECT_NE(list.out.find("Sequence (control): "), std::string::npos) << list.out;
+  EXPECT_NE(list.out.find("CollectExamples (action): "), std::string::npos) << list.out;
+  const Result ports = run("nodes CollectExamples");
+  EXPECT_EQ(ports.exit_code, 0) << ports.out;
+  EXPECT_NE(ports.out.find("single_views (input, list of int, default [0, 1])"), std::string::npos)
+      << ports.out;
+  EXPECT_NE(ports.out.find("hands (input, "), std::string::npos) << ports.out;
+  EXPECT_NE(ports.out.find(", required): labelled hands"), std::string::npos) << ports.out;
+  const Result typo = run("nodes SampleHand");
+  EXPECT_EQ(typo.exit_code, 2) << typo.out;
+  EXPECT_NE(typo.out.find("unknown node 'SampleHand' (did you mean 'SampleHands'?)"),
+            std::string::npos)
+      << typo.out;
 }
 
 TEST_F(CliTest, MissingTreeFileIsOneLineError) {
@@ -385,6 +408,57 @@ TEST_F(TrainTest, SameSeedSameModelAndTheModelEvaluates) {
                             "set has 4; give CollectExamples a different `source` per scene"),
             std::string::npos)
       << result.out;
+}
+
+// Hands found on one view, described in the two-view cloud they were labelled against, give
+// a C1, a C2 and a C12 descriptor each, as hands found on C12 do; without `cloud`, one each.
+TEST_F(TrainTest, OneViewHandsDescribedInTheRegisteredCloudGiveThreeExamples) {
+  const std::string source = ANTIPODE_TEST_SOURCE_DIR;
+  const auto tree = [&](const std::string& name, const std::string& describe) {
+    return write(
+        name,
+        "components:\n"
+        "  cell: { plugin: bullet_cell, scene: " +
+            source +
+            "/scenes/train_procedural.yaml }\n"
+            "  sampler: { plugin: antipodal_sampler, samples: 300, threads: 2 }\n"
+            "main: t\n"
+            "trees:\n"
+            "  t:\n"
+            "    Sequence:\n"
+            "      - NewTrainingSet: { dataset: \"{d}\" }\n"
+            "      - ResetScene: { cell: cell, first_seed: 2 }\n"
+            "      - CaptureCloud: { cell: cell, views: [left, right], cloud: \"{both}\" }\n"
+            "      - SelectViews: { cloud: \"{both}\", views: [0], selected: \"{one}\" }\n"
+            "      - SampleHands: { sampler: sampler, cloud: \"{one}\", hands: \"{h}\" }\n"
+            "      - LabelHands: { hands: \"{h}\", reference: \"{both}\", labelled: \"{l}\" }\n"
+            "      - CollectExamples: { hands: \"{l}\", dataset: \"{d}\", max_hands_per_label: "
+            "5, " +
+            describe +
+            " }\n"
+            "      - SaveTrainingSet: { dataset: \"{d}\", file: \"{dataset_file}\" }\n");
+  };
+  const auto examples_per_hand = [&](const std::string& file) {
+    std::map<int, int> count;
+    for (const int group : antipode::load_training_set(file).groups) ++count[group];
+    std::vector<int> sizes;
+    for (const auto& [group, n] : count) sizes.push_back(n);
+    return sizes;
+  };
+  const std::string three = (dir_ / "three.data").string(), one = (dir_ / "one.data").string();
+  Result result = run(
+      "run -q " + tree("three.yaml", "cloud: \"{both}\", single_views: [0, 1], all_views: true") +
+      " --set dataset_file=" + three);
+  ASSERT_EQ(result.exit_code, 0) << result.out;
+  result = run("run -q " + tree("one.yaml", "single_views: [], all_views: true") +
+               " --set dataset_file=" + one);
+  ASSERT_EQ(result.exit_code, 0) << result.out;
+  const std::vector<int> described = examples_per_hand(three), own = examples_per_hand(one);
+  ASSERT_FALSE(own.empty());
+  EXPECT_GE(described.size(), own.size());  // the same hands, and some with < 10 points in one view
+  for (const int n : own) EXPECT_EQ(n, 1);
+  EXPECT_GT(std::count(described.begin(), described.end(), 3), 0);
+  for (const int n : described) EXPECT_GE(n, 1);
 }
 
 TEST_F(TrainTest, ACorruptedModelIsOneLineErrorAtItsKey) {

@@ -1,10 +1,10 @@
 #include <algorithm>
 
 #include "antipode/bt/action_node.hpp"
-#include "antipode/geometry/preprocess.hpp"
 #include "antipode/grasp/antipodal.hpp"
 #include "antipode/grasp/training_examples.hpp"
 #include "nodes.hpp"
+#include "reference_cloud.hpp"
 
 namespace antipode::training {
 namespace {
@@ -57,8 +57,7 @@ class LabelHands final : public bt::SyncActionNode {
   HandSet judged_set(const HandSet& hands, int threads) const {
     const CloudPtr reference = get_input<CloudPtr>("reference");
     if (reference == nullptr) return hands;
-    auto voxelised = std::make_shared<Cloud>(voxelize(remove_non_finite(*reference), 0.003f));
-    return with_closing_points_in(hands, std::move(voxelised), threads);
+    return with_closing_points_in(hands, prepared_reference(*reference), threads);
   }
 
   static std::string summary(const HandSet& set) {

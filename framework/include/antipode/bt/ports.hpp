@@ -16,11 +16,13 @@
 
 #include <any>
 #include <chrono>
+#include <memory>
 #include <optional>
 #include <sstream>
 #include <string>
 #include <type_traits>
 #include <typeindex>
+#include <vector>
 
 #include "antipode/bt/converters.hpp"
 #include "antipode/bt/status.hpp"
@@ -74,10 +76,27 @@ template <typename T>
 struct Streamable<T, std::void_t<decltype(std::declval<std::ostream&>() << std::declval<T>())>>
     : std::true_type {};
 
-// The documented text of a typed default value.
+template <typename T>
+struct IsVector : std::false_type {};
+template <typename T>
+struct IsVector<std::vector<T>> : std::true_type {};
+template <typename T>
+struct IsSharedPtr : std::false_type {};
+template <typename T>
+struct IsSharedPtr<std::shared_ptr<T>> : std::true_type {};
+
+// The documented text of a typed default value: YAML for lists, "unset" for a null pointer.
 template <typename T>
 std::string default_text_of(const T& value) {
-  if constexpr (std::is_same_v<T, bool>) {
+  if constexpr (IsVector<T>::value) {
+    std::string text = "[";
+    for (std::size_t i = 0; i < value.size(); ++i) {
+      text += (i == 0 ? "" : ", ") + default_text_of(value[i]);
+    }
+    return text + "]";
+  } else if constexpr (IsSharedPtr<T>::value) {
+    return value == nullptr ? "unset" : "(" + type_name<T>() + ")";
+  } else if constexpr (std::is_same_v<T, bool>) {
     return value ? "true" : "false";
   } else if constexpr (std::is_same_v<T, std::chrono::milliseconds>) {
     return std::to_string(value.count());
