@@ -396,6 +396,13 @@ TEST_F(TrainTest, SameSeedSameModelAndTheModelEvaluates) {
                      "      - TrainClassifier: { dataset: \"{d}\", model_file: " +
                      b + ", c_values: [1], " + ports + " }\n");
   };
+  // A model over its size budget is written, with a warning that says why it is large.
+  result = run("run -q " + retrain("folds: 0, size_budget_kib: 1"));
+  EXPECT_EQ(result.exit_code, 0) << result.out;
+  EXPECT_NE(result.out.find(" KiB, over the 1 KiB budget (size_budget_kib); "), std::string::npos)
+      << result.out;
+  result = run("run -q " + retrain("folds: 0"));
+  EXPECT_EQ(result.out.find("budget"), std::string::npos) << result.out;
   result = run("run " + retrain("folds_by: object"));
   EXPECT_EQ(result.exit_code, 2) << result.out;
   EXPECT_NE(result.out.find("folds by 'object': expected example, hand or scene"),

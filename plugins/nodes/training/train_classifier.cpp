@@ -15,28 +15,30 @@ class TrainClassifier final : public bt::SyncActionNode {
   using SyncActionNode::SyncActionNode;
   static bt::NodeManifest manifest() {
     const SvmTrainingOptions d;
-    return {"TrainClassifier",
-            bt::NodeCategory::kAction,
-            {bt::input_port<TrainingSetPtr>("dataset", "the examples"),
-             bt::input_port<std::string>("model_file", "where to write the model"),
-             bt::input_port<int>("degree", d.degree, "polynomial kernel degree"),
-             bt::input_port<std::vector<double>>("c_values", d.c_values,
-                                                 "soft-margin costs tried by cross-validation"),
-             bt::input_port<std::vector<double>>("gamma_values", d.gamma_values,
-                                                 "kernel scales tried; empty = 1 / components"),
-             bt::input_port<int>("components", static_cast<int>(d.pca_components),
-                                 "PCA components the descriptors are reduced to"),
-             bt::input_port<int>("folds", d.folds, "cross-validation folds (0: none)"),
-             bt::input_port<std::string>("folds_by", std::string("scene"),
-                                         "what a fold keeps together while C is chosen: "
-                                         "scene (objects held out), hand or example"),
-             bt::input_port<int>("threads", 0, "workers (0: all cores)"),
-             bt::input_port<std::string>("description", std::string{},
-                                         "free text stored in the model")},
-            0,
-            0,
-            "Trains the SVM grasp classifier (C chosen by cross-validation) and writes it.",
-            {}};
+    return {
+        "TrainClassifier",
+        bt::NodeCategory::kAction,
+        {bt::input_port<TrainingSetPtr>("dataset", "the examples"),
+         bt::input_port<std::string>("model_file", "where to write the model"),
+         bt::input_port<int>("degree", d.degree, "polynomial kernel degree"),
+         bt::input_port<std::vector<double>>("c_values", d.c_values,
+                                             "soft-margin costs tried by cross-validation"),
+         bt::input_port<std::vector<double>>("gamma_values", d.gamma_values,
+                                             "kernel scales tried; empty = 1 / components"),
+         bt::input_port<int>("components", static_cast<int>(d.pca_components),
+                             "PCA components the descriptors are reduced to"),
+         bt::input_port<int>("folds", d.folds, "cross-validation folds (0: none)"),
+         bt::input_port<std::string>("folds_by", std::string("scene"),
+                                     "what a fold keeps together while C is chosen: "
+                                     "scene (objects held out), hand or example"),
+         bt::input_port<int>("threads", 0, "workers (0: all cores)"),
+         bt::input_port<std::string>("description", std::string{}, "free text stored in the model"),
+         bt::input_port<int>("size_budget_kib", 5120,
+                             "warn when the model file is larger (0: never)")},
+        0,
+        0,
+        "Trains the SVM grasp classifier (C chosen by cross-validation) and writes it.",
+        {}};
   }
 
  protected:
@@ -44,6 +46,8 @@ class TrainClassifier final : public bt::SyncActionNode {
     const TrainingSetPtr set = get_input<TrainingSetPtr>("dataset");
     const std::string file = get_input<std::string>("model_file");
     if (file.empty()) fail("model_file", "model_file is empty");
+    const int budget_kib = get_input<int>("size_budget_kib");
+    if (budget_kib < 0) fail("size_budget_kib", "size_budget_kib must be 0 or more");
     const SvmTrainingOptions options = read_options(*set);
     log("training on " + std::to_string(set->size()) + " examples (" +
         std::to_string(set->positives()) + " positive, " + std::to_string(set->negatives()) +
@@ -54,6 +58,9 @@ class TrainClassifier final : public bt::SyncActionNode {
     const SvmModel model = train_svm(*set, options);
     model.save(file);
     log(model_summary(model, file));
+    if (const std::string warning = over_budget(model, file, budget_kib); !warning.empty()) {
+      log(warning);
+    }
     return bt::Status::kSuccess;
   }
 
@@ -87,6 +94,20 @@ class TrainClassifier final : public bt::SyncActionNode {
       fail("c_values", e.message());
     }
     return o;
+  }
+
+  // A model to ship has a size budget (5 MB), and its size grows with the support vectors:
+  // a warning when the written file is over it, else "".
+  static std::string over_budget(const SvmModel& model, const std::string& file, int budget_kib) {
+    std::error_code error;
+    const auto bytes = std::filesystem::file_size(file, error);
+    if (budget_kib == 0 || error || bytes <= static_cast<std::uintmax_t>(budget_kib) * 1024) {
+      return {};
+    }
+    return "warning: " + file + " is " + std::to_string(bytes / 1024) + " KiB, over the " +
+           std::to_string(budget_kib) + " KiB budget (size_budget_kib); " +
+           std::to_string(model.support_vector_count()) +
+           " support vectors - fewer examples, components or a larger C make a smaller model";
   }
 
   static std::string model_summary(const SvmModel& model, const std::string& file) {
