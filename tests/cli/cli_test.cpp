@@ -273,6 +273,24 @@ TEST_F(DetectTest, WorkspaceOutsideTheCloudIsAnError) {
   EXPECT_TRUE(wrote_nothing());
 }
 
+// A bad parameter given with --set is located at --set, not at the tree file's line that
+// holds the value it replaced.
+TEST_F(DetectTest, BadParametersFromTheCommandLineAreLocatedAtSet) {
+  Result result = run(detect(krylon_, "--set sampler.samples=abc"));
+  EXPECT_EQ(result.exit_code, 2) << result.out;
+  EXPECT_NE(result.out.find("error: --set: parameter 'samples' of component 'sampler' must be an "
+                            "integer, got 'abc'"),
+            std::string::npos)
+      << result.out;
+  result = run(detect(krylon_, "--set sampler.sampels=100"));
+  EXPECT_EQ(result.exit_code, 2) << result.out;
+  EXPECT_NE(result.out.find("error: --set: unknown parameter 'sampels' of component 'sampler' "
+                            "(did you mean 'samples'?)"),
+            std::string::npos)
+      << result.out;
+  EXPECT_TRUE(wrote_nothing());
+}
+
 TEST_F(CliTest, SceneDrawsTheSimulatedCellAndChecksGraspFrames) {
   const std::string source = ANTIPODE_TEST_SOURCE_DIR;
   const std::string image = (dir_ / "scene.png").string();
@@ -417,11 +435,12 @@ TEST_F(TrainTest, SameSeedSameModelAndTheModelEvaluates) {
       << result.out;
 }
 
-// Hands found on one view, described in the two-view cloud they were labelled against, give
-// a C1, a C2 and a C12 descriptor each, as hands found on C12 do; without `cloud`, one each.
-TEST_F(TrainTest, OneViewHandsDescribedInTheRegisteredCloudGiveThreeExamples) {
+// Hands found in one view: LabelHands' `judged` set (closing points in the registered cloud)
+// gives C1, C2 and C12 descriptors, its `labelled` set (their own one-view cloud) only one.
+TEST_F(TrainTest, OneViewHandsJudgedInTheRegisteredCloudGiveThreeExamples) {
   const std::string source = ANTIPODE_TEST_SOURCE_DIR;
-  const auto tree = [&](const std::string& name, const std::string& describe) {
+  const auto tree = [&](const std::string& name, const std::string& hands,
+                        const std::string& describe) {
     return write(
         name,
         "components:\n"
@@ -438,10 +457,10 @@ TEST_F(TrainTest, OneViewHandsDescribedInTheRegisteredCloudGiveThreeExamples) {
             "      - CaptureCloud: { cell: cell, views: [left, right], cloud: \"{both}\" }\n"
             "      - SelectViews: { cloud: \"{both}\", views: [0], selected: \"{one}\" }\n"
             "      - SampleHands: { sampler: sampler, cloud: \"{one}\", hands: \"{h}\" }\n"
-            "      - LabelHands: { hands: \"{h}\", reference: \"{both}\", labelled: \"{l}\" }\n"
-            "      - CollectExamples: { hands: \"{l}\", dataset: \"{d}\", max_hands_per_label: "
-            "5, " +
-            describe +
+            "      - LabelHands: { hands: \"{h}\", reference: \"{both}\", labelled: \"{l}\", "
+            "judged: \"{j}\" }\n"
+            "      - CollectExamples: { hands: \"" +
+            hands + "\", dataset: \"{d}\", max_hands_per_label: 5, " + describe +
             " }\n"
             "      - SaveTrainingSet: { dataset: \"{d}\", file: \"{dataset_file}\" }\n");
   };
@@ -453,11 +472,11 @@ TEST_F(TrainTest, OneViewHandsDescribedInTheRegisteredCloudGiveThreeExamples) {
     return sizes;
   };
   const std::string three = (dir_ / "three.data").string(), one = (dir_ / "one.data").string();
-  Result result = run(
-      "run -q " + tree("three.yaml", "cloud: \"{both}\", single_views: [0, 1], all_views: true") +
-      " --set dataset_file=" + three);
+  Result result =
+      run("run -q " + tree("three.yaml", "{j}", "single_views: [0, 1], all_views: true") +
+          " --set dataset_file=" + three);
   ASSERT_EQ(result.exit_code, 0) << result.out;
-  result = run("run -q " + tree("one.yaml", "single_views: [], all_views: true") +
+  result = run("run -q " + tree("one.yaml", "{l}", "single_views: [], all_views: true") +
                " --set dataset_file=" + one);
   ASSERT_EQ(result.exit_code, 0) << result.out;
   const std::vector<int> described = examples_per_hand(three), own = examples_per_hand(one);

@@ -17,10 +17,26 @@ std::vector<std::string> split_path(const std::string& text) {
   return parts;
 }
 
+// A copy of `value` made of new nodes, which carry no position: Parameters::location() tells
+// a value given on the command line from one written in the tree file by that.
+YAML::Node unmarked(const YAML::Node& value) {
+  if (value.IsSequence()) {
+    YAML::Node out(YAML::NodeType::Sequence);
+    for (const auto& item : value) out.push_back(unmarked(item));
+    return out;
+  }
+  if (value.IsMap()) {
+    YAML::Node out(YAML::NodeType::Map);
+    for (const auto& entry : value) out[entry.first.Scalar()] = unmarked(entry.second);
+    return out;
+  }
+  return YAML::Node(value.Scalar());
+}
+
 YAML::Node read_value(const std::string& text) {
   try {
-    YAML::Node value = YAML::Load(text);
-    if (value.IsDefined() && !value.IsNull()) return value;
+    const YAML::Node value = YAML::Load(text);
+    if (value.IsDefined() && !value.IsNull()) return unmarked(value);
   } catch (const YAML::Exception&) {
     // Not YAML: take it as plain text.
   }

@@ -34,7 +34,10 @@ SourceLocation Parameters::location(const std::string& key) const {
   YAML::Mark mark = node_.Mark();
   if (!key.empty() && node_.IsMap()) {
     for (const auto& entry : node_) {
-      if (entry.first.Scalar() == key) mark = entry.first.Mark();
+      if (entry.first.Scalar() != key) continue;
+      // A value without a position was not read from the file: `--set` put it there.
+      if (!file_.empty() && entry.second.Mark().is_null()) return {"--set", 0, 0};
+      mark = entry.first.Mark();
     }
   }
   if (file_.empty()) return {};

@@ -1,15 +1,14 @@
 #include "antipode/bt/action_node.hpp"
 #include "antipode/grasp/training_examples.hpp"
 #include "nodes.hpp"
-#include "reference_cloud.hpp"
 
 namespace antipode::training {
 namespace {
 
 /// Appends the HOG descriptors of labelled hands to a training set: per positive or negative
 /// hand, one from each listed view's points and one from all of them (paper section 4.3).
-/// Hands found in one view can be described in the registered cloud they were labelled
-/// against (`cloud`), so they too give C1, C2 and C12 descriptors.
+/// Hands found in one view, given as LabelHands' `judged` set (their closing points in the
+/// registered cloud they were labelled against), give C1, C2 and C12 descriptors too.
 class CollectExamples final : public bt::SyncActionNode {
  public:
   using SyncActionNode::SyncActionNode;
@@ -28,10 +27,6 @@ class CollectExamples final : public bt::SyncActionNode {
                              "random (0: all)"),
          bt::input_port<std::uint64_t>("source", std::uint64_t{0},
                                        "scene id recorded with the examples"),
-         bt::input_port<CloudPtr>("cloud", CloudPtr{},
-                                  "describe the hands in this cloud (voxelised at 3 mm first), "
-                                  "e.g. the two-view cloud they were labelled against; unset: "
-                                  "their own"),
          bt::input_port<int>("threads", 0, "workers (0: all cores)")},
         0,
         0,
@@ -54,12 +49,7 @@ class CollectExamples final : public bt::SyncActionNode {
     if (max_hands < 0) fail("max_hands_per_label", "max_hands_per_label must be 0 or more");
     options.max_hands_per_label = static_cast<std::size_t>(max_hands);
     const auto source = static_cast<std::int32_t>(get_input<std::uint64_t>("source"));
-    const CloudPtr cloud = get_input<CloudPtr>("cloud");
-    const ExampleCounts counts =
-        cloud == nullptr ? add_examples(*hands, options, source, random(), *set)
-                         : add_examples(with_closing_points_in(*hands, prepared_reference(*cloud),
-                                                               options.threads),
-                                        options, source, random(), *set);
+    const ExampleCounts counts = add_examples(*hands, options, source, random(), *set);
     log(std::to_string(counts.positive_examples) + " positive and " +
         std::to_string(counts.negative_examples) + " negative examples from " +
         std::to_string(counts.positive_hands) + " + " + std::to_string(counts.negative_hands) +

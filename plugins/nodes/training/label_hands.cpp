@@ -1,16 +1,20 @@
 #include <algorithm>
+#include <memory>
 
 #include "antipode/bt/action_node.hpp"
+#include "antipode/geometry/preprocess.hpp"
 #include "antipode/grasp/antipodal.hpp"
 #include "antipode/grasp/training_examples.hpp"
 #include "nodes.hpp"
-#include "reference_cloud.hpp"
 
 namespace antipode::training {
 namespace {
 
 /// Labels hands by the near-antipodal check (Definition 3), on their own cloud or on a
-/// reference cloud (a registered two-view cloud for hands found in one view).
+/// reference cloud (a registered two-view cloud for hands found in one view). The reference
+/// is prepared as the sampler prepares what it samples (non-finite points dropped, 3 mm
+/// voxels: PreprocessOptions), so that a hand looked up in it meets the points a hand sampled
+/// on it would; it is not cropped, closing regions being local.
 class LabelHands final : public bt::SyncActionNode {
  public:
   using SyncActionNode::SyncActionNode;
@@ -25,7 +29,12 @@ class LabelHands final : public bt::SyncActionNode {
              bt::input_port<double>("max_angle_deg", 20.0, "theta of Definition 3"),
              bt::input_port<double>("normal_radius_m", 0.01, "ball the normals are fitted over"),
              bt::input_port<int>("threads", 0, "workers (0: all cores)"),
-             bt::output_port<HandSetPtr>("labelled", "the same hands, labelled and scored")},
+             bt::output_port<HandSetPtr>("labelled", "the same hands, labelled and scored"),
+             bt::output_port<HandSetPtr>("judged",
+                                         "the labelled hands as the check saw them: with their "
+                                         "closing points in the prepared reference (e.g. for "
+                                         "CollectExamples to describe them there); without a "
+                                         "reference, as `labelled`")},
             0,
             0,
             "Labels hands positive, negative or indeterminate by the near-antipodal check.",
@@ -41,14 +50,17 @@ class LabelHands final : public bt::SyncActionNode {
     options.normals.radius_m = get_input<double>("normal_radius_m");
     options.normals.threads = get_input<int>("threads");
     auto labelled = std::make_shared<HandSet>(*hands);
-    const HandSet judged = judged_set(*hands, options.normals.threads);
-    const auto counts = count_antipodal_normals(judged, options);
+    auto judged = std::make_shared<HandSet>(judged_set(*hands, options.normals.threads));
+    const auto counts = count_antipodal_normals(*judged, options);
     for (std::size_t i = 0; i < counts.size(); ++i) {
-      labelled->hands[i].label = antipodal_label(counts[i], options.antipodal.min_points);
-      labelled->hands[i].score = antipodal_score(counts[i], options.antipodal.min_points);
+      for (HandSet* set : {labelled.get(), judged.get()}) {
+        set->hands[i].label = antipodal_label(counts[i], options.antipodal.min_points);
+        set->hands[i].score = antipodal_score(counts[i], options.antipodal.min_points);
+      }
     }
     log(summary(*labelled));
     set_output("labelled", HandSetPtr(std::move(labelled)));
+    set_output("judged", HandSetPtr(std::move(judged)));
     return bt::Status::kSuccess;
   }
 
@@ -57,7 +69,9 @@ class LabelHands final : public bt::SyncActionNode {
   HandSet judged_set(const HandSet& hands, int threads) const {
     const CloudPtr reference = get_input<CloudPtr>("reference");
     if (reference == nullptr) return hands;
-    return with_closing_points_in(hands, prepared_reference(*reference), threads);
+    const auto prepared = std::make_shared<Cloud>(
+        voxelize(remove_non_finite(*reference), PreprocessOptions{}.voxel_size_m));
+    return with_closing_points_in(hands, prepared, threads);
   }
 
   static std::string summary(const HandSet& set) {

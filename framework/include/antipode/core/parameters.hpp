@@ -50,7 +50,8 @@ class Parameters {
   /// Throws Error located at `key` (or at the mapping when the key is absent).
   [[noreturn]] void fail(const std::string& key, const std::string& message) const;
 
-  /// Where `key`'s value is written (or the mapping itself when the key is absent).
+  /// Where `key`'s value is written (or the mapping itself when the key is absent); a value
+  /// that came from the command line (`--set`, which leaves no position) is located at "--set".
   SourceLocation location(const std::string& key) const;
 
   const std::string& owner() const { return owner_; }
