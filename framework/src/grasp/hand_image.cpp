@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <memory>
 #include <string>
 
 #include <tbb/blocked_range.h>
@@ -86,6 +87,19 @@ void check_point(const Cloud& cloud, std::int32_t i) {
 
 int blocks(int cells, int block_cells) { return (cells + block_cells - 1) / block_cells; }
 
+// The number of blocks tiling the image (partial blocks at the far edges count).
+std::size_t block_count(const HandImageOptions& o) {
+  return static_cast<std::size_t>(blocks(o.cells_along, o.block_cells)) *
+         static_cast<std::size_t>(blocks(o.cells_across, o.block_cells));
+}
+
+// The block, row-major, holding HOG cell (cell_row, cell_col).
+std::size_t block_of_cell(const HandImageOptions& o, int cell_row, int cell_col) {
+  const int block =
+      (cell_row / o.block_cells) * blocks(o.cells_across, o.block_cells) + cell_col / o.block_cells;
+  return static_cast<std::size_t>(block);
+}
+
 // Weight of the normal statistics against the HOG numbers (each at most 0.2 after L2-Hys):
 // the PCA of the classifier is fitted on the raw descriptor, and at weight 1 the 90
 // statistics carried too little of its variance to survive the reduction (cross-validation
@@ -95,8 +109,11 @@ constexpr double kNormalWeight = 4.0;
 // Angles (degrees) between a normal and +closing or -closing under which normal_statistics()
 // counts points: Definition 3 asks for k points within theta (20 degrees by default) on each
 // side, and the counts at neighbouring angles let the classifier allow for the noise of
-// normals fitted to one view.
-constexpr std::array<double, 4> kAlignmentAnglesDeg = {10.0, 20.0, 30.0, 45.0};
+// normals fitted to one view: the labels come from normals fitted to both views, and a
+// single view's count near theta is what most often disagrees with them. 15 and 25 degrees
+// added to 10, 20, 30, 45: +0.04 points cross-validation by example, +0.11 on novel objects
+// (docs/results.md).
+constexpr std::array<double, 6> kAlignmentAnglesDeg = {10.0, 15.0, 20.0, 25.0, 30.0, 45.0};
 
 // Weight of those counts: they are what the label is made of, and the classifier's kernel
 // weighs a feature by its variance (svm_training.cpp). Chosen by cross-validation on the
@@ -104,24 +121,35 @@ constexpr std::array<double, 4> kAlignmentAnglesDeg = {10.0, 20.0, 30.0, 45.0};
 // 94.48% at 12.
 constexpr double kAlignmentWeight = 12.0;
 
+// Weight of the occlusion statistics, as kNormalWeight.
+constexpr double kOcclusionWeight = 4.0;
+// A sample of the closing region is hidden when an observed surface lies this much nearer
+// the sensor: about the depth noise of a surface, so that the surface itself is not hidden.
+constexpr float kOcclusionMarginM = 0.003f;
+// The surface patch a cloud point stands for when the occlusion map is drawn: points of a
+// cloud voxelised at 3 mm then join without holes (as HandSearchParameters::point_radius_m).
+constexpr float kOcclusionPointRadiusM = 0.0025f;
+
 }  // namespace
 
 std::size_t HandImageOptions::hog_size() const {
-  const auto blocks_along = static_cast<std::size_t>(cells_along - block_cells + 1);
-  const auto blocks_across = static_cast<std::size_t>(cells_across - block_cells + 1);
-  return blocks_along * blocks_across * static_cast<std::size_t>(block_cells * block_cells) *
-         static_cast<std::size_t>(bins);
+  const auto block = static_cast<std::size_t>(block_cells);
+  const std::size_t blocks_along = static_cast<std::size_t>(cells_along) - block + 1;
+  const std::size_t blocks_across = static_cast<std::size_t>(cells_across) - block + 1;
+  return blocks_along * blocks_across * block * block * static_cast<std::size_t>(bins);
 }
 
 std::size_t HandImageOptions::normal_features_size() const {
   if (!normal_features) return 0;
-  return 3 * static_cast<std::size_t>(blocks(cells_along, block_cells)) *
-             static_cast<std::size_t>(blocks(cells_across, block_cells)) +
-         2 * kAlignmentAnglesDeg.size();
+  return 3 * block_count(*this) + 2 * kAlignmentAnglesDeg.size();
+}
+
+std::size_t HandImageOptions::occlusion_features_size() const {
+  return occlusion_features ? block_count(*this) : 0;
 }
 
 std::size_t HandImageOptions::descriptor_size() const {
-  return hog_size() + normal_features_size();
+  return hog_size() + normal_features_size() + occlusion_features_size();
 }
 
 void HandImageOptions::validate() const {
@@ -171,10 +199,7 @@ std::vector<float> normal_statistics(const Cloud& cloud, const Hand& hand,
     throw Error("normal statistics: " + std::to_string(normals.size()) + " normals for " +
                 std::to_string(cloud.size()) + " points");
   }
-  const int block_px = options.block_cells * options.cell_px;
-  const int across = blocks(options.cells_across, options.block_cells);
-  const std::size_t count =
-      static_cast<std::size_t>(blocks(options.cells_along, options.block_cells) * across);
+  const std::size_t count = block_count(options);
   std::vector<double> closing(count, 0.0), tilt(count, 0.0);
   std::vector<int> points(count, 0);
   std::array<int, 2 * kAlignmentAnglesDeg.size()> aligned{};  // +closing angles, -closing angles
@@ -188,7 +213,7 @@ std::vector<float> normal_statistics(const Cloud& cloud, const Hand& hand,
     const Eigen::Vector3d n = normals[static_cast<std::size_t>(i)].cast<double>();
     if (n.isZero()) continue;
     const auto [row, col] = pixel(cloud.points_m[static_cast<std::size_t>(i)]);
-    const auto b = static_cast<std::size_t>((row / block_px) * across + col / block_px);
+    const std::size_t b = block_of_cell(options, row / options.cell_px, col / options.cell_px);
     const double along_closing = n.dot(hand.closing());
     closing[b] += along_closing;
     tilt[b] += std::abs(n.dot(hand.axis()));
@@ -213,6 +238,32 @@ std::vector<float> normal_statistics(const Cloud& cloud, const Hand& hand,
   return features;
 }
 
+std::vector<float> occlusion_statistics(const OcclusionMap& occlusion, const Hand& hand,
+                                        const HandGeometry& geometry,
+                                        const HandImageOptions& options) {
+  std::vector<int> hidden(block_count(options), 0), samples(block_count(options), 0);
+  const double cell_along_m = geometry.depth_m / options.cells_along;
+  const double cell_across_m = geometry.max_aperture_m / options.cells_across;
+  for (int row = 0; row < options.cells_along; ++row) {
+    for (int col = 0; col < options.cells_across; ++col) {
+      const std::size_t b = block_of_cell(options, row, col);
+      for (const double z : {-0.25, 0.0, 0.25}) {
+        const Eigen::Vector3d p_hand((row + 0.5) * cell_along_m,
+                                     (col + 0.5) * cell_across_m - geometry.max_aperture_m / 2.0,
+                                     z * geometry.height_m);
+        const Eigen::Vector3f p = (hand.X_FrameHand * p_hand).cast<float>();
+        hidden[b] += occlusion.hidden(p, kOcclusionMarginM) ? 1 : 0;
+        ++samples[b];
+      }
+    }
+  }
+  std::vector<float> features(hidden.size());
+  for (std::size_t b = 0; b < hidden.size(); ++b) {
+    features[b] = static_cast<float>(kOcclusionWeight * hidden[b] / std::max(samples[b], 1));
+  }
+  return features;
+}
+
 std::vector<float> hog_descriptor(const HandImage& image, const HandImageOptions& options) {
   options.validate();
   return compute_hog(make_hog(options), image, options);
@@ -233,21 +284,31 @@ std::vector<std::vector<float>> hand_descriptors(const HandSet& set, const HandG
     normal_options.threads = threads;
     normals = closing_point_normals(set, normal_options, "hand descriptors");
   }
+  std::unique_ptr<OcclusionMap> occlusion;
+  if (options.occlusion_features) {
+    occlusion = std::make_unique<OcclusionMap>(*set.cloud, kOcclusionPointRadiusM);
+  }
   tbb::task_arena arena(threads > 0 ? threads : tbb::task_arena::automatic);
   arena.execute([&] {
-    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, set.hands.size(), 32),
-                      [&](const tbb::blocked_range<std::size_t>& range) {
-                        const cv::HOGDescriptor hog = make_hog(options);
-                        for (std::size_t h = range.begin(); h != range.end(); ++h) {
-                          const Hand& hand = set.hands[h];
-                          descriptors[h] = compute_hog(
-                              hog, hand_image(*set.cloud, hand, geometry, options), options);
-                          if (!options.normal_features) continue;
-                          const auto extra =
-                              normal_statistics(*set.cloud, hand, geometry, options, normals);
-                          descriptors[h].insert(descriptors[h].end(), extra.begin(), extra.end());
-                        }
-                      });
+    tbb::parallel_for(
+        tbb::blocked_range<std::size_t>(0, set.hands.size(), 32),
+        [&](const tbb::blocked_range<std::size_t>& range) {
+          const cv::HOGDescriptor hog = make_hog(options);
+          for (std::size_t h = range.begin(); h != range.end(); ++h) {
+            const Hand& hand = set.hands[h];
+            descriptors[h] =
+                compute_hog(hog, hand_image(*set.cloud, hand, geometry, options), options);
+            auto& d = descriptors[h];
+            if (options.normal_features) {
+              const auto extra = normal_statistics(*set.cloud, hand, geometry, options, normals);
+              d.insert(d.end(), extra.begin(), extra.end());
+            }
+            if (occlusion != nullptr) {
+              const auto extra = occlusion_statistics(*occlusion, hand, geometry, options);
+              d.insert(d.end(), extra.begin(), extra.end());
+            }
+          }
+        });
   });
   return descriptors;
 }

@@ -11,13 +11,15 @@ namespace antipode::detail {
 
 inline void put_image_options(BinaryWriter& w, const HandImageOptions& o) {
   for (const int v : {o.cells_along, o.cells_across, o.cell_px, o.block_cells, o.bins,
-                      o.point_radius_px, o.normal_features ? 1 : 0}) {
+                      o.point_radius_px, o.normal_features ? 1 : 0, o.occlusion_features ? 1 : 0}) {
     w.put<std::int32_t>(v);
   }
 }
 
 /// Reads what put_image_options() wrote; the values are checked by the caller (validate()).
-inline HandImageOptions get_image_options(BinaryReader& r) {
+/// Files written before the occlusion statistics existed (`has_occlusion_flag` false) have
+/// none.
+inline HandImageOptions get_image_options(BinaryReader& r, bool has_occlusion_flag) {
   HandImageOptions o;
   for (int* v :
        {&o.cells_along, &o.cells_across, &o.cell_px, &o.block_cells, &o.bins, &o.point_radius_px}) {
@@ -26,6 +28,14 @@ inline HandImageOptions get_image_options(BinaryReader& r) {
   const auto normal_features = r.get<std::int32_t>();
   if (normal_features != 0 && normal_features != 1) r.fail("normal_features flag is not 0 or 1");
   o.normal_features = normal_features == 1;
+  o.occlusion_features = false;
+  if (has_occlusion_flag) {
+    const auto occlusion_features = r.get<std::int32_t>();
+    if (occlusion_features != 0 && occlusion_features != 1) {
+      r.fail("occlusion_features flag is not 0 or 1");
+    }
+    o.occlusion_features = occlusion_features == 1;
+  }
   return o;
 }
 

@@ -17,7 +17,8 @@ namespace antipode {
 namespace {
 
 constexpr const char* kMagic = "ANTPSVM1";
-constexpr std::uint32_t kVersion = 1;
+// 1: no occlusion_features flag (read as without occlusion statistics).
+constexpr std::uint32_t kVersion = 2;
 constexpr const char* kPolyKernel = "poly";
 constexpr int kMaxOption = 4096;  // bound on each image option read from a file
 
@@ -183,7 +184,8 @@ std::string SvmDescriptorSpec::describe() const {
          " px (" + std::to_string(image.block_cells) + " x " + std::to_string(image.block_cells) +
          " cell blocks, " + std::to_string(image.bins) + " bins, points drawn " +
          std::to_string(image.point_radius_px) + " px wide, " +
-         (image.normal_features ? "with" : "without") + " normal statistics, " + name + ")";
+         (image.normal_features ? "with" : "without") + " normal statistics, " +
+         (image.occlusion_features ? "with" : "without") + " occlusion statistics, " + name + ")";
 }
 
 bool SvmDescriptorSpec::matches(const SvmDescriptorSpec& o) const {
@@ -193,6 +195,7 @@ bool SvmDescriptorSpec::matches(const SvmDescriptorSpec& o) const {
   return name == o.name && a.cells_along == b.cells_along && a.cells_across == b.cells_across &&
          a.cell_px == b.cell_px && a.block_cells == b.block_cells && a.bins == b.bins &&
          a.point_radius_px == b.point_radius_px && a.normal_features == b.normal_features &&
+         a.occlusion_features == b.occlusion_features &&
          near(depth_m, o.depth_m) && near(max_aperture_m, o.max_aperture_m) &&
          near(height_m, o.height_m);
 }
@@ -295,7 +298,7 @@ SvmModel SvmModel::load(const std::string& path) {
   BinaryReader r(path, kMagic, kVersion, "classifier model");
   SvmModel m;
   m.descriptor.name = r.get_string();
-  m.descriptor.image = detail::get_image_options(r);
+  m.descriptor.image = detail::get_image_options(r, r.version() >= 2);
   m.descriptor.depth_m = r.get<double>();
   m.descriptor.max_aperture_m = r.get<double>();
   m.descriptor.height_m = r.get<double>();

@@ -12,6 +12,7 @@
 
 #include "antipode/core/hand.hpp"
 #include "antipode/core/hand_geometry.hpp"
+#include "antipode/geometry/occlusion.hpp"
 #include "antipode/interfaces/hand_set.hpp"
 
 namespace antipode {
@@ -37,16 +38,22 @@ struct HandImageOptions {
   /// (normal_statistics()). The paper's descriptor is the occupancy HOG alone (false); with
   /// them, accuracy on novel objects rises by several points (docs/results.md).
   bool normal_features = true;
+  /// Appends, per block, the share of the closing region the cloud's sensors could not see
+  /// (occlusion_statistics()). A view that shows a surface facing one finger and nothing
+  /// facing the other cannot tell an absent surface from a hidden one; this says which.
+  bool occlusion_features = true;
 
   int rows() const { return cells_along * cell_px; }
   int cols() const { return cells_across * cell_px; }
   /// Length of the HOG part: blocks x cells per block x bins.
   std::size_t hog_size() const;
   /// Length of the normal statistics: 3 numbers per block of block_cells x block_cells
-  /// cells tiling the image (partial blocks at the far edges count) and 8 alignment counts,
+  /// cells tiling the image (partial blocks at the far edges count) and 12 alignment counts,
   /// 0 without them.
   std::size_t normal_features_size() const;
-  /// Length of a descriptor: hog_size() + normal_features_size().
+  /// Length of the occlusion statistics: one number per block as above, 0 without them.
+  std::size_t occlusion_features_size() const;
+  /// Length of a descriptor: hog_size() + normal_features_size() + occlusion_features_size().
   std::size_t descriptor_size() const;
   /// Throws antipode::Error naming the offending field (all >= 1, block_cells no larger
   /// than either cell count).
@@ -85,18 +92,29 @@ std::vector<float> hog_descriptor(const HandImage& image, const HandImageOptions
 /// (row-major), over the closing points drawn in it that have a normal: the mean of
 /// n . closing, the mean of |n . axis| (surface tilted out of the closing plane) and
 /// log(1 + points) / log(1 + 64). Then, over the whole region, log(1 + k) / log(1 + 64) of
-/// the number k of points whose normal lies within 10, 20, 30 and 45 degrees of +closing,
-/// then the same four of -closing (Definition 3's counts, which a mirrored closing direction
-/// swaps). The block numbers are times 4, the counts times 12 (see hand_image.cpp). `normals` is
-/// indexed like the cloud (zero = no normal).
+/// the number k of points whose normal lies within 10, 15, 20, 25, 30 and 45 degrees of
+/// +closing, then the same six of -closing (Definition 3's counts, which a mirrored closing
+/// direction swaps). The block numbers are times 4, the counts times 12 (see hand_image.cpp).
+/// `normals` is indexed like the cloud (zero = no normal).
 std::vector<float> normal_statistics(const Cloud& cloud, const Hand& hand,
                                      const HandGeometry& geometry, const HandImageOptions& options,
                                      const std::vector<Eigen::Vector3f>& normals);
 
+/// The share of the closing region hidden from every view of `occlusion`'s cloud, per block
+/// of the image (tiled as for normal_statistics()), times 4. Each HOG cell stands for the
+/// column of the region behind it along the hand axis, sampled at its centre and a quarter
+/// of the hand height either side; a sample is hidden when it lies more than 3 mm behind an
+/// observed surface in every view (OcclusionMap). A cloud without view origins gives zeros.
+std::vector<float> occlusion_statistics(const OcclusionMap& occlusion, const Hand& hand,
+                                        const HandGeometry& geometry,
+                                        const HandImageOptions& options);
+
 /// hand_image() then hog_descriptor() for every hand of `set`, in parallel (`threads`
 /// workers, 0: all); one descriptor per hand, in order, identical for any thread count.
 /// With normal_features, the normals of all closing points are estimated once
-/// (estimate_normals() with its defaults) and normal_statistics() appended.
+/// (estimate_normals() with its defaults) and normal_statistics() appended; with
+/// occlusion_features, one OcclusionMap of the cloud is built and occlusion_statistics()
+/// appended.
 std::vector<std::vector<float>> hand_descriptors(const HandSet& set, const HandGeometry& geometry,
                                                  const HandImageOptions& options = {},
                                                  int threads = 0);
