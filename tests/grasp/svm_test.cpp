@@ -522,6 +522,28 @@ TEST(TrainingSetTest, SaveLoadRoundTripAndDimensionErrors) {
   fs::remove(path);
 }
 
+// Files of older formats hold descriptors of another layout: refused, saying what to do.
+TEST(BinaryFileTest, OlderModelAndTrainingSetFormatsAreRefused) {
+  const std::string path = temp_path("old.bin");
+  BinaryWriter model("ANTPSVM1", 1);
+  model.put_string("occupancy-hog-3");
+  model.write(path);
+  const std::string model_error = error_of([&] { SvmModel::load(path); });
+  EXPECT_NE(model_error.find("format version 1 was written by an older antipode for other "
+                             "descriptors; retrain with `antipode train`"),
+            std::string::npos)
+      << model_error;
+  EXPECT_NE(model_error.find(path), std::string::npos) << model_error;
+  BinaryWriter examples("ANTPDATA", 3);
+  examples.put<std::int32_t>(10);
+  examples.write(path);
+  const std::string set_error = error_of([&] { load_training_set(path); });
+  EXPECT_NE(set_error.find("format version 3 was written by an older antipode; re-create the file"),
+            std::string::npos)
+      << set_error;
+  fs::remove(path);
+}
+
 TEST(BinaryFileTest, ReaderRefusesFutureVersionsAndOverlongLengths) {
   const std::string path = temp_path("binary.bin");
   BinaryWriter writer("ANTPTEST", 3);

@@ -17,9 +17,7 @@ inline void put_image_options(BinaryWriter& w, const HandImageOptions& o) {
 }
 
 /// Reads what put_image_options() wrote; the values are checked by the caller (validate()).
-/// Files written before the occlusion statistics existed (`has_occlusion_flag` false) have
-/// none.
-inline HandImageOptions get_image_options(BinaryReader& r, bool has_occlusion_flag) {
+inline HandImageOptions get_image_options(BinaryReader& r) {
   HandImageOptions o;
   for (int* v :
        {&o.cells_along, &o.cells_across, &o.cell_px, &o.block_cells, &o.bins, &o.point_radius_px}) {
@@ -28,14 +26,11 @@ inline HandImageOptions get_image_options(BinaryReader& r, bool has_occlusion_fl
   const auto normal_features = r.get<std::int32_t>();
   if (normal_features != 0 && normal_features != 1) r.fail("normal_features flag is not 0 or 1");
   o.normal_features = normal_features == 1;
-  o.occlusion_features = false;
-  if (has_occlusion_flag) {
-    const auto occlusion_features = r.get<std::int32_t>();
-    if (occlusion_features != 0 && occlusion_features != 1) {
-      r.fail("occlusion_features flag is not 0 or 1");
-    }
-    o.occlusion_features = occlusion_features == 1;
+  const auto occlusion_features = r.get<std::int32_t>();
+  if (occlusion_features != 0 && occlusion_features != 1) {
+    r.fail("occlusion_features flag is not 0 or 1");
   }
+  o.occlusion_features = occlusion_features == 1;
   return o;
 }
 

@@ -17,7 +17,7 @@ namespace antipode {
 namespace {
 
 constexpr const char* kMagic = "ANTPSVM1";
-// 1: no occlusion_features flag (read as without occlusion statistics).
+// 1: descriptors with four alignment angles and no occlusion statistics; not read.
 constexpr std::uint32_t kVersion = 2;
 constexpr const char* kPolyKernel = "poly";
 constexpr int kMaxOption = 4096;  // bound on each image option read from a file
@@ -195,9 +195,8 @@ bool SvmDescriptorSpec::matches(const SvmDescriptorSpec& o) const {
   return name == o.name && a.cells_along == b.cells_along && a.cells_across == b.cells_across &&
          a.cell_px == b.cell_px && a.block_cells == b.block_cells && a.bins == b.bins &&
          a.point_radius_px == b.point_radius_px && a.normal_features == b.normal_features &&
-         a.occlusion_features == b.occlusion_features &&
-         near(depth_m, o.depth_m) && near(max_aperture_m, o.max_aperture_m) &&
-         near(height_m, o.height_m);
+         a.occlusion_features == b.occlusion_features && near(depth_m, o.depth_m) &&
+         near(max_aperture_m, o.max_aperture_m) && near(height_m, o.height_m);
 }
 
 void SvmModel::validate(const std::string& context) const {
@@ -296,9 +295,14 @@ void SvmModel::save(const std::string& path) const {
 
 SvmModel SvmModel::load(const std::string& path) {
   BinaryReader r(path, kMagic, kVersion, "classifier model");
+  if (r.version() < kVersion) {
+    r.fail("format version " + std::to_string(r.version()) +
+           " was written by an older antipode for other descriptors; retrain with `antipode "
+           "train`");
+  }
   SvmModel m;
   m.descriptor.name = r.get_string();
-  m.descriptor.image = detail::get_image_options(r, r.version() >= 2);
+  m.descriptor.image = detail::get_image_options(r);
   m.descriptor.depth_m = r.get<double>();
   m.descriptor.max_aperture_m = r.get<double>();
   m.descriptor.height_m = r.get<double>();

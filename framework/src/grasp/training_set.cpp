@@ -10,10 +10,9 @@
 namespace antipode {
 namespace {
 constexpr const char* kMagic = "ANTPDATA";
-// 1: options as raw structs; 2: descriptors without the alignment counts (neither is read);
-// 3: no occlusion_features flag (read as without occlusion statistics).
+// 1: options as raw structs; 2: descriptors without the alignment counts; 3: four alignment
+// angles and no occlusion statistics. None is read: its descriptors are not today's.
 constexpr std::uint32_t kVersion = 4;
-constexpr std::uint32_t kOldestReadable = 3;
 
 // Field by field, so that the bytes depend only on the values (no struct padding).
 void put_descriptor(BinaryWriter& w, const HandImageOptions& o, const HandGeometry& g) {
@@ -25,7 +24,7 @@ void put_descriptor(BinaryWriter& w, const HandImageOptions& o, const HandGeomet
 }
 
 void get_descriptor(BinaryReader& r, HandImageOptions& o, HandGeometry& g) {
-  o = detail::get_image_options(r, r.version() >= 4);
+  o = detail::get_image_options(r);
   for (double* v : {&g.finger_width_m, &g.outer_diameter_m, &g.depth_m, &g.height_m, &g.init_bite_m,
                     &g.min_aperture_m, &g.max_aperture_m}) {
     *v = r.get<double>();
@@ -101,7 +100,7 @@ void save_training_set(const TrainingSet& set, const std::string& path) {
 TrainingSet load_training_set(const std::string& path) {
   BinaryReader reader(path, kMagic, kVersion, "training set");
   TrainingSet set;
-  if (reader.version() < kOldestReadable) {
+  if (reader.version() < kVersion) {
     reader.fail("format version " + std::to_string(reader.version()) +
                 " was written by an older antipode; re-create the file");
   }
