@@ -30,7 +30,8 @@ YAML::Node unmarked(const YAML::Node& value) {
     for (const auto& entry : value) out[entry.first.Scalar()] = unmarked(entry.second);
     return out;
   }
-  return YAML::Node(value.Scalar());
+  if (value.IsScalar()) return YAML::Node(value.Scalar());
+  return YAML::Node(YAML::NodeType::Null);
 }
 
 YAML::Node read_value(const std::string& text) {
