@@ -12,6 +12,7 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include "antipode/grasp/svm_model.hpp"
 #include "antipode/grasp/training_set.hpp"
 
 namespace {
@@ -427,6 +428,16 @@ TEST_F(TrainTest, SameSeedSameModelAndTheModelEvaluates) {
             std::string::npos)
       << result.out;
   EXPECT_NE(result.out.find("retrain.yaml:6:"), std::string::npos) << result.out;  // located
+  result = run("run " + retrain("kernels: [poly, gauss]"));
+  EXPECT_EQ(result.exit_code, 2) << result.out;
+  EXPECT_NE(result.out.find("unknown kernel 'gauss' (use poly or rbf)"), std::string::npos)
+      << result.out;
+  EXPECT_NE(result.out.find("retrain.yaml:6:"), std::string::npos) << result.out;
+  // The Gaussian kernel trains, and the model says which kernel it has.
+  result = run("run " + retrain("folds: 0, kernels: [rbf]"));
+  EXPECT_EQ(result.exit_code, 0) << result.out;
+  EXPECT_NE(result.out.find("rbf kernel, C = 1"), std::string::npos) << result.out;
+  EXPECT_EQ(antipode::SvmModel::load(b).kernel.type, antipode::SvmKernelType::kRbf);
   result = run("run " + retrain("folds: 10, folds_by: scene"));
   EXPECT_NE(result.exit_code, 0) << result.out;
   EXPECT_NE(result.out.find("10 folds need at least 10 scenes (distinct sources), the training "

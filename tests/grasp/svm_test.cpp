@@ -128,8 +128,18 @@ TEST(SvmTest, LearnsASeparableToyProblem) {
   EXPECT_GT(confusion.tn, 0u);
 }
 
-TEST(SvmTest, DecisionValuesMatchOpenCvsPredict) {
-  const SvmModel& model = trained();
+const SvmModel& trained_rbf() {
+  static const SvmModel model = [] {
+    SvmTrainingOptions o = small_options();
+    o.kernels = {SvmKernelType::kRbf};
+    return train_svm(training(), o, HandImageOptions{}, HandGeometry{});
+  }();
+  return model;
+}
+
+// Trains OpenCV's SVM with `model`'s kernel on the training set's reduced descriptors and
+// checks that the model's decision values on the held-out set are OpenCV's (negated).
+void expect_opencv_values(const SvmModel& model) {
   const TrainingSet& set = training();
   const std::vector<float> z = model.reduce(set.features.data(), set.size(), set.dimension, 2);
   cv::Mat samples(static_cast<int>(set.size()), static_cast<int>(model.components()), CV_32F,
@@ -139,7 +149,7 @@ TEST(SvmTest, DecisionValuesMatchOpenCvsPredict) {
     responses.at<int>(static_cast<int>(i)) = set.labels[i];
   const cv::Ptr<cv::ml::SVM> svm = cv::ml::SVM::create();
   svm->setType(cv::ml::SVM::C_SVC);
-  svm->setKernel(cv::ml::SVM::POLY);
+  svm->setKernel(model.kernel.type == SvmKernelType::kRbf ? cv::ml::SVM::RBF : cv::ml::SVM::POLY);
   svm->setDegree(model.kernel.degree);
   svm->setGamma(model.kernel.gamma);
   svm->setCoef0(model.kernel.coef0);
@@ -166,6 +176,65 @@ TEST(SvmTest, DecisionValuesMatchOpenCvsPredict) {
     EXPECT_EQ(ours[i] > 0.0, label > 0.0f) << i;
     EXPECT_NEAR(from_reduced[i], ours[i], 1e-9 * std::max(1.0, largest)) << i;
   }
+}
+
+TEST(SvmTest, DecisionValuesMatchOpenCvsPredict) {
+  ASSERT_EQ(trained().kernel.type, SvmKernelType::kPolynomial);
+  expect_opencv_values(trained());
+}
+
+TEST(SvmTest, GaussianKernelLearnsMatchesOpenCvAndRoundTrips) {
+  const SvmModel& model = trained_rbf();
+  ASSERT_EQ(model.kernel.type, SvmKernelType::kRbf);
+  EXPECT_GE(model.info.cv_accuracy, 0.95);
+  EXPECT_GE(evaluate(model, held_out(), 2).accuracy(), 0.97);
+  expect_opencv_values(model);
+  // f(x) = sum alpha_i exp(-gamma |z - sv_i|^2) - rho, written out for one descriptor.
+  const TrainingSet& test = held_out();
+  const std::vector<float> z = model.reduce(test.row(0), 1, test.dimension, 1);
+  double expected = -model.rho;
+  for (std::size_t i = 0; i < model.support_vector_count(); ++i) {
+    double distance_squared = 0.0;
+    for (std::size_t j = 0; j < model.components(); ++j) {
+      const double d = z[j] - model.support_vectors[i * model.components() + j];
+      distance_squared += d * d;
+    }
+    expected += model.alpha[i] * std::exp(-model.kernel.gamma * distance_squared);
+  }
+  EXPECT_NEAR(model.decision_values(test.row(0), 1, test.dimension, 1)[0], expected, 1e-6);
+  const std::string path = temp_path("rbf.model");
+  model.save(path);
+  const SvmModel loaded = SvmModel::load(path);
+  EXPECT_EQ(loaded.kernel.type, SvmKernelType::kRbf);
+  EXPECT_EQ(loaded.decision_values(test.features.data(), test.size(), test.dimension, 2),
+            model.decision_values(test.features.data(), test.size(), test.dimension, 2));
+  const std::vector<char> bytes = bytes_of(path);
+  EXPECT_LT(find(bytes, "rbf"), bytes.size());
+  fs::remove(path);
+}
+
+TEST(SvmTest, CrossValidationChoosesAmongKernels) {
+  SvmTrainingOptions o = small_options();
+  o.kernels = {SvmKernelType::kPolynomial, SvmKernelType::kRbf};
+  const CrossValidationResult cv = cross_validate(training(), o);
+  ASSERT_EQ(cv.points.size(), 4u);  // two kernels x two C values, kernel-major
+  EXPECT_EQ(cv.points[0].kernel, SvmKernelType::kPolynomial);
+  EXPECT_EQ(cv.points[1].kernel, SvmKernelType::kPolynomial);
+  EXPECT_EQ(cv.points[2].kernel, SvmKernelType::kRbf);
+  EXPECT_EQ(cv.points[3].C, 10.0);
+  for (const auto& point : cv.points) {
+    EXPECT_LE(point.confusion.accuracy(), cv.accuracy());
+  }
+  const SvmModel model = train_svm(training(), o);
+  EXPECT_EQ(model.kernel.type, cv.best_point().kernel);
+  EXPECT_EQ(model.kernel.C, cv.best_point().C);
+  EXPECT_EQ(model.info.cv_accuracy, cv.accuracy());
+  EXPECT_EQ(kernel_type("rbf"), SvmKernelType::kRbf);
+  EXPECT_STREQ(kernel_name(SvmKernelType::kPolynomial), "poly");
+  EXPECT_EQ(error_of([] { kernel_type("gauss"); }), "unknown kernel 'gauss' (use poly or rbf)");
+  o.kernels.clear();
+  EXPECT_NE(error_of([&] { train_svm(training(), o); }).find("no kernel candidates"),
+            std::string::npos);
 }
 
 TEST(SvmTest, DecisionValuesDoNotDependOnThreadsOrBatching) {

@@ -19,7 +19,6 @@ namespace {
 constexpr const char* kMagic = "ANTPSVM1";
 // 1: descriptors with four alignment angles and no occlusion statistics; not read.
 constexpr std::uint32_t kVersion = 2;
-constexpr const char* kPolyKernel = "poly";
 constexpr int kMaxOption = 4096;  // bound on each image option read from a file
 
 using RowMatrixF = Eigen::Matrix<float, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
@@ -74,7 +73,9 @@ std::string numbers_problem(const SvmModel& m) {
     return "non-finite number";
   }
   const SvmKernel& k = m.kernel;
-  if (k.degree < 1 || k.degree > 10) return "kernel degree " + std::to_string(k.degree);
+  if (k.type == SvmKernelType::kPolynomial && (k.degree < 1 || k.degree > 10)) {
+    return "kernel degree " + std::to_string(k.degree);
+  }
   if (!(std::isfinite(k.gamma) && k.gamma > 0.0 && std::isfinite(k.coef0) && std::isfinite(k.C) &&
         k.C > 0.0)) {
     return "invalid kernel parameters (gamma and C must be positive)";
@@ -138,17 +139,29 @@ RowMatrixF reduce_block(const SvmModel& m, const float* rows, std::size_t first,
   return z;
 }
 
+// K(z_r, sv_i) from the dot product of the two and their squared norms.
+double kernel_value(const SvmKernel& kernel, double dot, double z_squared, double sv_squared) {
+  if (kernel.type == SvmKernelType::kRbf) {
+    const double distance_squared = std::max(z_squared + sv_squared - 2.0 * dot, 0.0);
+    return std::exp(-kernel.gamma * distance_squared);
+  }
+  return integer_power(kernel.gamma * dot + kernel.coef0, kernel.degree);
+}
+
 void score_block(const SvmModel& m, const RowMatrixF& z, std::size_t first, std::size_t count,
                  double* out) {
   const auto k = static_cast<Eigen::Index>(m.components());
   const auto nsv = static_cast<Eigen::Index>(m.support_vector_count());
-  const RowMatrixF dots = z * ConstRowMapF(m.support_vectors.data(), nsv, k).transpose();
+  const ConstRowMapF support(m.support_vectors.data(), nsv, k);
+  const RowMatrixF dots = z * support.transpose();
+  const Eigen::VectorXf z_squared = z.rowwise().squaredNorm();
+  const Eigen::VectorXf sv_squared = support.rowwise().squaredNorm();
   for (std::size_t r = 0; r < count; ++r) {
+    const auto row = static_cast<Eigen::Index>(r);
     double sum = 0.0;
     for (Eigen::Index i = 0; i < nsv; ++i) {
-      const double dot = dots(static_cast<Eigen::Index>(r), i);
       sum += m.alpha[static_cast<std::size_t>(i)] *
-             integer_power(m.kernel.gamma * dot + m.kernel.coef0, m.kernel.degree);
+             kernel_value(m.kernel, dots(row, i), z_squared(row), sv_squared(i));
     }
     out[first + r] = sum - m.rho;
   }
@@ -166,6 +179,14 @@ void check_dimension(const SvmModel& m, std::size_t dim) {
 }
 
 }  // namespace
+
+const char* kernel_name(SvmKernelType type) { return type == SvmKernelType::kRbf ? "rbf" : "poly"; }
+
+SvmKernelType kernel_type(const std::string& name) {
+  if (name == "poly") return SvmKernelType::kPolynomial;
+  if (name == "rbf") return SvmKernelType::kRbf;
+  throw Error("unknown kernel '" + name + "' (use poly or rbf)");
+}
 
 SvmDescriptorSpec SvmDescriptorSpec::of(const HandImageOptions& image,
                                         const HandGeometry& geometry) {
@@ -274,7 +295,7 @@ void SvmModel::save(const std::string& path) const {
   w.put(descriptor.depth_m);
   w.put(descriptor.max_aperture_m);
   w.put(descriptor.height_m);
-  w.put_string(kPolyKernel);
+  w.put_string(kernel_name(kernel.type));
   w.put<std::int32_t>(kernel.degree);
   w.put(kernel.gamma);
   w.put(kernel.coef0);
@@ -306,8 +327,12 @@ SvmModel SvmModel::load(const std::string& path) {
   m.descriptor.depth_m = r.get<double>();
   m.descriptor.max_aperture_m = r.get<double>();
   m.descriptor.height_m = r.get<double>();
-  const std::string kernel_type = r.get_string();
-  if (kernel_type != kPolyKernel) r.fail("unknown kernel '" + kernel_type + "' (expected poly)");
+  const std::string kernel = r.get_string();
+  try {
+    m.kernel.type = kernel_type(kernel);
+  } catch (const Error& e) {
+    r.fail(e.message());
+  }
   m.kernel.degree = r.get<std::int32_t>();
   m.kernel.gamma = r.get<double>();
   m.kernel.coef0 = r.get<double>();

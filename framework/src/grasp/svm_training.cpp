@@ -219,7 +219,7 @@ SvmSolution solve(const ReducedSet& data, const std::vector<std::size_t>& rows,
   }
   const cv::Ptr<cv::ml::SVM> svm = cv::ml::SVM::create();
   svm->setType(cv::ml::SVM::C_SVC);
-  svm->setKernel(cv::ml::SVM::POLY);
+  svm->setKernel(kernel.type == SvmKernelType::kRbf ? cv::ml::SVM::RBF : cv::ml::SVM::POLY);
   svm->setDegree(kernel.degree);
   svm->setGamma(kernel.gamma);
   svm->setCoef0(kernel.coef0);
@@ -248,10 +248,20 @@ std::vector<SvmKernel> candidates(const SvmTrainingOptions& o, std::size_t compo
   std::vector<double> gammas = o.gamma_values;
   if (gammas.empty()) gammas.push_back(1.0 / static_cast<double>(components));
   std::vector<SvmKernel> kernels;
-  for (const double c : o.c_values) {
-    for (const double gamma : gammas) kernels.push_back(SvmKernel{o.degree, gamma, o.coef0, c});
+  for (const SvmKernelType type : o.kernels) {
+    for (const double c : o.c_values) {
+      for (const double gamma : gammas) {
+        kernels.push_back(SvmKernel{type, o.degree, gamma, o.coef0, c});
+      }
+    }
   }
   return kernels;
+}
+
+// "poly C=0.3 gamma=0.0104" or "rbf C=3 gamma=0.01".
+std::string describe(const SvmKernel& kernel) {
+  return std::string(kernel_name(kernel.type)) + " C=" + number(kernel.C) +
+         " gamma=" + number(kernel.gamma);
 }
 
 bool has_both_classes(const std::vector<std::int8_t>& labels,
@@ -312,7 +322,7 @@ CrossValidationResult cross_validate_reduced(const TrainingSet& set, const SvmMo
                           const SvmKernel& kernel = kernels[t / folds];
                           results[t] = run_fold(reduction, data, fold_of,
                                                 static_cast<int>(t % folds), kernel, options);
-                          progress.step("cross-validation C=" + number(kernel.C) + " fold " +
+                          progress.step("cross-validation " + describe(kernel) + " fold " +
                                         std::to_string(t % folds + 1));
                         }
                       });
@@ -320,7 +330,7 @@ CrossValidationResult cross_validate_reduced(const TrainingSet& set, const SvmMo
   CrossValidationResult result;
   result.folds = options.folds;
   for (std::size_t p = 0; p < kernels.size(); ++p) {
-    CrossValidationPoint point{kernels[p].C, kernels[p].gamma, {}};
+    CrossValidationPoint point{kernels[p].C, kernels[p].gamma, kernels[p].type, {}};
     for (std::size_t f = 0; f < folds; ++f) point.confusion += results[p * folds + f];
     result.points.push_back(point);
     if (point.confusion.accuracy() > result.points[result.best].confusion.accuracy()) {
@@ -339,8 +349,8 @@ ReducedSet reduce_all(const TrainingSet& set, const SvmModel& reduction, int thr
 }
 
 std::size_t steps(const SvmTrainingOptions& o, bool with_cv) {
-  const std::size_t grid =
-      o.c_values.size() * std::max<std::size_t>(o.gamma_values.size(), std::size_t{1});
+  const std::size_t grid = o.kernels.size() * o.c_values.size() *
+                           std::max<std::size_t>(o.gamma_values.size(), std::size_t{1});
   return 2 + (with_cv ? grid * static_cast<std::size_t>(o.folds) : 0);
 }
 
@@ -350,6 +360,7 @@ std::size_t steps(const SvmTrainingOptions& o, bool with_cv) {
 
 void SvmTrainingOptions::validate() const {
   const auto fail = [](const std::string& what) { throw Error("SVM training options: " + what); };
+  if (kernels.empty()) fail("no kernel candidates");
   if (degree < 1 || degree > 10) fail("degree must be in [1, 10], got " + std::to_string(degree));
   if (!std::isfinite(coef0)) fail("coef0 must be finite");
   if (c_values.empty()) fail("no C candidates");
@@ -469,6 +480,7 @@ SvmModel train_svm(const TrainingSet& set, const SvmTrainingOptions& options,
   model.info.cv_accuracy = -1.0;
   if (with_cv) {
     const CrossValidationResult cv = cross_validate_reduced(set, model, data, options, progress);
+    kernel.type = cv.best_point().kernel;
     kernel.C = cv.best_point().C;
     kernel.gamma = cv.best_point().gamma;
     model.info.cv_accuracy = cv.accuracy();

@@ -3,6 +3,7 @@
 #include "antipode/bt/action_node.hpp"
 #include "antipode/grasp/svm_training.hpp"
 #include "fold_check.hpp"
+#include "kernel_names.hpp"
 #include "nodes.hpp"
 
 namespace antipode::training {
@@ -11,13 +12,14 @@ namespace {
 std::string line(const CrossValidationPoint& p, int folds, const std::string& by) {
   const ConfusionMatrix& c = p.confusion;
   char text[256];
-  std::snprintf(text, sizeof(text),
-                "%d-fold by %s, C %g, gamma %g: accuracy %.2f%%, precision %.2f%%, recall "
-                "%.2f%% (tp %llu, fp %llu, tn %llu, fn %llu)",
-                folds, by.c_str(), p.C, p.gamma, 100.0 * c.accuracy(), 100.0 * c.precision(),
-                100.0 * c.recall(), static_cast<unsigned long long>(c.tp),
-                static_cast<unsigned long long>(c.fp), static_cast<unsigned long long>(c.tn),
-                static_cast<unsigned long long>(c.fn));
+  std::snprintf(
+      text, sizeof(text),
+      "%d-fold by %s, %s kernel, C %g, gamma %g: accuracy %.2f%%, precision %.2f%%, recall "
+      "%.2f%% (tp %llu, fp %llu, tn %llu, fn %llu)",
+      folds, by.c_str(), kernel_name(p.kernel), p.C, p.gamma, 100.0 * c.accuracy(),
+      100.0 * c.precision(), 100.0 * c.recall(), static_cast<unsigned long long>(c.tp),
+      static_cast<unsigned long long>(c.fp), static_cast<unsigned long long>(c.tn),
+      static_cast<unsigned long long>(c.fn));
   return text;
 }
 
@@ -36,12 +38,16 @@ class CrossValidate final : public bt::SyncActionNode {
                                      "hand (its C1, C2 and C12 descriptors) or example (the "
                                      "paper)"),
          bt::input_port<int>("folds", d.folds, "number of folds"),
+         bt::input_port<std::vector<std::string>>("kernels", std::vector<std::string>{"poly"},
+                                                  "kernel families to try: poly, rbf"),
          bt::input_port<std::vector<double>>("c_values", d.c_values, "costs to try"),
+         bt::input_port<std::vector<double>>("gamma_values", d.gamma_values,
+                                             "kernel scales to try; empty = 1 / components"),
          bt::input_port<int>("components", static_cast<int>(d.pca_components), "PCA components"),
          bt::input_port<int>("threads", 0, "workers (0: all cores)")},
         0,
         0,
-        "Reports the SVM's cross-validation accuracy for each C.",
+        "Reports the SVM's cross-validation accuracy for each kernel, C and gamma.",
         {}};
   }
 
@@ -55,7 +61,13 @@ class CrossValidate final : public bt::SyncActionNode {
       fail("folds_by", e.message());
     }
     o.folds = get_input<int>("folds");
+    try {
+      o.kernels = kernel_types(get_input<std::vector<std::string>>("kernels"));
+    } catch (const Error& e) {
+      fail("kernels", e.message());
+    }
     o.c_values = get_input<std::vector<double>>("c_values");
+    o.gamma_values = get_input<std::vector<double>>("gamma_values");
     const int components = get_input<int>("components");
     if (components < 1) fail("components", "components must be at least 1");
     o.pca_components = static_cast<std::size_t>(components);

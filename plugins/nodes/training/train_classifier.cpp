@@ -4,6 +4,7 @@
 #include "antipode/bt/action_node.hpp"
 #include "antipode/grasp/svm_training.hpp"
 #include "fold_check.hpp"
+#include "kernel_names.hpp"
 #include "nodes.hpp"
 
 namespace antipode::training {
@@ -20,6 +21,9 @@ class TrainClassifier final : public bt::SyncActionNode {
         bt::NodeCategory::kAction,
         {bt::input_port<TrainingSetPtr>("dataset", "the examples"),
          bt::input_port<std::string>("model_file", "where to write the model"),
+         bt::input_port<std::vector<std::string>>(
+             "kernels", std::vector<std::string>{"poly"},
+             "kernel families tried by cross-validation: poly, rbf (Gaussian)"),
          bt::input_port<int>("degree", d.degree, "polynomial kernel degree"),
          bt::input_port<std::vector<double>>("c_values", d.c_values,
                                              "soft-margin costs tried by cross-validation"),
@@ -67,6 +71,11 @@ class TrainClassifier final : public bt::SyncActionNode {
  private:
   SvmTrainingOptions read_options(const TrainingSet& set) const {
     SvmTrainingOptions o;
+    try {
+      o.kernels = kernel_types(get_input<std::vector<std::string>>("kernels"));
+    } catch (const Error& e) {
+      fail("kernels", e.message());
+    }
     o.degree = get_input<int>("degree");
     o.c_values = get_input<std::vector<double>>("c_values");
     o.gamma_values = get_input<std::vector<double>>("gamma_values");
@@ -111,7 +120,8 @@ class TrainClassifier final : public bt::SyncActionNode {
   }
 
   static std::string model_summary(const SvmModel& model, const std::string& file) {
-    std::string text = "C = " + std::to_string(model.kernel.C) +
+    std::string text = std::string(kernel_name(model.kernel.type)) +
+                       " kernel, C = " + std::to_string(model.kernel.C) +
                        ", gamma = " + std::to_string(model.kernel.gamma) + ", " +
                        std::to_string(model.support_vector_count()) + " support vectors, " +
                        std::to_string(model.components()) + " components";

@@ -5,9 +5,11 @@
 /// `descriptor.image` layout, `input_dimension()` numbers) is
 ///
 ///   1. reduced:  z_j = scale_j * basis_j . (x - mean)          (j < components(); PCA)
-///   2. scored:   f(x) = sum_i alpha_i (gamma z . sv_i + coef0)^degree - rho
+///   2. scored:   f(x) = sum_i alpha_i K(z, sv_i) - rho
 ///
-/// f > 0 means "a grasp" (the label-+1 side of the polynomial-kernel SVM); higher is more
+/// with the polynomial kernel K(a, b) = (gamma a . b + coef0)^degree (the paper's) or the
+/// Gaussian (RBF) kernel K(a, b) = exp(-gamma |a - b|^2). f > 0 means "a grasp" (the
+/// label-+1 side of the SVM); higher is more
 /// confident. Models are written by train_svm() (svm_training.hpp) and stored with save() in
 /// antipode's binary container (core/binary_file.hpp).
 
@@ -39,9 +41,20 @@ struct SvmDescriptorSpec {
   bool matches(const SvmDescriptorSpec& other) const;
 };
 
-/// The polynomial kernel K(a, b) = (gamma a . b + coef0)^degree and the soft-margin cost C
-/// the machine was trained with.
+/// The kernel families a model can use.
+enum class SvmKernelType {
+  kPolynomial,  ///< K(a, b) = (gamma a . b + coef0)^degree ("poly")
+  kRbf,         ///< K(a, b) = exp(-gamma |a - b|^2) ("rbf"; degree and coef0 unused)
+};
+
+/// "poly" or "rbf".
+const char* kernel_name(SvmKernelType type);
+/// The kernel named "poly" or "rbf"; another word is an antipode::Error that lists them.
+SvmKernelType kernel_type(const std::string& name);
+
+/// The kernel and the soft-margin cost C the machine was trained with.
 struct SvmKernel {
+  SvmKernelType type = SvmKernelType::kPolynomial;
   int degree = 3;
   double gamma = 1.0;
   double coef0 = 1.0;
@@ -81,8 +94,8 @@ class SvmModel {
   std::size_t support_vector_count() const { return alpha.size(); }
 
   /// Throws antipode::Error (prefixed with `context`, e.g. the file name) when the sizes
-  /// disagree with each other or with the descriptor options, a number is non-finite, the
-  /// degree is outside [1, 10] or the model has no support vector.
+  /// disagree with each other or with the descriptor options, a number is non-finite, a
+  /// polynomial kernel's degree is outside [1, 10] or the model has no support vector.
   void validate(const std::string& context = "SVM model") const;
 
   /// Decision values f(x) of `n` row-major descriptors of `dim` numbers at `rows`, using

@@ -36,11 +36,14 @@ enum class FoldUnit {
 FoldUnit fold_unit(const std::string& name);
 
 struct SvmTrainingOptions {
+  /// Kernel families tried by cross-validation (the paper compared Gaussian and polynomial
+  /// kernels and chose the degree-3 polynomial).
+  std::vector<SvmKernelType> kernels = {SvmKernelType::kPolynomial};
   int degree = 3;                                    ///< polynomial degree (the paper: 3)
   double coef0 = 1.0;                                ///< kernel (gamma a . b + coef0)^degree
   std::vector<double> c_values = {0.1, 1, 10, 100};  ///< C candidates
   /// gamma candidates; empty means the single value 1 / components (the reduced features
-  /// have unit variance on average, so gamma a . b is of order one).
+  /// have unit variance on average, so gamma a . b and gamma |a - b|^2 / 2 are of order one).
   std::vector<double> gamma_values;
   std::size_t pca_components = 96;      ///< k (fewer when the data has lower rank)
   std::size_t max_pca_examples = 6000;  ///< PCA is fitted on a seeded subsample this large
@@ -71,16 +74,18 @@ struct ConfusionMatrix {
   ConfusionMatrix& operator+=(const ConfusionMatrix& other);
 };
 
-/// The cross-validation of one (C, gamma) candidate.
+/// The cross-validation of one (kernel, C, gamma) candidate.
 struct CrossValidationPoint {
   double C = 0.0;
   double gamma = 0.0;
+  SvmKernelType kernel = SvmKernelType::kPolynomial;
   ConfusionMatrix confusion;  ///< summed over the folds (each example held out once)
 };
 
 struct CrossValidationResult {
-  std::vector<CrossValidationPoint> points;  ///< one per candidate, C-major grid order
-  std::size_t best = 0;                      ///< index of the most accurate (first on ties)
+  /// One per candidate, in grid order: kernel, then C, then gamma.
+  std::vector<CrossValidationPoint> points;
+  std::size_t best = 0;  ///< index of the most accurate (first on ties)
   int folds = 0;
 
   const CrossValidationPoint& best_point() const { return points.at(best); }
@@ -94,11 +99,11 @@ struct CrossValidationResult {
 std::vector<int> assign_folds(const TrainingSet& set, int folds, std::uint64_t seed,
                               FoldUnit unit = FoldUnit::kHand);
 
-/// k-fold cross-validation, folds by `options.folds_by`, of every (C, gamma) candidate (PCA fitted
-/// once on the whole set, as train_svm() does). `options.folds` must be at least 2.
+/// k-fold cross-validation, folds by `options.folds_by`, of every (kernel, C, gamma) candidate (PCA
+/// fitted once on the whole set, as train_svm() does). `options.folds` must be at least 2.
 CrossValidationResult cross_validate(const TrainingSet& set, const SvmTrainingOptions& options);
 
-/// Fits the PCA reduction, chooses C and gamma by grouped cross-validation (the first
+/// Fits the PCA reduction, chooses kernel, C and gamma by grouped cross-validation (the first
 /// candidate when `options.folds` is 0; the chosen accuracy goes to info.cv_accuracy), then
 /// trains on the whole set. The model records `image` and `geometry` as its descriptor spec.
 /// Throws antipode::Error for an empty set, a set with one class only, descriptors whose
