@@ -9,9 +9,9 @@
 ///
 /// with the polynomial kernel K(a, b) = (gamma a . b + coef0)^degree (the paper's) or the
 /// Gaussian (RBF) kernel K(a, b) = exp(-gamma |a - b|^2). f > 0 means "a grasp" (the
-/// label-+1 side of the SVM); higher is more
-/// confident. Models are written by train_svm() (svm_training.hpp) and stored with save() in
-/// antipode's binary container (core/binary_file.hpp).
+/// label-+1 side of the SVM); higher is more confident. Models are written by train_svm()
+/// (svm_training.hpp) and stored with save() in antipode's binary container
+/// (core/binary_file.hpp).
 
 #include <cstddef>
 #include <cstdint>
