@@ -154,8 +154,12 @@ void score_block(const SvmModel& m, const RowMatrixF& z, std::size_t first, std:
   const auto nsv = static_cast<Eigen::Index>(m.support_vector_count());
   const ConstRowMapF support(m.support_vectors.data(), nsv, k);
   const RowMatrixF dots = z * support.transpose();
-  const Eigen::VectorXf z_squared = z.rowwise().squaredNorm();
-  const Eigen::VectorXf sv_squared = support.rowwise().squaredNorm();
+  // Squared norms: only the Gaussian kernel needs them (|z - sv|^2 from the dot products).
+  const bool gaussian = m.kernel.type == SvmKernelType::kRbf;
+  const Eigen::VectorXf z_squared =
+      gaussian ? z.rowwise().squaredNorm().eval() : Eigen::VectorXf::Zero(z.rows());
+  const Eigen::VectorXf sv_squared =
+      gaussian ? support.rowwise().squaredNorm().eval() : Eigen::VectorXf::Zero(nsv);
   for (std::size_t r = 0; r < count; ++r) {
     const auto row = static_cast<Eigen::Index>(r);
     double sum = 0.0;
