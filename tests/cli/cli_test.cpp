@@ -433,6 +433,11 @@ TEST_F(TrainTest, SameSeedSameModelAndTheModelEvaluates) {
   EXPECT_NE(result.out.find("unknown kernel 'gauss' (use poly or rbf)"), std::string::npos)
       << result.out;
   EXPECT_NE(result.out.find("retrain.yaml:6:"), std::string::npos) << result.out;
+  result = run("run " + retrain("kernels: []"));
+  EXPECT_EQ(result.exit_code, 2) << result.out;
+  EXPECT_NE(result.out.find("retrain.yaml:6:"), std::string::npos) << result.out;
+  EXPECT_NE(result.out.find("no kernel named (use poly, rbf or both)"), std::string::npos)
+      << result.out;
   // The Gaussian kernel trains, and the model says which kernel it has.
   result = run("run " + retrain("folds: 0, kernels: [rbf]"));
   EXPECT_EQ(result.exit_code, 0) << result.out;
