@@ -18,7 +18,12 @@ namespace {
 
 constexpr const char* kMagic = "ANTPSVM1";
 // 1: descriptors with four alignment angles and no occlusion statistics; not read.
-constexpr std::uint32_t kVersion = 2;
+// 2: support vectors in single precision; read.
+// 3: support vectors in half precision.
+constexpr std::uint32_t kVersion = 3;
+constexpr std::uint32_t kOldestReadable = 2;
+// The largest finite half-precision number.
+constexpr float kHalfMax = 65504.0f;
 constexpr int kMaxOption = 4096;  // bound on each image option read from a file
 
 using RowMatrixF = Eigen::Matrix<float, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
@@ -79,6 +84,10 @@ std::string numbers_problem(const SvmModel& m) {
   if (!(std::isfinite(k.gamma) && k.gamma > 0.0 && std::isfinite(k.coef0) && std::isfinite(k.C) &&
         k.C > 0.0)) {
     return "invalid kernel parameters (gamma and C must be positive)";
+  }
+  if (std::any_of(m.support_vectors.begin(), m.support_vectors.end(),
+                  [](float v) { return std::abs(v) > kHalfMax; })) {
+    return "support vector number beyond half precision's range (65504)";
   }
   if (!(std::isfinite(m.info.cv_accuracy) && m.info.cv_accuracy <= 1.0)) {
     return "invalid cross-validation accuracy";
@@ -283,6 +292,16 @@ std::vector<double> SvmModel::decision_values_reduced(const float* reduced, std:
   return values;
 }
 
+void SvmModel::round_support_vectors() {
+  for (float& v : support_vectors) {
+    if (std::abs(v) > kHalfMax) {
+      throw Error("SVM model: support vector number " + number(v) +
+                  " is beyond half precision's range (65504)");
+    }
+    v = static_cast<float>(Eigen::half(v));
+  }
+}
+
 void SvmModel::check_compatible(const HandImageOptions& image, const HandGeometry& geometry,
                                 const std::string& model_name) const {
   const SvmDescriptorSpec wanted = SvmDescriptorSpec::of(image, geometry);
@@ -307,7 +326,10 @@ void SvmModel::save(const std::string& path) const {
   w.put_vector(mean);
   w.put_vector(basis);
   w.put_vector(scale);
-  w.put_vector(support_vectors);
+  std::vector<std::uint16_t> half_bits(support_vectors.size());
+  std::transform(support_vectors.begin(), support_vectors.end(), half_bits.begin(),
+                 [](float v) { return Eigen::numext::bit_cast<std::uint16_t>(Eigen::half(v)); });
+  w.put_vector(half_bits);
   w.put_vector(alpha);
   w.put(rho);
   w.put<std::uint64_t>(info.positives);
@@ -320,7 +342,7 @@ void SvmModel::save(const std::string& path) const {
 
 SvmModel SvmModel::load(const std::string& path) {
   BinaryReader r(path, kMagic, kVersion, "classifier model");
-  if (r.version() < kVersion) {
+  if (r.version() < kOldestReadable) {
     r.fail("format version " + std::to_string(r.version()) +
            " was written by an older antipode for other descriptors; retrain with `antipode "
            "train`");
@@ -344,7 +366,16 @@ SvmModel SvmModel::load(const std::string& path) {
   m.mean = r.get_vector<float>();
   m.basis = r.get_vector<float>();
   m.scale = r.get_vector<float>();
-  m.support_vectors = r.get_vector<float>();
+  if (r.version() == 2) {
+    m.support_vectors = r.get_vector<float>();
+  } else {
+    const std::vector<std::uint16_t> half_bits = r.get_vector<std::uint16_t>();
+    m.support_vectors.resize(half_bits.size());
+    std::transform(half_bits.begin(), half_bits.end(), m.support_vectors.begin(),
+                   [](std::uint16_t bits) {
+                     return static_cast<float>(Eigen::numext::bit_cast<Eigen::half>(bits));
+                   });
+  }
   m.alpha = r.get_vector<double>();
   m.rho = r.get<double>();
   m.info.positives = r.get<std::uint64_t>();

@@ -12,11 +12,10 @@
 #include <Eigen/Core>
 #include <Eigen/Eigenvalues>
 #include <Eigen/QR>
-#include <opencv2/core.hpp>
-#include <opencv2/ml.hpp>
 
 #include "antipode/core/error.hpp"
 #include "antipode/core/random.hpp"
+#include "antipode/grasp/svm_solver.hpp"
 
 namespace antipode {
 namespace {
@@ -141,7 +140,7 @@ void principal_components(const RowMatrixF& a, std::size_t wanted, std::uint64_t
   const MatrixF b = a * q;
   const Eigen::MatrixXd gram = (b.transpose() * b).cast<double>();
   const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eigen(gram);
-  const Eigen::VectorXd values = eigen.eigenvalues();  // ascending
+  const Eigen::VectorXd& values = eigen.eigenvalues();  // ascending
   const double largest = std::max(values(width - 1), 0.0);
   const double samples = std::max<double>(static_cast<double>(a.rows()) - 1.0, 1.0);
   model.basis.clear();
@@ -176,7 +175,7 @@ SvmModel fit_reduction(const TrainingSet& set, const SvmTrainingOptions& options
 }
 
 // ---------------------------------------------------------------------------------------
-// The SVM solver (OpenCV), on reduced features.
+// The SVM solver (svm_solver.hpp), on reduced features.
 
 struct SvmSolution {
   std::vector<float> support_vectors;
@@ -190,53 +189,38 @@ struct ReducedSet {
   const std::vector<std::int8_t>* labels = nullptr;
 };
 
-SvmSolution extract_solution(const cv::ml::SVM& svm, std::size_t k) {
-  const cv::Mat vectors = svm.getSupportVectors();
-  cv::Mat alpha;
-  cv::Mat indices;
-  const double rho = svm.getDecisionFunction(0, alpha, indices);
+// Trains on `rows` of `data` with `threads` kernel row workers; the support vectors are the
+// rows with a positive multiplier, their coefficients y_t a_t (positive for grasps).
+SvmSolution solve(const ReducedSet& data, const std::vector<std::size_t>& rows,
+                  const SvmKernel& kernel, const SvmTrainingOptions& options, int threads) {
+  std::vector<float> z(rows.size() * data.k);
+  std::vector<std::int8_t> labels(rows.size());
+  for (std::size_t r = 0; r < rows.size(); ++r) {
+    std::copy_n(data.z.data() + rows[r] * data.k, data.k, z.data() + r * data.k);
+    labels[r] = (*data.labels)[rows[r]];
+  }
+  SvmSolverOptions solver;
+  solver.tolerance = options.tolerance;
+  solver.max_iterations = options.max_iterations;
+  solver.cache_mib = options.cache_mib;
+  solver.threads = threads;
+  const SvmDualSolution dual =
+      solve_svm_dual(z.data(), rows.size(), data.k, labels, kernel, solver);
   SvmSolution s;
-  // OpenCV's decision function is sum alpha K - rho > 0 for its first class (label -1):
-  // both are negated so that positive values mean a grasp.
-  s.rho = -rho;
-  for (int i = 0; i < indices.cols * indices.rows; ++i) {
-    const int v = indices.at<int>(i);
-    s.alpha.push_back(-alpha.at<double>(i));
-    const float* row = vectors.ptr<float>(v);
-    s.support_vectors.insert(s.support_vectors.end(), row, row + k);
+  s.rho = dual.rho;
+  for (std::size_t r = 0; r < rows.size(); ++r) {
+    if (dual.alpha[r] <= 0.0) continue;
+    s.alpha.push_back(labels[r] > 0 ? dual.alpha[r] : -dual.alpha[r]);
+    const float* row = z.data() + r * data.k;
+    s.support_vectors.insert(s.support_vectors.end(), row, row + data.k);
   }
   return s;
-}
-
-SvmSolution solve(const ReducedSet& data, const std::vector<std::size_t>& rows,
-                  const SvmKernel& kernel, const SvmTrainingOptions& options) {
-  const int k = static_cast<int>(data.k);
-  cv::Mat samples(static_cast<int>(rows.size()), k, CV_32F);
-  cv::Mat responses(static_cast<int>(rows.size()), 1, CV_32S);
-  for (std::size_t r = 0; r < rows.size(); ++r) {
-    std::copy_n(data.z.data() + rows[r] * data.k, data.k, samples.ptr<float>(static_cast<int>(r)));
-    responses.at<int>(static_cast<int>(r)) = (*data.labels)[rows[r]];
-  }
-  const cv::Ptr<cv::ml::SVM> svm = cv::ml::SVM::create();
-  svm->setType(cv::ml::SVM::C_SVC);
-  svm->setKernel(kernel.type == SvmKernelType::kRbf ? cv::ml::SVM::RBF : cv::ml::SVM::POLY);
-  svm->setDegree(kernel.degree);
-  svm->setGamma(kernel.gamma);
-  svm->setCoef0(kernel.coef0);
-  svm->setC(kernel.C);
-  svm->setTermCriteria(cv::TermCriteria(cv::TermCriteria::MAX_ITER + cv::TermCriteria::EPS,
-                                        options.max_iterations, options.tolerance));
-  try {
-    svm->train(cv::ml::TrainData::create(samples, cv::ml::ROW_SAMPLE, responses));
-  } catch (const cv::Exception& e) {
-    throw Error(std::string("SVM training: the solver failed: ") + e.what());
-  }
-  return extract_solution(*svm, data.k);
 }
 
 void install(const SvmSolution& solution, const SvmKernel& kernel, SvmModel& model) {
   model.kernel = kernel;
   model.support_vectors = solution.support_vectors;
+  model.round_support_vectors();  // as the model file stores them
   model.alpha = solution.alpha;
   model.rho = solution.rho;
 }
@@ -296,11 +280,12 @@ ConfusionMatrix run_fold(const SvmModel& reduction, const ReducedSet& data,
                 " holds one class only; use fewer folds or more varied data");
   }
   SvmModel model = reduction;
-  install(solve(data, train, kernel, options), kernel, model);
+  install(solve(data, train, kernel, options, 1), kernel, model);
   std::vector<float> z;
   z.reserve(held_out.size() * data.k);
   for (const std::size_t i : held_out) {
-    z.insert(z.end(), data.z.begin() + i * data.k, data.z.begin() + (i + 1) * data.k);
+    const float* row = data.z.data() + i * data.k;
+    z.insert(z.end(), row, row + data.k);
   }
   return count(model.decision_values_reduced(z.data(), held_out.size(), 1), *data.labels, held_out,
                0.0);
@@ -487,7 +472,7 @@ SvmModel train_svm(const TrainingSet& set, const SvmTrainingOptions& options,
   }
   std::vector<std::size_t> all(set.size());
   std::iota(all.begin(), all.end(), 0);
-  install(solve(data, all, kernel, options), kernel, model);
+  install(solve(data, all, kernel, options, options.threads), kernel, model);
   progress.step("final training");
   model.descriptor = SvmDescriptorSpec::of(image, geometry);
   model.info.positives = set.positives();

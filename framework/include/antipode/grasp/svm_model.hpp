@@ -84,6 +84,9 @@ class SvmModel {
   std::vector<float> scale;
   SvmKernel kernel;
   /// Support vectors in reduced space: support_vector_count() x components(), row-major.
+  /// Model files store them at half precision (IEEE binary16: 11 significant bits, at most
+  /// 65504 in magnitude); train_svm() rounds them so (round_support_vectors()), so a trained
+  /// model and the one loaded from its file give the same decision values.
   std::vector<float> support_vectors;
   std::vector<double> alpha;  ///< dual coefficient of each support vector (label sign included)
   double rho = 0.0;           ///< offset subtracted from the kernel sum
@@ -123,8 +126,13 @@ class SvmModel {
   void check_compatible(const HandImageOptions& image, const HandGeometry& geometry,
                         const std::string& model_name = "the SVM model") const;
 
+  /// Rounds every support vector number to the nearest half-precision value, as save()
+  /// stores it. Throws antipode::Error for a number beyond half precision's range.
+  void round_support_vectors();
+
   /// Writes the model to `path` all-or-nothing (validated first); the bytes depend only on
-  /// the model's contents.
+  /// the model's contents. Support vectors are written at half precision (rounded to
+  /// nearest); the rest at full precision.
   void save(const std::string& path) const;
   /// Reads a file written by save(). A missing, truncated, corrupted, foreign or
   /// inconsistent file is an antipode::Error naming the file and the problem.

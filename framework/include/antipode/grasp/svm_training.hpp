@@ -2,8 +2,8 @@
 /// @file
 /// Training and evaluating the paper's hand classifier (section 4.3): PCA-reduced HOG
 /// descriptors (one common scale, not whitened), a polynomial-kernel soft-margin SVM whose
-/// C (and gamma) are chosen by grouped k-fold cross-validation. The solver is OpenCV's (used
-/// privately); the result is an SvmModel that predicts without OpenCV. Everything is
+/// C (and gamma) are chosen by grouped k-fold cross-validation. The solver is antipode's
+/// (svm_solver.hpp); the result is an SvmModel. Everything is
 /// deterministic: the same training set and options give a bit-identical model, whatever the
 /// thread count.
 
@@ -53,6 +53,7 @@ struct SvmTrainingOptions {
   int threads = 0;                      ///< workers (0: all); results do not depend on it
   double tolerance = 1e-3;              ///< solver stopping tolerance (as libsvm's eps)
   int max_iterations = 10000000;        ///< solver iteration cap
+  std::size_t cache_mib = 1024;         ///< kernel row cache per solver (svm_solver.hpp)
   std::string description;              ///< copied into the model's info
   SvmProgress progress;  ///< optional; called from worker threads, one call at a time
 
