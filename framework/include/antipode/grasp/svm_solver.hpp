@@ -8,17 +8,17 @@
 /// solved by sequential minimal optimisation: each step moves the pair of multipliers that
 /// a second-order model of the objective says gains most (Fan, Chen and Lin, "Working set
 /// selection using second order information", JMLR 2005), until the largest violation of the
-/// optimality conditions is below a tolerance (libsvm's stopping rule). Kernel rows are
-/// computed as one matrix-vector product each and kept in a least-recently-used cache.
+/// optimality conditions is below a tolerance (libsvm's stopping rule). Multipliers held at
+/// a bound are set aside while they stay there (shrinking). Kernel rows are computed as one
+/// matrix-vector product each and kept in a least-recently-used cache.
 ///
 /// Written here rather than taken from OpenCV or libsvm because both are slower on the
 /// classifier's training sets (tens of thousands of short dense rows): OpenCV picks pairs by
 /// first-order information only, does not shrink and caps its kernel cache at 500 MB (2.2
 /// times as long for the polynomial kernel, 5.2 times for the Gaussian one on 48,000 rows);
 /// libsvm stores rows as sparse index-value pairs in double precision (3 to 11 times as long
-/// on 5,000-20,000 rows) (docs/results.md,
-/// "SVM solver"). The result is deterministic: it depends on the data and the options only,
-/// not on the number of threads computing kernel rows.
+/// on 5,000-20,000 rows); docs/results.md, "SVM solver". The result is deterministic: it
+/// depends on the data and the options only, not on the number of threads computing rows.
 
 #include <cstddef>
 #include <cstdint>
