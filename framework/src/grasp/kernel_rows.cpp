@@ -5,7 +5,6 @@
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
-#include <tbb/task_arena.h>
 #include <Eigen/Core>
 
 namespace antipode::detail {
@@ -21,7 +20,12 @@ constexpr std::size_t kBlock = 2048;
 
 KernelRows::KernelRows(const float* rows, std::size_t n, std::size_t k, const SvmKernel& kernel,
                        std::size_t cache_bytes, int threads)
-    : rows_(rows), n_(n), k_(k), kernel_(kernel), threads_(threads) {
+    : rows_(rows),
+      n_(n),
+      k_(k),
+      kernel_(kernel),
+      threads_(threads),
+      arena_(threads > 0 ? threads : tbb::task_arena::automatic) {
   squared_norm_.resize(n);
   const Eigen::Map<const RowMatrixF> z(rows, static_cast<Eigen::Index>(n),
                                        static_cast<Eigen::Index>(k));
@@ -50,7 +54,7 @@ float KernelRows::apply(float dot, std::size_t s, std::size_t t) const {
   return value;
 }
 
-void KernelRows::compute(std::size_t s, float* out) const {
+void KernelRows::compute(std::size_t s, float* out) {
   const auto k = static_cast<Eigen::Index>(k_);
   const Eigen::Map<const Eigen::VectorXf> z_s(rows_ + s * k_, k);
   const auto block = [&](std::size_t b) {
@@ -66,8 +70,7 @@ void KernelRows::compute(std::size_t s, float* out) const {
     for (std::size_t b = 0; b < blocks; ++b) block(b);
     return;
   }
-  tbb::task_arena arena(threads_ > 0 ? threads_ : tbb::task_arena::automatic);
-  arena.execute([&] {
+  arena_.execute([&] {
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, blocks, 1),
                       [&](const tbb::blocked_range<std::size_t>& range) {
                         for (std::size_t b = range.begin(); b != range.end(); ++b) block(b);

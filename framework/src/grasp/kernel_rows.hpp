@@ -8,6 +8,8 @@
 #include <memory>
 #include <vector>
 
+#include <tbb/task_arena.h>
+
 #include "antipode/grasp/svm_model.hpp"
 
 namespace antipode::detail {
@@ -29,7 +31,7 @@ class KernelRows {
   std::int64_t computed() const { return computed_; }
 
  private:
-  void compute(std::size_t s, float* out) const;
+  void compute(std::size_t s, float* out);
   float apply(float dot, std::size_t s, std::size_t t) const;
 
   const float* rows_;
@@ -37,6 +39,7 @@ class KernelRows {
   std::size_t k_;
   SvmKernel kernel_;
   int threads_;
+  tbb::task_arena arena_;            // the row workers, when threads_ is not 1
   std::vector<float> squared_norm_;  // |z_t|^2, for the Gaussian kernel
   std::vector<float> diagonal_;
   std::unique_ptr<float[]> slots_;        // capacity x n, touched as rows arrive
