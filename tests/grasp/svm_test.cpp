@@ -636,11 +636,18 @@ TEST(BinaryFileTest, OlderModelAndTrainingSetFormatsAreRefused) {
   model.put_string("occupancy-hog-3");
   model.write(path);
   const std::string model_error = error_of([&] { SvmModel::load(path); });
-  EXPECT_NE(model_error.find("format version 1 was written by an older antipode for other "
-                             "descriptors; retrain with `antipode train`"),
+  EXPECT_NE(model_error.find("format version 1 was written by an older antipode; retrain with "
+                             "`antipode train`"),
             std::string::npos)
       << model_error;
   EXPECT_NE(model_error.find(path), std::string::npos) << model_error;
+  BinaryWriter single_precision("ANTPSVM1", 2);  // support vectors as floats
+  single_precision.put_string("occupancy-hog-4");
+  single_precision.write(path);
+  EXPECT_NE(error_of([&] { SvmModel::load(path); })
+                .find("format version 2 was written by an older antipode; retrain with "
+                      "`antipode train`"),
+            std::string::npos);
   BinaryWriter examples("ANTPDATA", 3);
   examples.put<std::int32_t>(10);
   examples.write(path);

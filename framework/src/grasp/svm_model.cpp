@@ -18,10 +18,9 @@ namespace {
 
 constexpr const char* kMagic = "ANTPSVM1";
 // 1: descriptors with four alignment angles and no occlusion statistics; not read.
-// 2: support vectors in single precision; read.
+// 2: support vectors in single precision; not read.
 // 3: support vectors in half precision.
 constexpr std::uint32_t kVersion = 3;
-constexpr std::uint32_t kOldestReadable = 2;
 // The largest finite half-precision number.
 constexpr float kHalfMax = 65504.0f;
 constexpr int kMaxOption = 4096;  // bound on each image option read from a file
@@ -342,10 +341,9 @@ void SvmModel::save(const std::string& path) const {
 
 SvmModel SvmModel::load(const std::string& path) {
   BinaryReader r(path, kMagic, kVersion, "classifier model");
-  if (r.version() < kOldestReadable) {
+  if (r.version() < kVersion) {
     r.fail("format version " + std::to_string(r.version()) +
-           " was written by an older antipode for other descriptors; retrain with `antipode "
-           "train`");
+           " was written by an older antipode; retrain with `antipode train`");
   }
   SvmModel m;
   m.descriptor.name = r.get_string();
@@ -366,16 +364,12 @@ SvmModel SvmModel::load(const std::string& path) {
   m.mean = r.get_vector<float>();
   m.basis = r.get_vector<float>();
   m.scale = r.get_vector<float>();
-  if (r.version() == 2) {
-    m.support_vectors = r.get_vector<float>();
-  } else {
-    const std::vector<std::uint16_t> half_bits = r.get_vector<std::uint16_t>();
-    m.support_vectors.resize(half_bits.size());
-    std::transform(half_bits.begin(), half_bits.end(), m.support_vectors.begin(),
-                   [](std::uint16_t bits) {
-                     return static_cast<float>(Eigen::numext::bit_cast<Eigen::half>(bits));
-                   });
-  }
+  const std::vector<std::uint16_t> half_bits = r.get_vector<std::uint16_t>();
+  m.support_vectors.resize(half_bits.size());
+  std::transform(half_bits.begin(), half_bits.end(), m.support_vectors.begin(),
+                 [](std::uint16_t bits) {
+                   return static_cast<float>(Eigen::numext::bit_cast<Eigen::half>(bits));
+                 });
   m.alpha = r.get_vector<double>();
   m.rho = r.get<double>();
   m.info.positives = r.get<std::uint64_t>();
