@@ -1,3 +1,4 @@
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -5,6 +6,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <limits>
 
 #include <gtest/gtest.h>
 #include <opencv2/core.hpp>
@@ -288,34 +290,88 @@ TEST(SvmTest, SaveLoadRoundTripKeepsValuesAndBytes) {
   fs::remove(again);
 }
 
-TEST(SvmTest, SupportVectorsAreStoredAtHalfPrecision) {
+bool is_half(float v) {
+  const float scaled = std::ldexp(std::abs(v), 10 - std::ilogb(v));  // in [1024, 2048)
+  return v == 0.0f || std::abs(v) < 6.2e-5f || scaled == std::round(scaled);
+}
+
+// Whether `count` numbers `stride` apart from `first` are c * 2^e for one e and integers
+// |c| <= 127, the largest |c| being at least 64 (the step is the smallest power of two that
+// fits).
+bool is_coded(const float* first, std::size_t count, std::size_t stride) {
+  float largest = 0.0f;
+  for (std::size_t i = 0; i < count; ++i) largest = std::max(largest, std::abs(first[i * stride]));
+  float step = std::ldexp(1.0f, -60);
+  while (largest > 127.0f * step) step *= 2.0f;
+  for (std::size_t i = 0; i < count; ++i) {
+    const float c = first[i * stride] / step;
+    if (c != std::round(c)) return false;
+  }
+  return largest >= 64.0f * step;
+}
+
+TEST(SvmTest, BasisAndSupportVectorsAreStoredAsTheFileHoldsThem) {
   const SvmModel& model = trained();
-  // Trained support vectors are already half-precision numbers (11 significant bits)...
+  const std::size_t k = model.components();
+  ASSERT_EQ(k, 24u);
+  const std::size_t h = SvmModel::kHalfPrecisionComponents;
+  // Trained numbers are already what the file holds: the basis rows as 8-bit codes, the
+  // first h components at half precision (11 significant bits), the others as 8-bit codes...
+  const std::size_t d = model.input_dimension();
+  for (std::size_t j = 0; j < k; ++j) EXPECT_TRUE(is_coded(&model.basis[j * d], d, 1)) << j;
   std::size_t unrounded = 0;
-  for (const float v : model.support_vectors) {
-    const float scaled = std::ldexp(std::abs(v), 10 - std::ilogb(v));  // in [1024, 2048)
-    if (v != 0.0f && std::abs(v) >= 6.2e-5f && scaled != std::round(scaled)) ++unrounded;
+  for (std::size_t i = 0; i < model.support_vectors.size(); ++i) {
+    unrounded += i % k < h && !is_half(model.support_vectors[i]);
   }
   EXPECT_EQ(unrounded, 0u);
-  // ... so the file holds two bytes per number and gives them back unchanged.
-  const std::string path = temp_path("half.model");
+  for (std::size_t j = h; j < k; ++j) {
+    EXPECT_TRUE(is_coded(&model.support_vectors[j], model.support_vector_count(), k)) << j;
+  }
+  // ... rounding again changes nothing ...
+  SvmModel again = model;
+  again.round_support_vectors();
+  again.round_basis();
+  EXPECT_EQ(again.support_vectors, model.support_vectors);
+  EXPECT_EQ(again.basis, model.basis);
+  // ... and numbers between those are rounded to the nearest on the way to the file.
+  const std::string path = temp_path("rounded.model");
   SvmModel edited = model;
   edited.support_vectors[0] = 1.0f + 1.0f / 4096.0f;  // between two half-precision numbers
+  float largest = 0.0f;
+  for (std::size_t i = 0; i < model.support_vector_count(); ++i) {
+    largest = std::max(largest, std::abs(model.support_vectors[i * k + h]));
+  }
+  float step = std::ldexp(1.0f, -60);
+  while (largest > 127.0f * step) step *= 2.0f;
+  const float coded = edited.support_vectors[h];
+  ASSERT_LT(std::abs(coded), largest);
+  edited.support_vectors[h] = coded + 0.3f * step;  // a third of the way to the next code
   edited.save(path);
-  EXPECT_EQ(SvmModel::load(path).support_vectors[0], 1.0f);
+  const SvmModel loaded = SvmModel::load(path);
+  EXPECT_EQ(loaded.support_vectors[0], 1.0f);
+  EXPECT_EQ(loaded.support_vectors[h], coded);
+  // Each further support vector costs 2 bytes per half-precision component, 1 per coded one
+  // and its coefficient.
   SvmModel twice = edited;
   twice.support_vectors.insert(twice.support_vectors.end(), edited.support_vectors.begin(),
                                edited.support_vectors.end());
   twice.alpha.insert(twice.alpha.end(), edited.alpha.begin(), edited.alpha.end());
-  const std::string longer = temp_path("half_twice.model");
+  const std::string longer = temp_path("rounded_twice.model");
   twice.save(longer);
   EXPECT_EQ(fs::file_size(longer) - fs::file_size(path),
-            edited.support_vectors.size() * 2 + edited.alpha.size() * sizeof(double));
+            edited.support_vector_count() * (2 * h + (k - h) + sizeof(double)));
   edited.support_vectors[0] = 70000.0f;
   EXPECT_EQ(error_of([&] { edited.round_support_vectors(); }),
             "SVM model: support vector number 70000 is beyond half precision's range (65504)");
   EXPECT_NE(error_of([&] { edited.save(path); }).find("beyond half precision's range"),
             std::string::npos);
+  edited.support_vectors[0] = 1.0f;
+  edited.support_vectors[h] = 70000.0f;  // a coded component takes any size (a coarser step)
+  EXPECT_NO_THROW(edited.save(path));
+  EXPECT_EQ(SvmModel::load(path).support_vectors[h], 69632.0f);  // 68 x 2^10
+  edited.support_vectors[h] = std::numeric_limits<float>::infinity();
+  EXPECT_EQ(error_of([&] { edited.round_support_vectors(); }),
+            "SVM model: support vector number inf is not finite");
   fs::remove(path);
   fs::remove(longer);
 }

@@ -7,6 +7,7 @@ list(APPEND ANTIPODE_SOURCES
   ${CMAKE_CURRENT_LIST_DIR}/antipodal.cpp
   ${CMAKE_CURRENT_LIST_DIR}/hand_image.cpp
   ${CMAKE_CURRENT_LIST_DIR}/normals.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/number_codes.cpp
   ${CMAKE_CURRENT_LIST_DIR}/kernel_rows.cpp
   ${CMAKE_CURRENT_LIST_DIR}/svm_model.cpp
   ${CMAKE_CURRENT_LIST_DIR}/svm_solver.cpp

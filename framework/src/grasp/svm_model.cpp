@@ -12,6 +12,7 @@
 #include "antipode/core/binary_file.hpp"
 #include "antipode/core/error.hpp"
 #include "image_options_io.hpp"
+#include "number_codes.hpp"
 
 namespace antipode {
 namespace {
@@ -19,8 +20,10 @@ namespace {
 constexpr const char* kMagic = "ANTPSVM1";
 // 1: descriptors with four alignment angles and no occlusion statistics; not read.
 // 2: support vectors in single precision; not read.
-// 3: support vectors in half precision.
-constexpr std::uint32_t kVersion = 3;
+// 3: support vectors in half precision; not read.
+// 4: basis in 8-bit codes; support vectors in half precision (the leading components) and
+//    8-bit codes (the rest).
+constexpr std::uint32_t kVersion = 4;
 // The largest finite half-precision number.
 constexpr float kHalfMax = 65504.0f;
 constexpr int kMaxOption = 4096;  // bound on each image option read from a file
@@ -37,6 +40,16 @@ std::string number(double value) {
 template <typename T>
 bool all_finite(const std::vector<T>& values) {
   return std::all_of(values.begin(), values.end(), [](T v) { return std::isfinite(v); });
+}
+
+// Whether a support vector number stored at half precision (svm_model.hpp) is too large.
+bool half_precision_overflow(const SvmModel& m) {
+  const std::size_t k = m.components();
+  const std::size_t h = std::min(SvmModel::kHalfPrecisionComponents, k);
+  for (std::size_t i = 0; i < m.support_vectors.size(); ++i) {
+    if (i % k < h && std::abs(m.support_vectors[i]) > kHalfMax) return true;
+  }
+  return false;
 }
 
 std::string sizes_problem(const SvmModel& m) {
@@ -84,8 +97,7 @@ std::string numbers_problem(const SvmModel& m) {
         k.C > 0.0)) {
     return "invalid kernel parameters (gamma and C must be positive)";
   }
-  if (std::any_of(m.support_vectors.begin(), m.support_vectors.end(),
-                  [](float v) { return std::abs(v) > kHalfMax; })) {
+  if (half_precision_overflow(m)) {
     return "support vector number beyond half precision's range (65504)";
   }
   if (!(std::isfinite(m.info.cv_accuracy) && m.info.cv_accuracy <= 1.0)) {
@@ -101,10 +113,93 @@ std::string model_problem(const SvmModel& m) {
   return problem;
 }
 
-double integer_power(double base, int degree) {
-  double result = 1.0;
-  for (int i = 0; i < degree; ++i) result *= base;
-  return result;
+// ---------------------------------------------------------------------------------------
+// How model files store the basis and the support vectors (format 4; number_codes.hpp):
+// each basis row as 8-bit codes; support vector component j at half precision when
+// j < kHalfPrecisionComponents, else as 8-bit codes, one exponent per component.
+
+std::size_t half_components(const SvmModel& m) {
+  return std::min(SvmModel::kHalfPrecisionComponents, m.components());
+}
+
+// Coded numbers as a file holds them: one exponent per run, the runs' codes in order.
+struct StoredCodes {
+  std::vector<std::int8_t> exponents;
+  std::vector<std::int8_t> codes;
+};
+
+void put_codes(const StoredCodes& s, BinaryWriter& w) {
+  w.put_vector(s.exponents);
+  w.put_vector(s.codes);
+}
+
+StoredCodes get_codes(BinaryReader& r) {
+  StoredCodes s;
+  s.exponents = r.get_vector<std::int8_t>();
+  s.codes = r.get_vector<std::int8_t>();
+  const std::string problem = detail::codes_problem(s.exponents, s.codes);
+  if (!problem.empty()) r.fail("inconsistent: " + problem);
+  return s;
+}
+
+// Runs of `count` numbers (`runs` of them) laid out as `run(i)` says, decoded from `s`
+// into `values`; a file whose parts disagree fails through `r`.
+template <typename RunStart>
+void decode_runs(const StoredCodes& s, std::size_t runs, std::size_t count, std::size_t stride,
+                 const RunStart& run, const BinaryReader& r) {
+  if (s.exponents.size() != runs || s.codes.size() != runs * count) {
+    r.fail("inconsistent: stored codes disagree with the model's sizes");
+  }
+  for (std::size_t i = 0; i < runs; ++i) {
+    detail::decode_codes(s.codes.data() + i * count, count, s.exponents[i], run(i), stride);
+  }
+}
+
+void put_basis(const SvmModel& m, BinaryWriter& w) {
+  const std::size_t d = m.input_dimension();
+  StoredCodes s;
+  for (std::size_t j = 0; j < m.components(); ++j) {
+    s.exponents.push_back(detail::append_codes({m.basis.data() + j * d, d, 1}, s.codes));
+  }
+  put_codes(s, w);
+}
+
+void put_support_vectors(const SvmModel& m, BinaryWriter& w) {
+  const std::size_t k = m.components();
+  const std::size_t h = half_components(m);
+  const std::size_t n = m.support_vector_count();
+  std::vector<std::uint16_t> halves;  // n x h, row-major
+  for (std::size_t i = 0; i < n; ++i) {
+    for (std::size_t j = 0; j < h; ++j)
+      halves.push_back(detail::half_bits(m.support_vectors[i * k + j]));
+  }
+  StoredCodes s;  // component by component
+  for (std::size_t j = h; j < k; ++j) {
+    s.exponents.push_back(detail::append_codes({m.support_vectors.data() + j, n, k}, s.codes));
+  }
+  w.put_vector(halves);
+  put_codes(s, w);
+}
+
+// The support vectors of a file (`halves`, then `coded`) for a model whose components and
+// coefficients `m` already holds.
+std::vector<float> decode_support_vectors(const SvmModel& m,
+                                          const std::vector<std::uint16_t>& halves,
+                                          const StoredCodes& coded, const BinaryReader& r) {
+  const std::size_t k = m.components();
+  const std::size_t h = half_components(m);
+  const std::size_t n = m.support_vector_count();
+  if (halves.size() != n * h) {
+    r.fail("inconsistent: support vectors disagree with their coefficients or the components");
+  }
+  std::vector<float> values(n * k);
+  for (std::size_t i = 0; i < n; ++i) {
+    for (std::size_t j = 0; j < h; ++j)
+      values[i * k + j] = detail::from_half_bits(halves[i * h + j]);
+  }
+  decode_runs(
+      coded, k - h, n, k, [&](std::size_t c) { return values.data() + h + c; }, r);
+  return values;
 }
 
 // Runs body(block) for every block of kBlockRows rows, in parallel.
@@ -147,36 +242,58 @@ RowMatrixF reduce_block(const SvmModel& m, const float* rows, std::size_t first,
   return z;
 }
 
-// K(z_r, sv_i) from the dot product of the two and their squared norms.
-double kernel_value(const SvmKernel& kernel, double dot, double z_squared, double sv_squared) {
+// Support vectors are scored in chunks of this many, so that a chunk's kernel values
+// (kBlockRows x kChunk floats, 512 KiB) stay in cache between the matrix product, the
+// kernel function and the weighted sum.
+constexpr Eigen::Index kSupportChunk = 1024;
+
+// K(z_r, sv_i) for every row r of z and support vector i of `support`, in place of their
+// dot products `k`; `z_squared` and `sv_squared` are the rows' squared norms (only the
+// Gaussian kernel uses them: |z - sv|^2 = |z|^2 + |sv|^2 - 2 z . sv).
+void apply_kernel(const SvmKernel& kernel, const Eigen::VectorXf& z_squared,
+                  const Eigen::RowVectorXf& sv_squared, RowMatrixF& k) {
   if (kernel.type == SvmKernelType::kRbf) {
-    const double distance_squared = std::max(z_squared + sv_squared - 2.0 * dot, 0.0);
-    return std::exp(-kernel.gamma * distance_squared);
+    const auto gamma = static_cast<float>(kernel.gamma);
+    k = ((z_squared.replicate(1, k.cols()) + sv_squared.replicate(k.rows(), 1) - 2.0f * k)
+             .array()
+             .max(0.0f) *
+         -gamma)
+            .exp()
+            .matrix();
+    return;
   }
-  return integer_power(kernel.gamma * dot + kernel.coef0, kernel.degree);
+  const Eigen::ArrayXXf base =
+      static_cast<float>(kernel.gamma) * k.array() + static_cast<float>(kernel.coef0);
+  Eigen::ArrayXXf power = base;
+  for (int i = 1; i < kernel.degree; ++i) power *= base;
+  k = power.matrix();
 }
 
+// f(z_r) for the rows of z (kBlockRows x components), written to out[first + r] for the
+// first `count` rows. Kernel values are single precision (matrix products on the vector
+// units); they are summed in double precision.
 void score_block(const SvmModel& m, const RowMatrixF& z, std::size_t first, std::size_t count,
                  double* out) {
   const auto k = static_cast<Eigen::Index>(m.components());
   const auto nsv = static_cast<Eigen::Index>(m.support_vector_count());
-  const ConstRowMapF support(m.support_vectors.data(), nsv, k);
-  const RowMatrixF dots = z * support.transpose();
-  // Squared norms: only the Gaussian kernel needs them (|z - sv|^2 from the dot products).
   const bool gaussian = m.kernel.type == SvmKernelType::kRbf;
   const Eigen::VectorXf z_squared =
       gaussian ? z.rowwise().squaredNorm().eval() : Eigen::VectorXf::Zero(z.rows());
-  const Eigen::VectorXf sv_squared =
-      gaussian ? support.rowwise().squaredNorm().eval() : Eigen::VectorXf::Zero(nsv);
-  for (std::size_t r = 0; r < count; ++r) {
-    const auto row = static_cast<Eigen::Index>(r);
-    double sum = 0.0;
-    for (Eigen::Index i = 0; i < nsv; ++i) {
-      sum += m.alpha[static_cast<std::size_t>(i)] *
-             kernel_value(m.kernel, dots(row, i), z_squared(row), sv_squared(i));
-    }
-    out[first + r] = sum - m.rho;
+  const Eigen::Map<const Eigen::VectorXd> alpha(m.alpha.data(), nsv);
+  Eigen::VectorXd sum = Eigen::VectorXd::Zero(z.rows());
+  RowMatrixF values;
+  for (Eigen::Index c = 0; c < nsv; c += kSupportChunk) {
+    const Eigen::Index width = std::min(kSupportChunk, nsv - c);
+    const ConstRowMapF support(m.support_vectors.data() + c * k, width, k);
+    const Eigen::RowVectorXf sv_squared = gaussian
+                                              ? support.rowwise().squaredNorm().transpose().eval()
+                                              : Eigen::RowVectorXf::Zero(width);
+    values.noalias() = z * support.transpose();
+    apply_kernel(m.kernel, z_squared, sv_squared, values);
+    sum.noalias() += values.cast<double>() * alpha.segment(c, width);
   }
+  for (std::size_t r = 0; r < count; ++r)
+    out[first + r] = sum(static_cast<Eigen::Index>(r)) - m.rho;
 }
 
 std::size_t block_rows(std::size_t n, std::size_t block) {
@@ -292,13 +409,32 @@ std::vector<double> SvmModel::decision_values_reduced(const float* reduced, std:
 }
 
 void SvmModel::round_support_vectors() {
-  for (float& v : support_vectors) {
-    if (std::abs(v) > kHalfMax) {
-      throw Error("SVM model: support vector number " + number(v) +
-                  " is beyond half precision's range (65504)");
-    }
-    v = static_cast<float>(Eigen::half(v));
+  const std::size_t k = components();
+  const std::size_t h = half_components(*this);
+  if (support_vectors.size() != support_vector_count() * k) {
+    throw Error("SVM model: support vectors disagree with their coefficients or the components");
   }
+  for (std::size_t i = 0; i < support_vectors.size(); ++i) {
+    float& v = support_vectors[i];
+    if (!std::isfinite(v) || (i % k < h && std::abs(v) > kHalfMax)) {
+      throw Error(
+          "SVM model: support vector number " + number(v) +
+          (std::isfinite(v) ? " is beyond half precision's range (65504)" : " is not finite"));
+    }
+    if (i % k < h) v = detail::round_to_half(v);
+  }
+  for (std::size_t j = h; j < k; ++j) {
+    detail::round_to_codes(support_vectors.data() + j, support_vector_count(), k);
+  }
+}
+
+void SvmModel::round_basis() {
+  const std::size_t d = input_dimension();
+  if (basis.size() != components() * d) {
+    throw Error("SVM model: PCA basis size disagrees with its components");
+  }
+  if (!all_finite(basis)) throw Error("SVM model: non-finite PCA basis number");
+  for (std::size_t j = 0; j < components(); ++j) detail::round_to_codes(basis.data() + j * d, d, 1);
 }
 
 void SvmModel::check_compatible(const HandImageOptions& image, const HandGeometry& geometry,
@@ -323,12 +459,9 @@ void SvmModel::save(const std::string& path) const {
   w.put(kernel.coef0);
   w.put(kernel.C);
   w.put_vector(mean);
-  w.put_vector(basis);
+  put_basis(*this, w);
   w.put_vector(scale);
-  std::vector<std::uint16_t> half_bits(support_vectors.size());
-  std::transform(support_vectors.begin(), support_vectors.end(), half_bits.begin(),
-                 [](float v) { return Eigen::numext::bit_cast<std::uint16_t>(Eigen::half(v)); });
-  w.put_vector(half_bits);
+  put_support_vectors(*this, w);
   w.put_vector(alpha);
   w.put(rho);
   w.put<std::uint64_t>(info.positives);
@@ -362,14 +495,10 @@ SvmModel SvmModel::load(const std::string& path) {
   m.kernel.coef0 = r.get<double>();
   m.kernel.C = r.get<double>();
   m.mean = r.get_vector<float>();
-  m.basis = r.get_vector<float>();
+  const StoredCodes basis = get_codes(r);
   m.scale = r.get_vector<float>();
-  const std::vector<std::uint16_t> half_bits = r.get_vector<std::uint16_t>();
-  m.support_vectors.resize(half_bits.size());
-  std::transform(half_bits.begin(), half_bits.end(), m.support_vectors.begin(),
-                 [](std::uint16_t bits) {
-                   return static_cast<float>(Eigen::numext::bit_cast<Eigen::half>(bits));
-                 });
+  const std::vector<std::uint16_t> halves = r.get_vector<std::uint16_t>();
+  const StoredCodes coded = get_codes(r);
   m.alpha = r.get_vector<double>();
   m.rho = r.get<double>();
   m.info.positives = r.get<std::uint64_t>();
@@ -378,6 +507,14 @@ SvmModel SvmModel::load(const std::string& path) {
   m.info.cv_accuracy = r.get<double>();
   m.info.description = r.get_string();
   r.expect_end();
+  const std::size_t d = m.input_dimension();
+  if (basis.codes.size() != m.components() * d) {
+    r.fail("inconsistent: PCA basis size disagrees with its components");
+  }
+  m.basis.resize(basis.codes.size());
+  decode_runs(
+      basis, m.components(), d, 1, [&](std::size_t j) { return m.basis.data() + j * d; }, r);
+  m.support_vectors = decode_support_vectors(m, halves, coded, r);
   const std::string problem = model_problem(m);
   if (!problem.empty()) r.fail("inconsistent: " + problem);
   return m;

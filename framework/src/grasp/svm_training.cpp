@@ -171,6 +171,7 @@ SvmModel fit_reduction(const TrainingSet& set, const SvmTrainingOptions& options
   const auto sample = pca_sample(set.size(), options.max_pca_examples, options.seed);
   principal_components(centred_rows(set, sample, model.mean), options.pca_components, options.seed,
                        model);
+  model.round_basis();  // as the model file stores it
   return model;
 }
 
@@ -220,8 +221,8 @@ SvmSolution solve(const ReducedSet& data, const std::vector<std::size_t>& rows,
 void install(const SvmSolution& solution, const SvmKernel& kernel, SvmModel& model) {
   model.kernel = kernel;
   model.support_vectors = solution.support_vectors;
-  model.round_support_vectors();  // as the model file stores them
   model.alpha = solution.alpha;
+  model.round_support_vectors();  // as the model file stores them
   model.rho = solution.rho;
 }
 

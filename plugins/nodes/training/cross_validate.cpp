@@ -44,6 +44,8 @@ class CrossValidate final : public bt::SyncActionNode {
          bt::input_port<std::vector<double>>("gamma_values", d.gamma_values,
                                              "kernel scales to try; empty = 1 / components"),
          bt::input_port<int>("components", static_cast<int>(d.pca_components), "PCA components"),
+         bt::input_port<int>("cache_mib", static_cast<int>(d.cache_mib),
+                             "kernel row cache of each solver in MiB (a fold per worker)"),
          bt::input_port<int>("threads", 0, "workers (0: all cores)")},
         0,
         0,
@@ -71,6 +73,9 @@ class CrossValidate final : public bt::SyncActionNode {
     const int components = get_input<int>("components");
     if (components < 1) fail("components", "components must be at least 1");
     o.pca_components = static_cast<std::size_t>(components);
+    const int cache_mib = get_input<int>("cache_mib");
+    if (cache_mib < 1) fail("cache_mib", "cache_mib must be at least 1");
+    o.cache_mib = static_cast<std::size_t>(cache_mib);
     o.threads = get_input<int>("threads");
     o.seed = random().next_u64();
     o.progress = [this](std::size_t done, std::size_t total, const std::string&) {

@@ -35,6 +35,8 @@ class TrainClassifier final : public bt::SyncActionNode {
          bt::input_port<std::string>("folds_by", std::string("scene"),
                                      "what a fold keeps together while C is chosen: "
                                      "scene (objects held out), hand or example"),
+         bt::input_port<int>("cache_mib", static_cast<int>(d.cache_mib),
+                             "kernel row cache of each solver in MiB (a fold per worker)"),
          bt::input_port<int>("threads", 0, "workers (0: all cores)"),
          bt::input_port<std::string>("description", std::string{}, "free text stored in the model"),
          bt::input_port<int>("size_budget_kib", 5120,
@@ -88,6 +90,9 @@ class TrainClassifier final : public bt::SyncActionNode {
     } catch (const Error& e) {
       fail("folds_by", e.message());
     }
+    const int cache_mib = get_input<int>("cache_mib");
+    if (cache_mib < 1) fail("cache_mib", "cache_mib must be at least 1");
+    o.cache_mib = static_cast<std::size_t>(cache_mib);
     o.threads = get_input<int>("threads");
     o.seed = random().next_u64();
     o.description = get_input<std::string>("description");

@@ -78,15 +78,19 @@ class SvmModel {
   /// Reduction: `mean` (input_dimension()), `basis` (components() x input_dimension(),
   /// row-major, orthonormal rows) and `scale` (components(): the factor each component is
   /// multiplied by; train_svm() gives them all 1 / the root mean square of the components'
-  /// standard deviations on the training data).
+  /// standard deviations on the training data). Model files store the basis at half
+  /// precision; train_svm() rounds it so (round_basis()) before reducing the training data.
   std::vector<float> mean;
   std::vector<float> basis;
   std::vector<float> scale;
   SvmKernel kernel;
   /// Support vectors in reduced space: support_vector_count() x components(), row-major.
-  /// Model files store them at half precision (IEEE binary16: 11 significant bits, at most
-  /// 65504 in magnitude); train_svm() rounds them so (round_support_vectors()), so a trained
-  /// model and the one loaded from its file give the same decision values.
+  /// Model files store component j < kHalfPrecisionComponents at half precision (IEEE
+  /// binary16: 11 significant bits, at most 65504 in magnitude) and every later component as
+  /// 8-bit codes c * 2^e_j (|c| <= 127, one power-of-two step per component: 7 significant
+  /// bits of the component's largest number). train_svm() rounds them so
+  /// (round_support_vectors()), so a trained model, its cross-validation folds and the model
+  /// loaded from its file all give the same decision values.
   std::vector<float> support_vectors;
   std::vector<double> alpha;  ///< dual coefficient of each support vector (label sign included)
   double rho = 0.0;           ///< offset subtracted from the kernel sum
@@ -126,19 +130,24 @@ class SvmModel {
   void check_compatible(const HandImageOptions& image, const HandGeometry& geometry,
                         const std::string& model_name = "the SVM model") const;
 
-  /// Rounds every support vector number to the nearest half-precision value, as save()
-  /// stores it. Throws antipode::Error for a number beyond half precision's range.
+  /// Rounds every support vector number to the nearest number the model file can hold (see
+  /// support_vectors); rounding twice changes nothing. Throws antipode::Error for a
+  /// half-precision number beyond its range.
   void round_support_vectors();
+  /// Rounds every basis number to the nearest half-precision number, as save() stores it.
+  void round_basis();
 
   /// Writes the model to `path` all-or-nothing (validated first); the bytes depend only on
-  /// the model's contents. Support vectors are written at half precision (rounded to
-  /// nearest); the rest at full precision.
+  /// the model's contents. The basis and support vectors are written as described above
+  /// (rounded to nearest); the rest at full precision.
   void save(const std::string& path) const;
   /// Reads a file written by save(). A missing, truncated, corrupted, foreign or
   /// inconsistent file is an antipode::Error naming the file and the problem.
   static SvmModel load(const std::string& path);
 
   static constexpr std::size_t kBlockRows = 128;
+  /// Support vector components stored at half precision; the rest are 8-bit codes.
+  static constexpr std::size_t kHalfPrecisionComponents = 16;
 };
 
 }  // namespace antipode
