@@ -433,6 +433,10 @@ TEST_F(TrainTest, SameSeedSameModelAndTheModelEvaluates) {
   EXPECT_NE(result.out.find("unknown kernel 'gauss' (use poly or rbf)"), std::string::npos)
       << result.out;
   EXPECT_NE(result.out.find("retrain.yaml:6:"), std::string::npos) << result.out;
+  result = run("run " + retrain("cache_mib: 0"));
+  EXPECT_EQ(result.exit_code, 2) << result.out;
+  EXPECT_NE(result.out.find("cache_mib must be at least 1"), std::string::npos) << result.out;
+  EXPECT_NE(result.out.find("retrain.yaml:6:"), std::string::npos) << result.out;
   result = run("run " + retrain("kernels: []"));
   EXPECT_EQ(result.exit_code, 2) << result.out;
   EXPECT_NE(result.out.find("retrain.yaml:6:"), std::string::npos) << result.out;

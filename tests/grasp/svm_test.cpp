@@ -179,7 +179,9 @@ void expect_opencv_values(const SvmModel& model) {
     // OpenCV's raw value is positive for its first class (-1): ours is its negation.
     EXPECT_NEAR(ours[i], -raw, close) << i;
     worst = std::max(worst, std::abs(ours[i] + raw));
-    if (std::abs(ours[i]) > close) EXPECT_EQ(ours[i] > 0.0, svm->predict(row) > 0.0f) << i;
+    if (std::abs(ours[i]) > close) {
+      EXPECT_EQ(ours[i] > 0.0, svm->predict(row) > 0.0f) << i;
+    }
     EXPECT_NEAR(from_reduced[i], ours[i], 1e-9 * std::max(1.0, largest)) << i;
   }
   std::printf("largest difference from OpenCV's values: %.2g (values up to %.2g)\n", worst,

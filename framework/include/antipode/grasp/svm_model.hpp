@@ -78,8 +78,9 @@ class SvmModel {
   /// Reduction: `mean` (input_dimension()), `basis` (components() x input_dimension(),
   /// row-major, orthonormal rows) and `scale` (components(): the factor each component is
   /// multiplied by; train_svm() gives them all 1 / the root mean square of the components'
-  /// standard deviations on the training data). Model files store the basis at half
-  /// precision; train_svm() rounds it so (round_basis()) before reducing the training data.
+  /// standard deviations on the training data). Model files store each basis row as 8-bit
+  /// codes c * 2^e (|c| <= 127, one power-of-two step per row); train_svm() rounds it so
+  /// (round_basis()) before reducing the training data.
   std::vector<float> mean;
   std::vector<float> basis;
   std::vector<float> scale;
@@ -134,7 +135,9 @@ class SvmModel {
   /// support_vectors); rounding twice changes nothing. Throws antipode::Error for a
   /// half-precision number beyond its range.
   void round_support_vectors();
-  /// Rounds every basis number to the nearest half-precision number, as save() stores it.
+  /// Rounds every basis number to the nearest number the model file can hold (see basis);
+  /// rounding twice changes nothing. Throws antipode::Error for a basis of the wrong size or
+  /// with a non-finite number.
   void round_basis();
 
   /// Writes the model to `path` all-or-nothing (validated first); the bytes depend only on
