@@ -142,8 +142,8 @@ StoredCodes get_codes(BinaryReader& r) {
   return s;
 }
 
-// Runs of `count` numbers (`runs` of them) laid out as `run(i)` says, decoded from `s`
-// into `values`; a file whose parts disagree fails through `r`.
+// Decodes `runs` runs of `count` numbers from `s`, run i into `stride`-apart numbers from
+// run(i); a file whose parts disagree fails through `r`.
 template <typename RunStart>
 void decode_runs(const StoredCodes& s, std::size_t runs, std::size_t count, std::size_t stride,
                  const RunStart& run, const BinaryReader& r) {
@@ -189,7 +189,7 @@ std::vector<float> decode_support_vectors(const SvmModel& m,
   const std::size_t k = m.components();
   const std::size_t h = half_components(m);
   const std::size_t n = m.support_vector_count();
-  if (halves.size() != n * h) {
+  if (halves.size() != n * h || coded.codes.size() != n * (k - h)) {  // before allocating
     r.fail("inconsistent: support vectors disagree with their coefficients or the components");
   }
   std::vector<float> values(n * k);
