@@ -437,6 +437,10 @@ TEST_F(TrainTest, SameSeedSameModelAndTheModelEvaluates) {
   EXPECT_EQ(result.exit_code, 2) << result.out;
   EXPECT_NE(result.out.find("cache_mib must be at least 1"), std::string::npos) << result.out;
   EXPECT_NE(result.out.find("retrain.yaml:6:"), std::string::npos) << result.out;
+  result = run("run " + retrain("positive_weight: -1"));
+  EXPECT_EQ(result.exit_code, 2) << result.out;
+  EXPECT_NE(result.out.find("positive_weight must be positive"), std::string::npos) << result.out;
+  EXPECT_NE(result.out.find("retrain.yaml:6:"), std::string::npos) << result.out;
   result = run("run " + retrain("kernels: []"));
   EXPECT_EQ(result.exit_code, 2) << result.out;
   EXPECT_NE(result.out.find("retrain.yaml:6:"), std::string::npos) << result.out;

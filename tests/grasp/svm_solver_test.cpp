@@ -76,7 +76,7 @@ TEST(SvmSolverTest, TwoPointsGiveTheHardMarginByHand) {
 }
 
 // The optimality conditions at the solution: y f >= 1 at a = 0, y f = 1 for free
-// multipliers, y f <= 1 at a = C, and sum y a = 0.
+// multipliers, y f <= 1 at a = C_t (C x positive_weight for positive rows), and sum y a = 0.
 void expect_optimal(const Blobs& b, const SvmKernel& k, const SvmSolverOptions& options) {
   const SvmDualSolution s = solve_svm_dual(b.rows.data(), b.size(), 2, b.labels, k, options);
   ASSERT_TRUE(s.converged);
@@ -87,11 +87,12 @@ void expect_optimal(const Blobs& b, const SvmKernel& k, const SvmSolverOptions& 
   for (std::size_t t = 0; t < b.size(); ++t) {
     balance += b.labels[t] * s.alpha[t];
     const double margin = b.labels[t] * decision(b, s, k, t);
+    const double C_t = b.labels[t] > 0 ? k.C * options.positive_weight : k.C;
     ASSERT_GE(s.alpha[t], 0.0);
-    ASSERT_LE(s.alpha[t], k.C);
+    ASSERT_LE(s.alpha[t], C_t);
     if (s.alpha[t] == 0.0) {
       EXPECT_GE(margin, 1.0 - slack) << t;
-    } else if (s.alpha[t] == k.C) {
+    } else if (s.alpha[t] == C_t) {
       EXPECT_LE(margin, 1.0 + slack) << t;
       ++bounded;
     } else {
@@ -111,6 +112,34 @@ TEST(SvmSolverTest, SolutionsMeetTheOptimalityConditions) {
   expect_optimal(b, SvmKernel{SvmKernelType::kPolynomial, 3, 0.5, 1.0, 1.0}, options);
   options.tolerance = 1e-5;
   expect_optimal(b, SvmKernel{SvmKernelType::kRbf, 3, 2.0, 1.0, 10.0}, options);
+  options.tolerance = 1e-3;
+  options.positive_weight = 3.0;
+  expect_optimal(b, SvmKernel{SvmKernelType::kRbf, 3, 0.5, 1.0, 3.0}, options);
+  options.positive_weight = 0.25;
+  expect_optimal(b, SvmKernel{SvmKernelType::kPolynomial, 3, 0.5, 1.0, 1.0}, options);
+}
+
+// Training rows called positive (f >= 0) by the solution of `options`.
+std::size_t called_positive(const Blobs& b, const SvmKernel& k, const SvmSolverOptions& options) {
+  const SvmDualSolution s = solve_svm_dual(b.rows.data(), b.size(), 2, b.labels, k, options);
+  std::size_t count = 0;
+  for (std::size_t t = 0; t < b.size(); ++t) count += decision(b, s, k, t) >= 0.0 ? 1 : 0;
+  return count;
+}
+
+TEST(SvmSolverTest, PositiveWeightMovesTheBoundaryTowardsTheNegatives) {
+  // The blobs overlap: a costlier miss of a positive row makes the solution call more rows
+  // positive, a cheaper one fewer.
+  const Blobs b = blobs(600, 3);
+  const SvmKernel k{SvmKernelType::kRbf, 3, 0.5, 1.0, 1.0};
+  SvmSolverOptions options;
+  const std::size_t even = called_positive(b, k, options);
+  options.positive_weight = 4.0;
+  const std::size_t heavy = called_positive(b, k, options);
+  options.positive_weight = 0.25;
+  const std::size_t light = called_positive(b, k, options);
+  EXPECT_GT(heavy, even + 20);
+  EXPECT_LT(light + 20, even);
 }
 
 TEST(SvmSolverTest, SameSolutionForAnyCacheSizeOrThreadCount) {
@@ -158,6 +187,9 @@ TEST(SvmSolverTest, BadProblemsAreClearErrors) {
   SvmSolverOptions options;
   options.tolerance = 0.0;
   EXPECT_EQ(solve(b.labels, 1.0, options), "SVM solver options: tolerance must be positive");
+  options.tolerance = 1e-3;
+  options.positive_weight = 0.0;
+  EXPECT_EQ(solve(b.labels, 1.0, options), "SVM solver options: positive_weight must be positive");
 }
 
 }  // namespace

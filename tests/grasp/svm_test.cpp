@@ -471,6 +471,12 @@ TEST(SvmTest, BadTrainingInputIsAClearError) {
   no_c.c_values.clear();
   EXPECT_NE(error_of([&] { train_svm(training(), no_c, image, hand); }).find("no C candidates"),
             std::string::npos);
+  SvmTrainingOptions no_weight = options;
+  no_weight.positive_weight = std::nan("");
+  EXPECT_NE(error_of([&] {
+              train_svm(training(), no_weight, image, hand);
+            }).find("positive_weight must be positive"),
+            std::string::npos);
   SvmTrainingOptions too_many_folds = options;
   too_many_folds.folds = 1000;
   EXPECT_NE(error_of([&] {

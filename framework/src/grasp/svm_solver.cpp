@@ -30,8 +30,8 @@ constexpr std::int64_t kShrinkInterval = 1000;
 // the final optimality check, and once when the violation first falls below ten tolerances.
 class DualProblem {
  public:
-  DualProblem(detail::KernelRows& kernel, const std::vector<std::int8_t>& labels, double C,
-              double tolerance);
+  DualProblem(detail::KernelRows& kernel, const std::vector<std::int8_t>& labels, double C_positive,
+              double C_negative, double tolerance);
 
   // Runs pair updates until optimal (true) or `max_iterations` were made (false).
   bool solve(std::int64_t max_iterations, std::int64_t& iterations);
@@ -45,12 +45,14 @@ class DualProblem {
     double bottom = -std::numeric_limits<double>::infinity();  // max -v, down-movable
   };
 
-  bool up_movable(std::size_t t) const { return y_[t] > 0 ? alpha_[t] < C_ : alpha_[t] > 0.0; }
-  bool down_movable(std::size_t t) const { return y_[t] > 0 ? alpha_[t] > 0.0 : alpha_[t] < C_; }
-  bool at_C(std::size_t t) const { return alpha_[t] >= C_; }
+  // The upper bound of a_t: C for the row's class.
+  double C(std::size_t t) const { return y_[t] > 0 ? C_positive_ : C_negative_; }
+  bool up_movable(std::size_t t) const { return y_[t] > 0 ? alpha_[t] < C(t) : alpha_[t] > 0.0; }
+  bool down_movable(std::size_t t) const { return y_[t] > 0 ? alpha_[t] > 0.0 : alpha_[t] < C(t); }
+  bool at_C(std::size_t t) const { return alpha_[t] >= C(t); }
   // The headroom of s's move (up-movable) and of t's (down-movable), in units of lambda.
-  double up_room(std::size_t s) const { return y_[s] > 0 ? C_ - alpha_[s] : alpha_[s]; }
-  double down_room(std::size_t t) const { return y_[t] > 0 ? alpha_[t] : C_ - alpha_[t]; }
+  double up_room(std::size_t s) const { return y_[s] > 0 ? C(s) - alpha_[s] : alpha_[s]; }
+  double down_room(std::size_t t) const { return y_[t] > 0 ? alpha_[t] : C(t) - alpha_[t]; }
   double v(std::size_t t) const { return -y_[t] * gradient_[t]; }
 
   bool select(std::size_t& s, std::size_t& t);
@@ -62,21 +64,23 @@ class DualProblem {
   void activate_all();
 
   detail::KernelRows& kernel_;
-  double C_;
+  double C_positive_;
+  double C_negative_;
   double tolerance_;
   std::size_t n_;
   std::vector<int> y_;
   std::vector<double> alpha_;
   std::vector<double> gradient_;
-  std::vector<double> at_C_gradient_;  // sum over a_t = C of C Q_ut: G's part from bounds
+  std::vector<double> at_C_gradient_;  // sum over a_t = C_t of C_t Q_ut: G's part from bounds
   std::vector<std::size_t> active_;
   bool unshrunk_ = false;
 };
 
 DualProblem::DualProblem(detail::KernelRows& kernel, const std::vector<std::int8_t>& labels,
-                         double C, double tolerance)
+                         double C_positive, double C_negative, double tolerance)
     : kernel_(kernel),
-      C_(C),
+      C_positive_(C_positive),
+      C_negative_(C_negative),
       tolerance_(tolerance),
       n_(kernel.size()),
       alpha_(n_, 0.0),
@@ -166,8 +170,8 @@ void DualProblem::move(std::size_t s, std::size_t t) {
   // Land exactly on a bound when the step is clipped there.
   const bool s_to_bound = lambda >= up_room(s);
   const bool t_to_bound = lambda >= down_room(t);
-  alpha_[s] = s_to_bound ? (y_[s] > 0 ? C_ : 0.0) : alpha_[s] + y_[s] * lambda;
-  alpha_[t] = t_to_bound ? (y_[t] > 0 ? 0.0 : C_) : alpha_[t] - y_[t] * lambda;
+  alpha_[s] = s_to_bound ? (y_[s] > 0 ? C(s) : 0.0) : alpha_[s] + y_[s] * lambda;
+  alpha_[t] = t_to_bound ? (y_[t] > 0 ? 0.0 : C(t)) : alpha_[t] - y_[t] * lambda;
   // G_u += Q_us y_s lambda - Q_ut y_t lambda = y_u lambda (K_us - K_ut).
   for (const std::size_t u : active_) {
     gradient_[u] += y_[u] * lambda * (static_cast<double>(K_s[u]) - K_t[u]);
@@ -179,7 +183,7 @@ void DualProblem::move(std::size_t s, std::size_t t) {
 // Keeps at_C_gradient_ (for every row) when multiplier s reaches or leaves C.
 void DualProblem::track_bound(std::size_t s, bool was_at_C, const float* K_s) {
   if (was_at_C == at_C(s)) return;
-  const double sign = at_C(s) ? C_ * y_[s] : -C_ * y_[s];
+  const double sign = at_C(s) ? C(s) * y_[s] : -C(s) * y_[s];
   for (std::size_t u = 0; u < n_; ++u) at_C_gradient_[u] += sign * y_[u] * K_s[u];
 }
 
@@ -236,7 +240,7 @@ void DualProblem::activate_all() {
   std::iota(active_.begin(), active_.end(), std::size_t{0});
 }
 
-// For a free multiplier (0 < a_t < C) the optimality conditions give rho = y_t G_t: their
+// For a free multiplier (0 < a_t < C_t) the optimality conditions give rho = y_t G_t: their
 // mean; without one, the middle of the interval the bounded ones allow.
 double DualProblem::rho() const {
   double sum = 0.0;
@@ -245,7 +249,7 @@ double DualProblem::rho() const {
   double lower = -std::numeric_limits<double>::infinity();
   for (std::size_t t = 0; t < n_; ++t) {
     const double yG = y_[t] * gradient_[t];
-    if (alpha_[t] > 0.0 && alpha_[t] < C_) {
+    if (alpha_[t] > 0.0 && alpha_[t] < C(t)) {
       sum += yG;
       ++free;
     } else if ((alpha_[t] == 0.0) == (y_[t] > 0)) {
@@ -286,6 +290,9 @@ void SvmSolverOptions::validate() const {
   if (!(tolerance > 0.0 && std::isfinite(tolerance))) fail("tolerance must be positive");
   if (max_iterations < 1) fail("max_iterations must be at least 1");
   if (threads < 0) fail("threads must be >= 0");
+  if (!(positive_weight > 0.0 && std::isfinite(positive_weight))) {
+    fail("positive_weight must be positive");
+  }
 }
 
 SvmDualSolution solve_svm_dual(const float* rows, std::size_t n, std::size_t k,
@@ -294,7 +301,8 @@ SvmDualSolution solve_svm_dual(const float* rows, std::size_t n, std::size_t k,
   options.validate();
   check_problem(n, k, labels, kernel);
   detail::KernelRows kernel_rows(rows, n, k, kernel, options.cache_mib << 20U, options.threads);
-  DualProblem problem(kernel_rows, labels, kernel.C, options.tolerance);
+  DualProblem problem(kernel_rows, labels, kernel.C * options.positive_weight, kernel.C,
+                      options.tolerance);
   SvmDualSolution solution;
   solution.converged = problem.solve(options.max_iterations, solution.iterations);
   solution.rho = problem.rho();

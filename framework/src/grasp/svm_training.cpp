@@ -204,6 +204,7 @@ SvmSolution solve(const ReducedSet& data, const std::vector<std::size_t>& rows,
   solver.tolerance = options.tolerance;
   solver.max_iterations = options.max_iterations;
   solver.cache_mib = options.cache_mib;
+  solver.positive_weight = options.positive_weight;
   solver.threads = threads;
   const SvmDualSolution dual =
       solve_svm_dual(z.data(), rows.size(), data.k, labels, kernel, solver);
@@ -362,6 +363,9 @@ void SvmTrainingOptions::validate() const {
   if (threads < 0) fail("threads must be >= 0");
   if (!(tolerance > 0.0 && std::isfinite(tolerance))) fail("tolerance must be positive");
   if (max_iterations < 1) fail("max_iterations must be at least 1");
+  if (!(positive_weight > 0.0 && std::isfinite(positive_weight))) {
+    fail("positive_weight must be positive");
+  }
 }
 
 double ConfusionMatrix::accuracy() const {

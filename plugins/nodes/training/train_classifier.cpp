@@ -1,3 +1,4 @@
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 
@@ -37,6 +38,9 @@ class TrainClassifier final : public bt::SyncActionNode {
                                      "scene (objects held out), hand or example"),
          bt::input_port<int>("cache_mib", static_cast<int>(d.cache_mib),
                              "kernel row cache of each solver in MiB (a fold per worker)"),
+         bt::input_port<double>("positive_weight", d.positive_weight,
+                                "C of grasps over C of non-grasps (above 1: a missed grasp "
+                                "costs more)"),
          bt::input_port<int>("threads", 0, "workers (0: all cores)"),
          bt::input_port<std::string>("description", std::string{}, "free text stored in the model"),
          bt::input_port<int>("size_budget_kib", 5120,
@@ -93,6 +97,10 @@ class TrainClassifier final : public bt::SyncActionNode {
     const int cache_mib = get_input<int>("cache_mib");
     if (cache_mib < 1) fail("cache_mib", "cache_mib must be at least 1");
     o.cache_mib = static_cast<std::size_t>(cache_mib);
+    o.positive_weight = get_input<double>("positive_weight");
+    if (!(o.positive_weight > 0.0 && std::isfinite(o.positive_weight))) {
+      fail("positive_weight", "positive_weight must be positive");
+    }
     o.threads = get_input<int>("threads");
     o.seed = random().next_u64();
     o.description = get_input<std::string>("description");

@@ -3,8 +3,9 @@
 /// The soft-margin SVM's training problem in its dual form,
 ///
 ///   min_a  1/2 sum_s sum_t a_s a_t y_s y_t K(z_s, z_t) - sum_t a_t
-///   s.t.   0 <= a_t <= C,   sum_t y_t a_t = 0,
+///   s.t.   0 <= a_t <= C_t,   sum_t y_t a_t = 0,
 ///
+/// where C_t is C for negative rows and C x positive_weight for positive ones (1 by default),
 /// solved by sequential minimal optimisation: each step moves the pair of multipliers that
 /// a second-order model of the objective says gains most (Fan, Chen and Lin, "Working set
 /// selection using second order information", JMLR 2005), until the largest violation of the
@@ -33,6 +34,9 @@ struct SvmSolverOptions {
   std::int64_t max_iterations = 10000000;  ///< pair updates before giving up (not an error)
   std::size_t cache_mib = 1024;            ///< kernel row cache (at least two rows are kept)
   int threads = 0;  ///< kernel row workers (0: all); results do not depend on it
+  /// The bound of positive rows' multipliers is C x positive_weight, the negative rows' C
+  /// (libsvm's -w1): above 1 a missed grasp costs more than a false one.
+  double positive_weight = 1.0;
 
   /// Throws antipode::Error naming the first invalid field.
   void validate() const;

@@ -54,6 +54,7 @@ struct SvmTrainingOptions {
   double tolerance = 1e-3;              ///< solver stopping tolerance (as libsvm's eps)
   int max_iterations = 10000000;        ///< solver iteration cap
   std::size_t cache_mib = 1024;         ///< kernel row cache per solver (svm_solver.hpp)
+  double positive_weight = 1.0;         ///< C of grasps / C of non-grasps (svm_solver.hpp)
   std::string description;              ///< copied into the model's info
   SvmProgress progress;  ///< optional; called from worker threads, one call at a time
 
