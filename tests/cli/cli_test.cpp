@@ -457,6 +457,40 @@ TEST_F(TrainTest, SameSeedSameModelAndTheModelEvaluates) {
                             "set has 4; give CollectExamples a different `source` per scene"),
             std::string::npos)
       << result.out;
+
+  // CrossValidate reads the same solver ports, located the same way.
+  const auto cross_validate = [&](const std::string& ports) {
+    return write("cv.yaml",
+                 "main: c\n"
+                 "trees:\n"
+                 "  c:\n"
+                 "    Sequence:\n"
+                 "      - LoadTrainingSet: { file: " +
+                     data +
+                     ", dataset: \"{d}\" }\n"
+                     "      - CrossValidate: { dataset: \"{d}\", components: 16, " +
+                     ports + " }\n");
+  };
+  result = run("run " + cross_validate("folds: 2, folds_by: hand, c_values: [1, 10]"));
+  EXPECT_EQ(result.exit_code, 0) << result.out;
+  EXPECT_NE(result.out.find("2-fold by hand, poly kernel, C 1, gamma "), std::string::npos)
+      << result.out;
+  EXPECT_NE(result.out.find("2-fold by hand, poly kernel, C 10, gamma "), std::string::npos)
+      << result.out;
+  for (const auto& [ports, message] : std::vector<std::pair<std::string, std::string>>{
+           {"folds: 0", "folds must be at least 2 to cross-validate"},
+           {"folds: 1", "folds must be 0 (no cross-validation) or at least 2"},
+           {"c_values: [1, 0]", "every C must be positive"},
+           {"c_values: []", "c_values is empty; give at least one C"},
+           {"gamma_values: [-1]", "every gamma must be positive"},
+           {"degree: 11", "degree must be in [1, 10]"},
+           {"threads: -1", "threads must be 0 (all cores) or more"},
+           {"positive_weight: 0", "positive_weight must be positive"}}) {
+    result = run("run " + cross_validate(ports));
+    EXPECT_EQ(result.exit_code, 2) << ports << ": " << result.out;
+    EXPECT_NE(result.out.find(message), std::string::npos) << ports << ": " << result.out;
+    EXPECT_NE(result.out.find("cv.yaml:6:"), std::string::npos) << ports << ": " << result.out;
+  }
 }
 
 // Hands found in one view: LabelHands' `judged` set (closing points in the registered cloud)

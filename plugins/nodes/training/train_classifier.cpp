@@ -1,54 +1,28 @@
-#include <cmath>
-#include <cstdio>
 #include <filesystem>
+#include <string>
+#include <utility>
+#include <vector>
 
-#include "antipode/bt/action_node.hpp"
 #include "antipode/grasp/svm_training.hpp"
 #include "fold_check.hpp"
-#include "kernel_names.hpp"
 #include "nodes.hpp"
+#include "svm_node.hpp"
 
 namespace antipode::training {
 namespace {
 
 /// Trains the HOG + SVM classifier on a training set and writes the model file.
-class TrainClassifier final : public bt::SyncActionNode {
+class TrainClassifier final : public SvmNode {
  public:
-  using SyncActionNode::SyncActionNode;
+  using SvmNode::SvmNode;
   static bt::NodeManifest manifest() {
-    const SvmTrainingOptions d;
-    return {
-        "TrainClassifier",
-        bt::NodeCategory::kAction,
-        {bt::input_port<TrainingSetPtr>("dataset", "the examples"),
-         bt::input_port<std::string>("model_file", "where to write the model"),
-         bt::input_port<std::vector<std::string>>(
-             "kernels", std::vector<std::string>{"poly"},
-             "kernel families tried by cross-validation: poly, rbf (Gaussian)"),
-         bt::input_port<int>("degree", d.degree, "polynomial kernel degree"),
-         bt::input_port<std::vector<double>>("c_values", d.c_values,
-                                             "soft-margin costs tried by cross-validation"),
-         bt::input_port<std::vector<double>>("gamma_values", d.gamma_values,
-                                             "kernel scales tried; empty = 1 / components"),
-         bt::input_port<int>("components", static_cast<int>(d.pca_components),
-                             "PCA components the descriptors are reduced to"),
-         bt::input_port<int>("folds", d.folds, "cross-validation folds (0: none)"),
-         bt::input_port<std::string>("folds_by", std::string("scene"),
-                                     "what a fold keeps together while C is chosen: "
-                                     "scene (objects held out), hand or example"),
-         bt::input_port<int>("cache_mib", static_cast<int>(d.cache_mib),
-                             "kernel row cache of each solver in MiB (a fold per worker)"),
-         bt::input_port<double>("positive_weight", d.positive_weight,
-                                "C of grasps over C of non-grasps (above 1: a missed grasp "
-                                "costs more)"),
-         bt::input_port<int>("threads", 0, "workers (0: all cores)"),
-         bt::input_port<std::string>("description", std::string{}, "free text stored in the model"),
-         bt::input_port<int>("size_budget_kib", 5120,
-                             "warn when the model file is larger (0: never)")},
-        0,
-        0,
-        "Trains the SVM grasp classifier (C chosen by cross-validation) and writes it.",
-        {}};
+    return {"TrainClassifier",
+            bt::NodeCategory::kAction,
+            ports(),
+            0,
+            0,
+            "Trains the SVM grasp classifier (C chosen by cross-validation) and writes it.",
+            {}};
   }
 
  protected:
@@ -75,34 +49,20 @@ class TrainClassifier final : public bt::SyncActionNode {
   }
 
  private:
+  static std::vector<bt::PortInfo> ports() {
+    std::vector<bt::PortInfo> ports = {
+        bt::input_port<TrainingSetPtr>("dataset", "the examples"),
+        bt::input_port<std::string>("model_file", "where to write the model")};
+    for (bt::PortInfo& port : svm_ports()) ports.push_back(std::move(port));
+    ports.push_back(
+        bt::input_port<std::string>("description", std::string{}, "free text stored in the model"));
+    ports.push_back(bt::input_port<int>("size_budget_kib", 5120,
+                                        "warn when the model file is larger (0: never)"));
+    return ports;
+  }
+
   SvmTrainingOptions read_options(const TrainingSet& set) const {
-    SvmTrainingOptions o;
-    try {
-      o.kernels = kernel_types(get_input<std::vector<std::string>>("kernels"));
-    } catch (const Error& e) {
-      fail("kernels", e.message());
-    }
-    o.degree = get_input<int>("degree");
-    o.c_values = get_input<std::vector<double>>("c_values");
-    o.gamma_values = get_input<std::vector<double>>("gamma_values");
-    const int components = get_input<int>("components");
-    if (components < 1) fail("components", "components must be at least 1");
-    o.pca_components = static_cast<std::size_t>(components);
-    o.folds = get_input<int>("folds");
-    try {
-      o.folds_by = fold_unit(get_input<std::string>("folds_by"));
-    } catch (const Error& e) {
-      fail("folds_by", e.message());
-    }
-    const int cache_mib = get_input<int>("cache_mib");
-    if (cache_mib < 1) fail("cache_mib", "cache_mib must be at least 1");
-    o.cache_mib = static_cast<std::size_t>(cache_mib);
-    o.positive_weight = get_input<double>("positive_weight");
-    if (!(o.positive_weight > 0.0 && std::isfinite(o.positive_weight))) {
-      fail("positive_weight", "positive_weight must be positive");
-    }
-    o.threads = get_input<int>("threads");
-    o.seed = random().next_u64();
+    SvmTrainingOptions o = read_svm_options();
     o.description = get_input<std::string>("description");
     if (o.description.empty()) {
       o.description = std::to_string(set.size()) + " examples from antipode train";
@@ -110,11 +70,6 @@ class TrainClassifier final : public bt::SyncActionNode {
     o.progress = [this](std::size_t done, std::size_t total, const std::string&) {
       progress(done, total, "training the SVM");
     };
-    try {
-      o.validate();
-    } catch (const Error& e) {
-      fail("c_values", e.message());
-    }
     return o;
   }
 
