@@ -93,7 +93,7 @@ TEST(HandImageTest, AHandTurnedAboutItsApproachSeesTheImageMirrored) {
     EXPECT_NEAR(a[3 * block + 2], b[3 * other + 2], 1e-6);
   }
   // The alignment counts (six angles per side): +closing and -closing swap.
-  const std::size_t angles = (a.size() - 3 * blocks) / 2;
+  const std::size_t angles = (a.size() - 3 * blocks - 5) / 2;
   ASSERT_EQ(angles, 6u);
   for (std::size_t k = 0; k < angles; ++k) {
     EXPECT_EQ(a[3 * blocks + k], b[3 * blocks + angles + k]);
@@ -110,7 +110,7 @@ TEST(HandImageTest, NormalStatisticsAverageEachBlock) {
                                                 Eigen::Vector3f::Zero()};  // no normal: not counted
   const HandImageOptions options;
   const auto f = normal_statistics(p.cloud, p.hand, HandGeometry{}, options, normals);
-  ASSERT_EQ(f.size(), 3u * 5u * 6u + 12u);
+  ASSERT_EQ(f.size(), 3u * 5u * 6u + 12u + 5u);
   EXPECT_NEAR(f[0], 4.0 * (1.0 + 0.6) / 2.0, 1e-5);  // mean n . closing
   EXPECT_NEAR(f[1], 4.0 * (0.0 + 0.8) / 2.0, 1e-5);  // mean |n . axis|
   EXPECT_NEAR(f[2], 4.0 * std::log1p(2.0) / std::log1p(64.0), 1e-5);
@@ -136,7 +136,7 @@ TEST(HandImageTest, AlignmentCountsFollowDefinition3sAngles) {
   const HandImageOptions options;
   const auto f = normal_statistics(p.cloud, p.hand, HandGeometry{}, options, normals);
   ASSERT_EQ(f.size(), options.normal_features_size());
-  ASSERT_EQ(f.size(), 3u * 5u * 6u + 12u);
+  ASSERT_EQ(f.size(), 3u * 5u * 6u + 12u + 5u);
   const auto log_count = [](int k) { return 12.0 * std::log1p(k) / std::log1p(64.0); };
   const std::size_t first = 3 * 5 * 6;
   // Within 10, 15, 20, 25, 30, 45 degrees of +closing: 1, 2, 2, 3, 4, 5 points; of -closing:
@@ -200,12 +200,71 @@ TEST(HandImageTest, OcclusionStatisticsMarkTheRegionBehindTheSeenSurface) {
   }
 }
 
+// The wall's points in the hand's closing region, with their outward normal (towards the
+// sensor at the origin: -x).
+std::vector<Eigen::Vector3f> closing_region_with_normals(WallAndHand& w) {
+  const HandGeometry g;
+  const Eigen::Isometry3d X_HandFrame = w.hand.X_FrameHand.inverse();
+  for (std::size_t i = 0; i < w.cloud.size(); ++i) {
+    const Eigen::Vector3d q = X_HandFrame * w.cloud.points_m[i].cast<double>();
+    if (q.x() >= 0.0 && q.x() <= g.depth_m && std::abs(q.y()) <= g.max_aperture_m / 2.0 &&
+        std::abs(q.z()) <= g.height_m / 2.0) {
+      w.hand.closing_points.push_back(static_cast<std::int32_t>(i));
+    }
+  }
+  return std::vector<Eigen::Vector3f>(w.cloud.size(), -Eigen::Vector3f::UnitX());
+}
+
+TEST(HandImageTest, ViewStatisticsTellAFaceOnViewFromAGrazingOne) {
+  WallAndHand w = wall_and_hand();
+  std::vector<Eigen::Vector3f> normals = closing_region_with_normals(w);
+  ASSERT_GT(w.hand.closing_points.size(), 100u);
+  // Seen face on: the surface faces the -y finger (n = -closing) and the sensor (n . u ~ 1);
+  // the sensor lies along -closing, across the approach and the axis.
+  const auto face_on = view_statistics(w.cloud, w.hand, normals);
+  ASSERT_EQ(face_on.size(), 5u);
+  EXPECT_EQ(face_on[0], 0.0f);  // nothing faces the +y finger
+  EXPECT_NEAR(face_on[1], 4.0, 0.01);
+  EXPECT_NEAR(face_on[2], 0.0, 0.01);
+  EXPECT_NEAR(face_on[3], -4.0, 0.01);
+  EXPECT_NEAR(face_on[4], 0.0, 0.01);
+  // Seen 60 degrees off its normal, towards +z (the hand axis is -z): n . u ~ cos 60.
+  WallAndHand oblique = w;
+  oblique.cloud.view_origins_m[0] = Eigen::Vector3f(0.5f, 0.0f, 0.866f);
+  const auto grazing = view_statistics(oblique.cloud, oblique.hand, normals);
+  EXPECT_NEAR(grazing[1], 4.0 * 0.5, 0.05);
+  EXPECT_NEAR(grazing[3], -4.0 * 0.5, 0.05);
+  EXPECT_NEAR(grazing[4], -4.0 * 0.866, 0.05);
+  // A hand turned half a turn about its approach: the sides swap, closing and axis negate.
+  Hand turned = oblique.hand;
+  turned.X_FrameHand = oblique.hand.X_FrameHand * Eigen::AngleAxisd(M_PI, Eigen::Vector3d::UnitX());
+  const auto mirrored = view_statistics(oblique.cloud, turned, normals);
+  EXPECT_NEAR(mirrored[0], grazing[1], 1e-6);
+  EXPECT_NEAR(mirrored[1], grazing[0], 1e-6);
+  EXPECT_NEAR(mirrored[2], grazing[2], 1e-6);
+  EXPECT_NEAR(mirrored[3], -grazing[3], 1e-6);
+  EXPECT_NEAR(mirrored[4], -grazing[4], 1e-6);
+  // Points without a normal count for neither side, and add nothing to the mean direction.
+  for (std::size_t k = 0; k < w.hand.closing_points.size(); k += 2) {
+    normals[static_cast<std::size_t>(w.hand.closing_points[k])].setZero();
+  }
+  const auto half = view_statistics(w.cloud, w.hand, normals);
+  EXPECT_NEAR(half[1], face_on[1], 1e-3);
+  EXPECT_NEAR(half[3], face_on[3] / 2.0, 0.05);
+  // A cloud without view origins: nothing is known of the sensors.
+  Cloud unknown = w.cloud;
+  unknown.view_origins_m.clear();
+  unknown.view_masks.clear();
+  for (const float v : view_statistics(unknown, w.hand, normals)) EXPECT_EQ(v, 0.0f);
+  EXPECT_THROW(view_statistics(w.cloud, w.hand, {}), Error);
+}
+
 TEST(HandImageTest, DescriptorHasThePapersLayoutAndIsZeroForAnEmptyImage) {
   HandImageOptions options;
   EXPECT_EQ(options.hog_size(), 9u * 11u * 4u * 9u);  // 10 x 12 cells, 2 x 2 blocks
-  EXPECT_EQ(options.descriptor_size(), options.hog_size() + 90u + 12u + 30u);
+  EXPECT_EQ(options.descriptor_size(), options.hog_size() + 90u + 12u + 5u + 30u);
   options.occlusion_features = false;
-  EXPECT_EQ(options.descriptor_size(), options.hog_size() + 90u + 12u);
+  EXPECT_EQ(options.descriptor_size(), options.hog_size() + 90u + 12u + 5u);
   options.normal_features = false;
   EXPECT_EQ(options.descriptor_size(), options.hog_size());
   const Placed empty = placed({});

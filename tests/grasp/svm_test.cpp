@@ -430,6 +430,18 @@ TEST(SvmTest, IncompatibleDescriptorsOrHandsAreRefusedNamingBoth) {
   const std::string image_error = error_of([&] { model.check_compatible(coarse, HandGeometry{}); });
   EXPECT_NE(image_error.find("HOG cells of 6 px"), std::string::npos) << image_error;
   EXPECT_NE(image_error.find("HOG cells of 4 px"), std::string::npos) << image_error;
+  // A file made for another version of the descriptor is refused when it is read.
+  SvmModel older = model;
+  older.descriptor.name = "occupancy-hog-4";
+  const std::string path = temp_path("older_descriptor.model");
+  older.save(path);
+  const std::string file_error = error_of([&] { SvmModel::load(path); });
+  EXPECT_NE(file_error.find(path + ": classifier model file: made for descriptor "
+                                   "occupancy-hog-4, but this antipode computes occupancy-hog-5; "
+                                   "retrain with `antipode train`"),
+            std::string::npos)
+      << file_error;
+  fs::remove(path);
 }
 
 TEST(SvmTest, SameSeedGivesIdenticalModelBytesForAnyThreadCount) {
@@ -719,6 +731,13 @@ TEST(BinaryFileTest, OlderModelAndTrainingSetFormatsAreRefused) {
   EXPECT_NE(set_error.find("format version 3 was written by an older antipode; re-create the file"),
             std::string::npos)
       << set_error;
+  BinaryWriter without_view_statistics("ANTPDATA", 4);
+  without_view_statistics.put<std::int32_t>(10);
+  without_view_statistics.write(path);
+  EXPECT_NE(error_of([&] {
+              load_training_set(path);
+            }).find("format version 4 was written by an older antipode; re-create the file"),
+            std::string::npos);
   fs::remove(path);
 }
 

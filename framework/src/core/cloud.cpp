@@ -31,4 +31,15 @@ void Cloud::validate() const {
   }
 }
 
+Eigen::Vector3f Cloud::direction_to_sensors(std::size_t i) const {
+  const Eigen::Vector3f& p = points_m[i];
+  Eigen::Vector3f sum = Eigen::Vector3f::Zero();
+  const std::uint32_t mask = view_masks.empty() ? 1u : view_masks[i];
+  for (std::size_t v = 0; v < view_origins_m.size() && v < 32; ++v) {
+    if ((mask >> v) & 1u) sum += (view_origins_m[v] - p).normalized();
+  }
+  const float norm = sum.norm();
+  return norm > 1e-6f ? (sum / norm).eval() : Eigen::Vector3f::Zero();
+}
+
 }  // namespace antipode

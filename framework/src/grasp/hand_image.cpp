@@ -121,6 +121,13 @@ constexpr std::array<double, 6> kAlignmentAnglesDeg = {10.0, 15.0, 20.0, 25.0, 3
 // 94.48% at 12.
 constexpr double kAlignmentWeight = 12.0;
 
+// The angle (degrees) from +closing or -closing within which view_statistics() takes a point
+// as facing a finger: Definition 3's 20 degrees and the margin the alignment counts give a
+// single view's normals.
+constexpr double kFacingAngleDeg = 25.0;
+// Numbers view_statistics() gives: two facing means, three components of the view direction.
+constexpr std::size_t kViewFeatures = 5;
+
 // Weight of the occlusion statistics, as kNormalWeight.
 constexpr double kOcclusionWeight = 4.0;
 // A sample of the closing region is hidden when an observed surface lies this much nearer
@@ -141,7 +148,7 @@ std::size_t HandImageOptions::hog_size() const {
 
 std::size_t HandImageOptions::normal_features_size() const {
   if (!normal_features) return 0;
-  return 3 * block_count(*this) + 2 * kAlignmentAnglesDeg.size();
+  return 3 * block_count(*this) + 2 * kAlignmentAnglesDeg.size() + kViewFeatures;
 }
 
 std::size_t HandImageOptions::occlusion_features_size() const {
@@ -235,6 +242,48 @@ std::vector<float> normal_statistics(const Cloud& cloud, const Hand& hand,
     features.push_back(log_count(points[b], kNormalWeight));
   }
   for (const int k : aligned) features.push_back(log_count(k, kAlignmentWeight));
+  const std::vector<float> view = view_statistics(cloud, hand, normals);
+  features.insert(features.end(), view.begin(), view.end());
+  return features;
+}
+
+std::vector<float> view_statistics(const Cloud& cloud, const Hand& hand,
+                                   const std::vector<Eigen::Vector3f>& normals) {
+  if (normals.size() != cloud.size()) {
+    throw Error("view statistics: " + std::to_string(normals.size()) + " normals for " +
+                std::to_string(cloud.size()) + " points");
+  }
+  const double cos_facing = std::cos(kFacingAngleDeg * M_PI / 180.0);
+  std::array<double, 2> facing_sum{};  // n . u over the points facing +y, then -y
+  std::array<int, 2> facing{};
+  Eigen::Vector3d direction_sum = Eigen::Vector3d::Zero();
+  for (const std::int32_t i : hand.closing_points) {
+    check_point(cloud, i);
+    const auto index = static_cast<std::size_t>(i);
+    const Eigen::Vector3d n = normals[index].cast<double>();
+    if (n.isZero()) continue;
+    const Eigen::Vector3d u = cloud.direction_to_sensors(index).cast<double>();
+    direction_sum += u;
+    const double along_closing = n.dot(hand.closing());
+    if (along_closing >= cos_facing) {
+      facing_sum[0] += n.dot(u);
+      ++facing[0];
+    }
+    if (-along_closing >= cos_facing) {
+      facing_sum[1] += n.dot(u);
+      ++facing[1];
+    }
+  }
+  std::vector<float> features;
+  features.reserve(kViewFeatures);
+  for (std::size_t side = 0; side < 2; ++side) {
+    features.push_back(
+        static_cast<float>(kNormalWeight * facing_sum[side] / std::max(facing[side], 1)));
+  }
+  const double points = std::max<double>(1.0, static_cast<double>(hand.closing_points.size()));
+  for (const Eigen::Vector3d& axis : {hand.approach(), hand.closing(), hand.axis()}) {
+    features.push_back(static_cast<float>(kNormalWeight * direction_sum.dot(axis) / points));
+  }
   return features;
 }
 

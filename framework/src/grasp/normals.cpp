@@ -20,16 +20,8 @@ namespace {
 // directions cancel out.
 Eigen::Vector3f toward_sensors(const Cloud& cloud, std::size_t i,
                                const Eigen::Vector3f& outward_from) {
-  const Eigen::Vector3f& p = cloud.points_m[i];
-  Eigen::Vector3f sum = Eigen::Vector3f::Zero();
-  if (cloud.view_origins_m.empty()) {
-    sum = p - outward_from;
-  } else {
-    const std::uint32_t mask = cloud.view_masks.empty() ? 1u : cloud.view_masks[i];
-    for (std::size_t v = 0; v < cloud.view_origins_m.size() && v < 32; ++v) {
-      if ((mask >> v) & 1u) sum += (cloud.view_origins_m[v] - p).normalized();
-    }
-  }
+  if (!cloud.view_origins_m.empty()) return cloud.direction_to_sensors(i);
+  const Eigen::Vector3f sum = cloud.points_m[i] - outward_from;
   const float norm = sum.norm();
   return norm > 1e-6f ? (sum / norm).eval() : Eigen::Vector3f::Zero();
 }

@@ -480,6 +480,11 @@ SvmModel SvmModel::load(const std::string& path) {
   }
   SvmModel m;
   m.descriptor.name = r.get_string();
+  if (const std::string today = SvmDescriptorSpec{}.name; m.descriptor.name != today) {
+    // Another descriptor version lays its numbers out differently: nothing else would match.
+    r.fail("made for descriptor " + m.descriptor.name + ", but this antipode computes " + today +
+           "; retrain with `antipode train`");
+  }
   m.descriptor.image = detail::get_image_options(r);
   m.descriptor.depth_m = r.get<double>();
   m.descriptor.max_aperture_m = r.get<double>();

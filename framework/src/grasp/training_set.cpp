@@ -11,8 +11,9 @@ namespace antipode {
 namespace {
 constexpr const char* kMagic = "ANTPDATA";
 // 1: options as raw structs; 2: descriptors without the alignment counts; 3: four alignment
-// angles and no occlusion statistics. None is read: its descriptors are not today's.
-constexpr std::uint32_t kVersion = 4;
+// angles and no occlusion statistics; 4: no view statistics. None is read: its descriptors
+// are not today's.
+constexpr std::uint32_t kVersion = 5;
 
 // Field by field, so that the bytes depend only on the values (no struct padding).
 void put_descriptor(BinaryWriter& w, const HandImageOptions& o, const HandGeometry& g) {

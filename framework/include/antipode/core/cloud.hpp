@@ -30,6 +30,11 @@ struct Cloud {
   bool empty() const { return points_m.empty(); }
   bool has_normals() const { return !normals.empty(); }
 
+  /// The unit direction from point `i` towards the sensors that saw it: the normalised sum
+  /// of the unit directions to the origins whose bit its view mask sets (no masks: view 0).
+  /// Zero when there are no view origins or the directions cancel out.
+  Eigen::Vector3f direction_to_sensors(std::size_t i) const;
+
   /// Throws antipode::Error describing the first broken invariant.
   void validate() const;
 };

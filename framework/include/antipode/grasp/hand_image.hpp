@@ -34,8 +34,8 @@ struct HandImageOptions {
   /// into the surface's silhouette, whose edges HOG then describes (single pixels would
   /// make every point an edge of its own).
   int point_radius_px = 2;
-  /// Appends surface-normal statistics and alignment counts to the HOG numbers
-  /// (normal_statistics()). The paper's descriptor is the occupancy HOG alone (false); with
+  /// Appends surface-normal statistics, alignment counts and view statistics to the HOG
+  /// numbers (normal_statistics()). The paper's descriptor is the occupancy HOG alone (false); with
   /// them, accuracy on novel objects rises by several points (docs/results.md).
   bool normal_features = true;
   /// Appends, per block, the share of the closing region the cloud's sensors could not see
@@ -48,8 +48,8 @@ struct HandImageOptions {
   /// Length of the HOG part: blocks x cells per block x bins.
   std::size_t hog_size() const;
   /// Length of the normal statistics: 3 numbers per block of block_cells x block_cells
-  /// cells tiling the image (partial blocks at the far edges count) and 12 alignment counts,
-  /// 0 without them.
+  /// cells tiling the image (partial blocks at the far edges count), 12 alignment counts and
+  /// 5 view statistics; 0 without them.
   std::size_t normal_features_size() const;
   /// Length of the occlusion statistics: one number per block as above, 0 without them.
   std::size_t occlusion_features_size() const;
@@ -95,10 +95,23 @@ std::vector<float> hog_descriptor(const HandImage& image, const HandImageOptions
 /// the number k of points whose normal lies within 10, 15, 20, 25, 30 and 45 degrees of
 /// +closing, then the same six of -closing (Definition 3's counts, which a mirrored closing
 /// direction swaps). The block numbers are times 4, the counts times 12 (see hand_image.cpp).
-/// `normals` is indexed like the cloud (zero = no normal).
+/// Last, the 5 numbers of view_statistics(). `normals` is indexed like the cloud (zero = no
+/// normal).
 std::vector<float> normal_statistics(const Cloud& cloud, const Hand& hand,
                                      const HandGeometry& geometry, const HandImageOptions& options,
                                      const std::vector<Eigen::Vector3f>& normals);
+
+/// How the sensors saw a hand's closing region, 5 numbers times 4: for the points whose
+/// normal lies within 25 degrees of +closing, the mean of n . u, u the unit direction from
+/// the point to the sensors that saw it (Cloud::direction_to_sensors(); 1: seen face on,
+/// 0: at a grazing angle; 0 when there is no such point); the same for -closing; then the
+/// mean of u over the closing points (zero for points without a normal) along the approach,
+/// closing and hand axis. The labels come from normals fitted to every view's points, and
+/// where a view saw a surface obliquely a second view is more likely to have seen it too and
+/// to turn its normals. A hand turned half a turn about its approach swaps the first two and
+/// negates the last two. A cloud without view origins gives zeros.
+std::vector<float> view_statistics(const Cloud& cloud, const Hand& hand,
+                                   const std::vector<Eigen::Vector3f>& normals);
 
 /// The share of the closing region hidden from every view of `occlusion`'s cloud, per block
 /// of the image (tiled as for normal_statistics()), times 4. Each HOG cell stands for the

@@ -26,7 +26,7 @@ namespace antipode {
 /// What produced the descriptors a model was trained on. Two descriptor setups are
 /// compatible when the name, the image options and the three hand lengths agree.
 struct SvmDescriptorSpec {
-  std::string name = "occupancy-hog-4";  ///< descriptor algorithm and its version
+  std::string name = "occupancy-hog-5";  ///< descriptor algorithm and its version
   HandImageOptions image;                ///< image layout and HOG parameters
   double depth_m = 0.06;                 ///< finger depth the image spans (rows)
   double max_aperture_m = 0.072;         ///< aperture the image spans (columns)
@@ -35,7 +35,7 @@ struct SvmDescriptorSpec {
   /// The spec of descriptors computed with `image` for a hand of `geometry`.
   static SvmDescriptorSpec of(const HandImageOptions& image, const HandGeometry& geometry);
   /// "a 0.06 m deep, 0.072 m wide, 0.02 m high hand with 10 x 12 HOG cells of 6 px (2 x 2
-  /// cell blocks, 9 bins, ..., occupancy-hog-4)".
+  /// cell blocks, 9 bins, ..., occupancy-hog-5)".
   std::string describe() const;
   /// Same name and image options, and hand lengths within 1e-9 m.
   bool matches(const SvmDescriptorSpec& other) const;
