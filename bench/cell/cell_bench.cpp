@@ -82,7 +82,7 @@ void BM_GraspAttempt(benchmark::State& state) {
     cell.reset(7);
     const double before = cell.world().time_s();
     state.ResumeTiming();
-    successes += cell.execute(hand, {}) == GraspOutcome::kSuccess ? 1 : 0;
+    successes += cell.execute({hand, HandGeometry{}, {}}).outcome == GraspOutcome::kSuccess ? 1 : 0;
     simulated += cell.world().time_s() - before;
   }
   state.counters["sim_s_per_s"] = benchmark::Counter(simulated, benchmark::Counter::kIsRate);

@@ -7,6 +7,7 @@
 #include "antipode/core/error.hpp"
 #include "commands.hpp"
 #include "exit_codes.hpp"
+#include "isolation_bench.hpp"
 
 namespace {
 
@@ -16,6 +17,7 @@ constexpr const char* kExamples = R"(Examples:
   antipode validate trees/detect.yaml
   antipode detect ../shared/data/clouds/table_mug.pcd --out grasps.json --image grasps.png
   antipode scene scenes/pile_procedural.yaml --image scene.png
+  antipode bench isolation --objects ../shared/data/objects/ycb --jobs 2 --report iso.json
   antipode train --out my.model --dataset examples.data
   antipode eval-classifier --model my.model --report eval.json
   antipode plugins
@@ -31,6 +33,7 @@ struct Commands {
   antipode::cli::SceneOptions scene;
   antipode::cli::TrainOptions train;
   antipode::cli::EvalOptions eval;
+  antipode::cli::IsolationBenchOptions isolation;
   std::string validate_path;
   std::string node_type;  ///< `antipode nodes [TYPE]`
 };
@@ -96,6 +99,36 @@ void add_eval(CLI::App& app, Commands& commands) {
   add_tree_run_options(*eval, options.settings);
 }
 
+void add_bench(CLI::App& app, Commands& commands) {
+  auto& o = commands.isolation;
+  CLI::App* bench = app.add_subcommand("bench", "Measure picking end to end in the simulated cell");
+  bench->require_subcommand(1);
+  CLI::App* isolation = bench->add_subcommand(
+      "isolation", "The paper's isolation experiment: each object in systematic poses");
+  isolation
+      ->add_option("--objects", o.objects,
+                   "'procedural' (scenes/objects/procedural_test_set.yaml) or a mesh folder")
+      ->capture_default_str();
+  isolation->add_option("--variants", o.variants, "Any of nc_1v,nc_2v,a_2v,svm_1v,svm_2v (all)")
+      ->delimiter(',');
+  isolation->add_option("--poses", o.poses, "Systematic poses per object")->capture_default_str();
+  isolation
+      ->add_option("--attempts", o.attempts,
+                   "Attempts per variant, objects in turn (0: every object in every pose)")
+      ->capture_default_str();
+  isolation->add_option("--seed", o.seed, "Cell seed of the first attempt")->capture_default_str();
+  isolation->add_option("--jobs", o.jobs, "Processes (the same results for any number)")
+      ->capture_default_str();
+  isolation->add_option("--report", o.report_path, "Write the report as JSON");
+  isolation->add_option("--pictures", o.pictures_dir, "Draw every failed attempt into this folder");
+  isolation->add_option("--tree", o.tree_path, "The pick tree (its `attempt` tree runs)")
+      ->capture_default_str();
+  isolation->add_option("--noise", o.noise, "The cell's sensor noise scale (default: the tree's)");
+  isolation->add_option("--held-out", o.held_out, "Objects reported apart (comma-separated)")
+      ->delimiter(',');
+  isolation->add_option("--set", o.set, "Override a tree entry or component parameter");
+}
+
 int dispatch(const CLI::App& app, const Commands& commands) {
   if (app.got_subcommand("run")) return antipode::cli::run_command(commands.run);
   if (app.got_subcommand("detect")) return antipode::cli::detect_command(commands.detect);
@@ -106,6 +139,9 @@ int dispatch(const CLI::App& app, const Commands& commands) {
   }
   if (app.got_subcommand("validate")) {
     return antipode::cli::validate_command(commands.validate_path);
+  }
+  if (app.got_subcommand("bench")) {
+    return antipode::cli::bench_isolation_command(commands.isolation);
   }
   if (app.got_subcommand("plugins")) return antipode::cli::plugins_command();
   if (app.got_subcommand("nodes")) return antipode::cli::nodes_command(commands.node_type);
@@ -126,6 +162,7 @@ int main(int argc, char** argv) {
   add_scene(app, commands);
   add_train(app, commands);
   add_eval(app, commands);
+  add_bench(app, commands);
   CLI::App* validate = app.add_subcommand("validate", "Check a tree file without running it");
   validate->add_option("tree", commands.validate_path, "YAML tree file")->required();
   app.add_subcommand("plugins", "List plugin libraries found, loaded and refused, and why");

@@ -51,10 +51,12 @@ TEST_F(BulletCellPluginTest, CapturesAndGraspsThroughTheInterface) {
   EXPECT_EQ(cloud.view_origins_m.size(), 2u);
   EXPECT_GT(cloud.size(), 10000u);
   const Hand hand = top_down(0.72, -0.12, -0.295 + 0.1 + 0.005);
-  EXPECT_EQ(cell->execute(hand, {}), GraspOutcome::kSuccess);
-  EXPECT_EQ(cell->execute(hand, {}), GraspOutcome::kEmptyGrasp) << "the cylinder was removed";
+  const GraspRequest request{hand, HandGeometry{}, {}};
+  EXPECT_EQ(cell->execute(request).outcome, GraspOutcome::kSuccess);
+  EXPECT_EQ(cell->execute(request).outcome, GraspOutcome::kEmptyGrasp)
+      << "the cylinder was removed";
   cell->reset(3);
-  EXPECT_EQ(cell->execute(hand, {}), GraspOutcome::kSuccess);
+  EXPECT_EQ(cell->execute(request).outcome, GraspOutcome::kSuccess);
 }
 
 TEST_F(BulletCellPluginTest, RejectsBadParameters) {

@@ -27,7 +27,8 @@ void expect_closing_points_inside(const Cloud& cloud, const Hand& hand, const Ha
 
 void expect_stats_add_up(const HandSearchResult& result) {
   const HandSearchStats& s = result.stats;
-  EXPECT_EQ(s.poses, s.acceptable + s.below_support + s.hidden + s.in_collision + s.empty + s.too_shallow);
+  EXPECT_EQ(s.poses,
+            s.acceptable + s.below_support + s.hidden + s.in_collision + s.empty + s.too_shallow);
   EXPECT_EQ(s.samples,
             s.frames_quadric + s.frames_planar + s.skipped_too_few + s.skipped_collinear);
   EXPECT_EQ(s.samples, result.sample_points.size());
@@ -39,7 +40,7 @@ void expect_stats_add_up(const HandSearchResult& result) {
 
 void expect_valid_hands(const Cloud& cloud, const HandSearchResult& result,
                         const HandSearchParameters& parameters) {
-  const HandBody body = make_hand_body(parameters.hand, parameters.palm_thickness_m);
+  const HandBody body = make_hand_body(parameters.hand);
   for (std::size_t h = 0; h < result.hands.size(); ++h) {
     const Hand& hand = result.hands[h];
     const Eigen::Matrix3d R = hand.X_FrameHand.linear();

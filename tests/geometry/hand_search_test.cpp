@@ -124,7 +124,7 @@ TEST(HandSearchTest, CylinderStandingOnATableGivesHandsOnTheCylinderOnly) {
 // The lowest point of the hand body (fingers and palm) along `up`, relative to `on_table`.
 double lowest_point(const Hand& hand, const HandSearchParameters& parameters,
                     const Eigen::Vector3d& up, const Eigen::Vector3d& on_table) {
-  const HandBody body = make_hand_body(parameters.hand, parameters.palm_thickness_m);
+  const HandBody body = make_hand_body(parameters.hand);
   double lowest = std::numeric_limits<double>::infinity();
   for (const HandBox* box : {&body.finger_minus_y, &body.finger_plus_y, &body.palm}) {
     for (int corner = 0; corner < 8; ++corner) {

@@ -33,7 +33,7 @@ std::shared_ptr<Cloud> two_view_box() {
 
 // `count` hands from above across x with the given label, all on the box.
 HandSet hands_on(std::shared_ptr<Cloud> cloud, std::size_t count, HandLabel label) {
-  HandSet set{cloud, {}, HandGeometry{}};
+  HandSet set{cloud, {}, HandGeometry{}, {}};
   for (std::size_t i = 0; i < count; ++i) {
     Hand hand = hand_at(*cloud, kDown, Eigen::Vector3d::UnitX(), {0.0, 0.0, 0.06 + 0.001 * i});
     hand.label = label;
@@ -92,7 +92,7 @@ TEST(TrainingExamplesTest, ASingleViewDescriptorIsComputedOnThatViewsPointsAlone
   // Hands on the box's top edge, where the views' neighbourhoods differ: normals fitted on
   // the two-view cloud are not those a one-sensor robot would get.
   const auto both = two_view_box();
-  HandSet set{both, {}, HandGeometry{}};
+  HandSet set{both, {}, HandGeometry{}, {}};
   for (const double y : {-0.02, 0.0, 0.02}) {
     Hand hand = hand_at(*both, kDown, Eigen::Vector3d::UnitX(), {0.0, y, 0.06});
     hand.label = HandLabel::kPositive;
@@ -106,8 +106,9 @@ TEST(TrainingExamplesTest, ASingleViewDescriptorIsComputedOnThatViewsPointsAlone
   ASSERT_EQ(out.size(), set.hands.size());
 
   std::vector<std::int32_t> new_index;
-  HandSet right{std::make_shared<Cloud>(points_of_views(*both, {1}, &new_index)), {}, set.geometry};
-  HandSet right_on_both{both, {}, set.geometry};  // same points, two-view neighbourhoods
+  HandSet right{
+      std::make_shared<Cloud>(points_of_views(*both, {1}, &new_index)), {}, set.geometry, {}};
+  HandSet right_on_both{both, {}, set.geometry, {}};  // same points, two-view neighbourhoods
   for (const Hand& hand : set.hands) {
     Hand seen = hand, seen_in_both = hand;
     seen.closing_points.clear();

@@ -7,6 +7,8 @@
 #include <regex>
 
 #include "antipode/bt/loader.hpp"
+#include "antipode/interfaces/grasp_attempt.hpp"
+#include "antipode/interfaces/hand_set.hpp"
 #include "antipode/plugin/plugin_host.hpp"
 
 namespace antipode {
@@ -53,7 +55,13 @@ trees:
       - ClassifyHands: { classifier: classifier, hands: "{hands}", classified: "{scored}" }
       - SelectGrasps: { selector: selector, hands: "{scored}", grasps: "{grasps}", best: "{best}" }
       - PlanReach: { planner: planner, grasp: "{best}", start_rad: [0, 1], trajectory: "{path}" }
-      - ExecuteGrasp: { cell: cell, grasp: "{best}", trajectory: "{path}", outcome: "{outcome}" }
+      - ExecuteGrasp:
+          cell: cell
+          grasps: "{grasps}"
+          trajectory: "{path}"
+          outcome: "{outcome}"
+          attempt: "{attempt}"
+          grasp: "{executed}"
 )");
   tree.set_log_sink([](const bt::Node&, const std::string&) {});
   ASSERT_EQ(tree.tick_while_running(), bt::Status::kSuccess);
@@ -62,11 +70,14 @@ trees:
   EXPECT_EQ(board.get<HandSetPtr>("hands")->hands.size(), 5u);
   // The sampler's set is left untouched; the classifier wrote a new one.
   EXPECT_EQ(board.get<HandSetPtr>("hands")->hands[4].score, 0.0);
-  const auto grasps = board.get<std::vector<Hand>>("grasps");
-  ASSERT_EQ(grasps.size(), 5u);
+  const auto grasps = board.get<HandSetPtr>("grasps");
+  ASSERT_EQ(grasps->hands.size(), 5u);
   EXPECT_NEAR(board.get<Hand>("best").position_m().z(), 0.04, 1e-6);  // the highest point
   EXPECT_EQ(board.get<Trajectory>("path").positions_rad.size(), 2u);
   EXPECT_EQ(board.get<std::string>("outcome"), "success");
+  // The cell's record of the attempt, and the grasp it executed: the best one.
+  EXPECT_TRUE(board.get_ref<GraspAttempt>("attempt").reached_pose);
+  EXPECT_NEAR(board.get<Hand>("executed").position_m().z(), 0.04, 1e-6);
 }
 
 TEST_F(PipelineNodesTest, LoopOverScenesCountsSeedsAndOutcomes) {
@@ -80,8 +91,8 @@ trees:
           - ResetScene: { cell: cell, first_seed: 5, seed: "{seed}" }
           - CaptureCloud: { cell: cell, cloud: "{cloud}" }
           - SampleHands: { sampler: sampler, cloud: "{cloud}", hands: "{hands}" }
-          - SelectGrasps: { selector: selector, hands: "{hands}", best: "{best}" }
-          - ExecuteGrasp: { cell: cell, grasp: "{best}", outcome: "{outcome}" }
+          - SelectGrasps: { selector: selector, hands: "{hands}", grasps: "{grasps}" }
+          - ExecuteGrasp: { cell: cell, grasps: "{grasps}", outcome: "{outcome}" }
           - RecordOutcome: { outcome: "{outcome}", label: "scene {seed}", successes: "{ok}", attempts: "{n}" }
 )");
   std::vector<std::string> lines;

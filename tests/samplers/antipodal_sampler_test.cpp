@@ -83,8 +83,7 @@ positions: 10
 workspace: {min: [-0.5, -0.5, 0.0], max: [0.5, 0.5, 1.5]}
 sample_region: {min: [-0.1, -0.1, 0.4], max: [0.1, 0.1, 0.8]}
 hand: {finger_width_m: 0.01, outer_diameter_m: 0.1, depth_m: 0.06, height_m: 0.02,
-       init_bite_m: 0.01, min_aperture_m: 0.02, max_aperture_m: 0.08}
-palm_thickness_m: 0.02
+       init_bite_m: 0.01, min_aperture_m: 0.02, max_aperture_m: 0.08, palm_thickness_m: 0.03}
 min_bite_m: 0.02
 clearance_m: 0.002
 max_view_angle_deg: 80

@@ -1,5 +1,7 @@
 #include "antipode/bt/loader.hpp"
 
+#include "antipode/core/error.hpp"
+
 #include "build_tree.hpp"
 #include "checks.hpp"
 #include "overrides.hpp"
@@ -30,6 +32,15 @@ CheckedFile check_file(const std::string& yaml, const std::string& file_name,
   context.registry = &registry_of(options);
   context.components = options.components;
   checked.spec = detail::parse_document(document, context);
+  if (!options.main_tree.empty()) {
+    if (checked.spec.tree(options.main_tree) == nullptr) {
+      std::vector<std::string> names;
+      for (const auto& tree : checked.spec.trees) names.push_back(tree.name);
+      throw Error(file_name + ": no tree '" + options.main_tree + "' to run" +
+                  did_you_mean(options.main_tree, names));
+    }
+    checked.spec.main = options.main_tree;
+  }
   detail::check_subtree_cycles(checked.spec);
   detail::check_entry_types(checked.spec, context.registry->converters(), checked.entries);
   return checked;

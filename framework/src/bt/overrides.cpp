@@ -65,6 +65,11 @@ void set_parameter(YAML::Node& document, const std::string& key, const std::stri
     target.reset(next);
   }
   if (path.back().empty()) throw Error(what + ": empty parameter name");
+  if (path.size() == 2 && path[1] == "plugin") {
+    // Another plugin type: the file's parameters were written for the old one.
+    target.reset(YAML::Node(YAML::NodeType::Map));
+    document["components"][path[0]] = target;
+  }
   target[path.back()] = read_value(text);
 }
 

@@ -24,6 +24,10 @@ void HandGeometry::validate() const {
   require_positive(init_bite_m, "init_bite_m");
   require_positive(min_aperture_m, "min_aperture_m");
   require_positive(max_aperture_m, "max_aperture_m");
+  if (!(palm_thickness_m >= 0.0 && palm_thickness_m < 1.0)) {
+    throw Error("hand geometry: palm_thickness_m must be in [0, 1), got " +
+                std::to_string(palm_thickness_m));
+  }
   if (min_aperture_m >= max_aperture_m) {
     throw Error("hand geometry: min_aperture_m (" + std::to_string(min_aperture_m) +
                 ") must be smaller than max_aperture_m (" + std::to_string(max_aperture_m) + ")");

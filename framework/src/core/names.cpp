@@ -1,7 +1,7 @@
 // String names of the core enums, used in messages, traces and JSON output.
 #include "antipode/core/hand.hpp"
-#include "antipode/interfaces/cell.hpp"
 #include "antipode/interfaces/component.hpp"
+#include "antipode/interfaces/grasp_attempt.hpp"
 
 namespace antipode {
 
@@ -39,6 +39,16 @@ const char* to_string(Rejection reason) {
       return "no motion plan";
     case Rejection::kOutOfWorkspace:
       return "out of workspace";
+    case Rejection::kBelowSupport:
+      return "below the support";
+    case Rejection::kApertureLimit:
+      return "at the aperture limits";
+    case Rejection::kClustered:
+      return "clustered into another grasp";
+    case Rejection::kSmallCluster:
+      return "cluster too small";
+    case Rejection::kNotSelected:
+      return "not selected";
   }
   return "?";
 }

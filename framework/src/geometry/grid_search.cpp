@@ -268,7 +268,7 @@ GridSpec::GridSpec(const HandSearchParameters& p) {
       std::max(static_cast<float>(h.outer_diameter_m / 2.0), half_aperture_m + finger_width_m);
   depth_m = static_cast<float>(h.depth_m);
   half_height_m = static_cast<float>(h.height_m / 2.0);
-  palm_thickness_m = static_cast<float>(p.palm_thickness_m);
+  palm_thickness_m = static_cast<float>(p.hand.palm_thickness_m);
   start_m = static_cast<float>(-(h.depth_m - h.init_bite_m));
   clearance_m = static_cast<float>(p.clearance_m);
   min_bite_m = static_cast<float>(p.min_bite_m);

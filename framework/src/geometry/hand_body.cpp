@@ -18,6 +18,10 @@ std::vector<std::int32_t> points_where(const Eigen::Isometry3d& X_FrameHand,
 
 }  // namespace
 
+HandBody make_hand_body(const HandGeometry& geometry) {
+  return make_hand_body(geometry, geometry.palm_thickness_m);
+}
+
 HandBody make_hand_body(const HandGeometry& geometry, double palm_thickness_m) {
   const double a = geometry.max_aperture_m / 2.0;
   const double w = geometry.finger_width_m;

@@ -23,8 +23,6 @@ void HandSearchParameters::validate() const {
           frame_radius_m);
   require(orientations >= 1 && orientations <= 360, "orientations", "in 1..360", orientations);
   require(positions >= 1 && positions <= 1000, "positions", "in 1..1000", positions);
-  require(palm_thickness_m >= 0.0 && std::isfinite(palm_thickness_m), "palm_thickness_m", ">= 0",
-          palm_thickness_m);
   require(min_bite_m >= 0.0 && min_bite_m <= hand.depth_m, "min_bite_m", "in [0, depth_m]",
           min_bite_m);
   require(clearance_m >= 0.0 && clearance_m < hand.depth_m, "clearance_m", "in [0, depth_m)",

@@ -36,7 +36,7 @@ HandSet sample_hands(const Cloud& cloud, const HandSamplingOptions& options,
   }
   HandSearchResult result = search_hands(*prepared, search, random);
   if (stats != nullptr) *stats = result.stats;
-  return HandSet{std::move(prepared), std::move(result.hands), search.hand};
+  return HandSet{std::move(prepared), std::move(result.hands), search.hand, result.support_plane};
 }
 
 }  // namespace antipode

@@ -11,6 +11,7 @@
 
 #include "antipode/core/binary_file.hpp"
 #include "antipode/core/error.hpp"
+#include "float_product.hpp"
 #include "image_options_io.hpp"
 #include "number_codes.hpp"
 
@@ -237,7 +238,9 @@ RowMatrixF reduce_block(const SvmModel& m, const float* rows, std::size_t first,
   const auto d = static_cast<Eigen::Index>(m.input_dimension());
   const auto k = static_cast<Eigen::Index>(m.components());
   const RowMatrixF centred = padded_block(rows, first, count, m.input_dimension(), &m.mean);
-  RowMatrixF z = centred * ConstRowMapF(m.basis.data(), k, d).transpose();
+  RowMatrixF z(centred.rows(), k);
+  detail::multiply_transposed(centred.data(), std::size_t(centred.rows()), std::size_t(d),
+                              m.basis.data(), std::size_t(k), z.data());
   for (Eigen::Index j = 0; j < k; ++j) z.col(j) *= m.scale[static_cast<std::size_t>(j)];
   return z;
 }
@@ -288,7 +291,9 @@ void score_block(const SvmModel& m, const RowMatrixF& z, std::size_t first, std:
     const Eigen::RowVectorXf sv_squared = gaussian
                                               ? support.rowwise().squaredNorm().transpose().eval()
                                               : Eigen::RowVectorXf::Zero(width);
-    values.noalias() = z * support.transpose();
+    values.resize(z.rows(), width);
+    detail::multiply_transposed(z.data(), std::size_t(z.rows()), std::size_t(k), support.data(),
+                                std::size_t(width), values.data());
     apply_kernel(m.kernel, z_squared, sv_squared, values);
     sum.noalias() += values.cast<double>() * alpha.segment(c, width);
   }

@@ -50,9 +50,23 @@ void replace_objects(const Parameters& params, SceneSpec& scene) {
   scene.random.folder = resolved;
 }
 
+// `object: {...}` (one listed object, as in a scene's `objects`) replaces the scene's objects:
+// how the isolation benchmark puts one object in one pose into a layout.
+void replace_with_object(const Parameters& params, SceneSpec& scene) {
+  if (!params.has("object")) {
+    params.child("object");  // known either way
+    return;
+  }
+  if (params.has("objects")) params.fail("object", "give 'object' or 'objects', not both");
+  const Parameters object = params.child("object");
+  scene.objects = {parse_object(object, params.file())};
+  scene.random = RandomObjects{};
+}
+
 SceneSpec scene_of(const Parameters& params) {
   SceneSpec scene = read_scene_parameter(params);
   replace_objects(params, scene);
+  replace_with_object(params, scene);
   return scene;
 }
 
@@ -73,8 +87,6 @@ CellOptions read_cell_options(const Parameters& p, const SceneSpec& scene) {
   a.gripper.finger_force_n = in_range(p, "finger_force_n", a.gripper.finger_force_n, 0.1, 500.0);
   a.gripper.friction = in_range(p, "gripper_friction", a.gripper.friction, 0.05, 1.0);
   a.gripper.hand_force_n = in_range(p, "hand_force_n", a.gripper.hand_force_n, 1.0, 5000.0);
-  a.gripper.palm_thickness_m = in_range(p, "palm_thickness_m", 0.02, 0.001, 0.2);
-  a.table_top_z_m = scene.table.top_z_m;
   return o;
 }
 
@@ -112,26 +124,52 @@ Cloud BulletCell::capture(const std::vector<std::string>& views) {
   return cloud;
 }
 
-GraspOutcome BulletCell::execute(const Hand& grasp, const Trajectory&) {
-  if (grasp.frame != "base" || !is_rotation(grasp.X_FrameHand.linear()) ||
-      !grasp.X_FrameHand.translation().allFinite())
-    return GraspOutcome::kNotExecuted;
+GraspAttempt BulletCell::execute(const GraspRequest& request) {
+  const Hand& grasp = request.grasp;
+  GraspAttempt refused;
+  refused.X_BaseHand_planned = grasp.X_FrameHand;
+  if (grasp.frame != "base") {
+    refused.reason = "the grasp is in frame '" + grasp.frame + "', the cell needs 'base'";
+    return refused;
+  }
+  if (!is_rotation(grasp.X_FrameHand.linear()) || !grasp.X_FrameHand.translation().allFinite()) {
+    refused.reason = "the grasp pose is not a rigid motion";
+    return refused;
+  }
+  try {
+    request.gripper.validate();
+  } catch (const Error& error) {
+    refused.reason = error.message();
+    return refused;
+  }
   ++attempts_;
+  AttemptOptions attempt = options_.attempt;
+  attempt.gripper.geometry = request.gripper;
   const std::size_t before = objects().size();
-  const AttemptResult result = attempt_grasp(*world_, grasp.X_FrameHand, options_.attempt);
-  if (result.outcome == GraspOutcome::kSuccess) world_->remove_body(result.held_object);
+  AttemptResult result = attempt_grasp(*world_, grasp.X_FrameHand, attempt);
+  GraspAttempt& record = result.record;
+  if (record.outcome == GraspOutcome::kSuccess) world_->remove_body(result.held_object);
   world_->settle(1.0);
-  remove_fallen_objects();
-  const std::size_t expected = before - (result.outcome == GraspOutcome::kSuccess ? 1 : 0);
-  if (result.outcome != GraspOutcome::kSuccess &&
-      result.outcome != GraspOutcome::kCollisionOnApproach && objects().size() < expected)
-    return GraspOutcome::kObjectKnockedOut;
-  return result.outcome;
+  const std::vector<std::string> fallen = remove_fallen_objects();
+  const std::size_t expected = before - (record.outcome == GraspOutcome::kSuccess ? 1 : 0);
+  if (record.outcome != GraspOutcome::kSuccess &&
+      record.outcome != GraspOutcome::kCollisionOnApproach && objects().size() < expected) {
+    record.outcome = GraspOutcome::kObjectKnockedOut;
+    std::string names;
+    for (const auto& name : fallen) names += (names.empty() ? "" : ", ") + name;
+    record.reason += "; knocked off the table: " + names;
+  }
+  return record;
 }
 
-void BulletCell::remove_fallen_objects() {
+std::vector<std::string> BulletCell::remove_fallen_objects() {
+  std::vector<std::string> names;
   for (int id : objects())
-    if (world_->pose(id).translation().z() < scene_.table.top_z_m - 0.01) world_->remove_body(id);
+    if (world_->pose(id).translation().z() < scene_.table.top_z_m - 0.01) {
+      names.push_back(world_->name(id));
+      world_->remove_body(id);
+    }
+  return names;
 }
 
 void BulletCell::reset(std::uint64_t seed) {

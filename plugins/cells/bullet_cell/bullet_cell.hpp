@@ -30,7 +30,7 @@ class BulletCell final : public Cell {
 
   std::vector<std::string> view_names() const override;
   Cloud capture(const std::vector<std::string>& views) override;
-  GraspOutcome execute(const Hand& grasp, const Trajectory& trajectory) override;
+  GraspAttempt execute(const GraspRequest& request) override;
   void reset(std::uint64_t seed) override;
 
   /// Ground truth, for tests and tools.
@@ -40,7 +40,8 @@ class BulletCell final : public Cell {
   int attempts() const { return attempts_; }
 
  private:
-  void remove_fallen_objects();
+  /// Removes the objects below the table top; returns their names.
+  std::vector<std::string> remove_fallen_objects();
 
   SceneSpec scene_;
   CellOptions options_;

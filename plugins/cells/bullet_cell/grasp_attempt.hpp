@@ -1,7 +1,8 @@
 #pragma once
-// One simulated grasp attempt with a free-floating gripper, judged from ground truth.
+// One simulated grasp attempt with a free-floating gripper, judged and recorded from ground
+// truth.
 
-#include "antipode/interfaces/cell.hpp"
+#include "antipode/interfaces/grasp_attempt.hpp"
 #include "gripper.hpp"
 #include "physics_world.hpp"
 
@@ -9,24 +10,28 @@ namespace antipode::cells {
 
 struct AttemptOptions {
   GripperOptions gripper;
-  double standoff_m = 0.10;        ///< start this far back along the approach
-  double approach_step_m = 0.002;  ///< per physics step while approaching
+  double standoff_m = 0.10;         ///< start this far back along the approach
+  double approach_step_m = 0.002;   ///< per physics step while approaching
+  double arrive_s = 0.1;            ///< time allowed after the last approach step to settle
+  double arrived_m = 0.0005;        ///< settled: the palm face this close to its planned position
+  double pose_tolerance_m = 0.003;  ///< palm face this close to its planned position = reached
   double close_s = 0.5;
   double lift_m = 0.20;
   double lift_speed_m_s = 0.2;
   double hold_s = 1.0;
-  double table_top_z_m = -0.295;
 };
 
 struct AttemptResult {
-  GraspOutcome outcome = GraspOutcome::kNotExecuted;
+  GraspAttempt record;
   int held_object = -1;  ///< the object lifted on success (still in the world)
 };
 
-/// Starts `standoff_m` back from `X_BaseHand` (contact there = collision on approach),
-/// approaches in small steps until contact or the grasp pose, closes, lifts and holds.
-/// Success: an object touches both fingers after the hold, lifted at least half the lift.
-/// The gripper is removed afterwards; the world keeps stepping as it does.
+/// Starts `standoff_m` back from `X_BaseHand` (contact there = collision on approach) and
+/// drives the hand to the grasp pose in small steps: the drive is force-bounded, so it
+/// pushes light objects and stalls against the table or heavy ones, as a position-controlled
+/// arm does. Then it closes, lifts and holds. Success: after the hold an object touches both
+/// fingers and no fixture (the table, the box). The gripper is removed afterwards; the world
+/// keeps stepping as it does.
 AttemptResult attempt_grasp(PhysicsWorld& world, const Eigen::Isometry3d& X_BaseHand,
                             const AttemptOptions& options);
 

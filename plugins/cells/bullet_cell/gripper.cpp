@@ -1,5 +1,12 @@
 #include "gripper.hpp"
 
+#include <BulletDynamics/Featherstone/btMultiBody.h>
+#include <BulletDynamics/Featherstone/btMultiBodyDynamicsWorld.h>
+#include <BulletDynamics/Featherstone/btMultiBodyFixedConstraint.h>
+#include <BulletDynamics/Featherstone/btMultiBodyGearConstraint.h>
+#include <BulletDynamics/Featherstone/btMultiBodyJointLimitConstraint.h>
+#include <BulletDynamics/Featherstone/btMultiBodyJointMotor.h>
+#include <BulletDynamics/Featherstone/btMultiBodyLinkCollider.h>
 #include <btBulletDynamicsCommon.h>
 
 #include "bullet_convert.hpp"
@@ -13,95 +20,161 @@ Eigen::Isometry3d offset(double x, double y, double z) {
 
 }  // namespace
 
+// The Bullet objects of one gripper: the multibody (base = palm, links 0 and 1 = the fingers
+// at -y and +y), one box shape and collider per part, and the constraints.
+struct Gripper::Parts {
+  std::unique_ptr<btMultiBody> body;
+  std::vector<std::unique_ptr<btBoxShape>> shapes;
+  std::vector<std::unique_ptr<btMultiBodyLinkCollider>> colliders;  // palm, finger -y, +y
+  std::vector<std::unique_ptr<btMultiBodyConstraint>> constraints;
+  btMultiBodyFixedConstraint* drive = nullptr;
+  btMultiBodyJointMotor* motors[2] = {nullptr, nullptr};
+};
+
 Gripper::Gripper(PhysicsWorld& world, const GripperOptions& options,
                  const Eigen::Isometry3d& X_BaseHand)
-    : world_(world), options_(options), X_BaseHand_(X_BaseHand) {
+    : world_(world), options_(options), X_BaseHand_(X_BaseHand), parts_(std::make_unique<Parts>()) {
   const HandGeometry& g = options.geometry;
-  const double t = options.palm_thickness_m;
+  const double t = g.palm_thickness_m;
+  const double dt = world.options().time_step_s;
   const double palm_half_y =
       std::max(g.outer_diameter_m, g.max_aperture_m + 2 * g.finger_width_m) / 2;
-  palm_ =
-      world.add_gripper_box(X_BaseHand * offset(-t / 2, 0, 0), {t / 2, palm_half_y, g.height_m / 2},
-                            options.palm_mass_kg, options.friction);
+  const btVector3 palm_half(btScalar(t / 2), btScalar(palm_half_y), btScalar(g.height_m / 2));
+  const btVector3 finger_half(btScalar(g.depth_m / 2), btScalar(g.finger_width_m / 2),
+                              btScalar(g.height_m / 2));
+  Parts& p = *parts_;
+  for (const btVector3& half : {palm_half, finger_half, finger_half}) {
+    p.shapes.push_back(std::make_unique<btBoxShape>(half));
+    p.shapes.back()->setMargin(btScalar(world.options().margin_m));
+  }
+  btVector3 palm_inertia, finger_inertia;
+  p.shapes[0]->calculateLocalInertia(btScalar(options.palm_mass_kg), palm_inertia);
+  p.shapes[1]->calculateLocalInertia(btScalar(options.finger_mass_kg), finger_inertia);
+
+  // Base frame: the palm box's centre, t/2 behind the palm face. Finger joints move inwards:
+  // joint position 0 is fully open, positive closes.
+  p.body =
+      std::make_unique<btMultiBody>(2, btScalar(options.palm_mass_kg), palm_inertia, false, false);
+  p.body->setBaseWorldTransform(to_bullet(X_BaseHand * offset(-t / 2, 0, 0)));
   for (int side = 0; side < 2; ++side) {
     const double sign = side == 0 ? -1.0 : 1.0;
-    const double y = sign * (g.max_aperture_m + g.finger_width_m) / 2;
-    fingers_[side] = world.add_gripper_box(X_BaseHand * offset(g.depth_m / 2, y, 0),
-                                           {g.depth_m / 2, g.finger_width_m / 2, g.height_m / 2},
-                                           options.finger_mass_kg, options.friction);
-    // The slider's axis (its frame's x) points outwards along the closing direction, so
-    // negative travel closes either finger.
-    btTransform in_palm, in_finger;
-    in_palm.setIdentity();
-    in_palm.setRotation(btQuaternion(btVector3(0, 0, 1), btScalar(sign * SIMD_HALF_PI)));
-    in_palm.setOrigin(btVector3(btScalar(g.depth_m / 2 + t / 2), btScalar(y), 0));
-    in_finger.setIdentity();
-    in_finger.setRotation(in_palm.getRotation());
-    auto* slider = new btSliderConstraint(world.body(palm_), world.body(fingers_[side]), in_palm,
-                                          in_finger, true);
-    slider->setLowerLinLimit(btScalar(-(g.max_aperture_m - g.min_aperture_m) / 2));
-    slider->setUpperLinLimit(0);
-    slider->setLowerAngLimit(0);
-    slider->setUpperAngLimit(0);
-    slider->setPoweredLinMotor(true);
-    slider->setMaxLinMotorForce(btScalar(options.finger_force_n));
-    slider->setTargetLinMotorVelocity(btScalar(options.finger_speed_m_s));
-    world.add_constraint(slider);
-    sliders_[side] = slider;
+    const btVector3 pivot(btScalar(g.depth_m / 2 + t / 2),
+                          btScalar(sign * (g.max_aperture_m + g.finger_width_m) / 2), 0);
+    p.body->setupPrismatic(side, btScalar(options.finger_mass_kg), finger_inertia, -1,
+                           btQuaternion::getIdentity(), btVector3(0, btScalar(-sign), 0), pivot,
+                           btVector3(0, 0, 0), true);
   }
+  p.body->finalizeMultiDof();
+  p.body->setHasSelfCollision(false);
+  p.body->setCanSleep(false);
+  p.body->setLinearDamping(0);
+  p.body->setAngularDamping(0);
+  btMultiBodyDynamicsWorld& dynamics = world.dynamics();
+  dynamics.addMultiBody(p.body.get());
+
+  const char* names[] = {"palm", "finger -y", "finger +y"};
+  for (int part = 0; part < 3; ++part) {
+    auto collider = std::make_unique<btMultiBodyLinkCollider>(p.body.get(), part - 1);
+    collider->setCollisionShape(p.shapes[std::size_t(part)].get());
+    collider->setFriction(btScalar(options.friction));
+    dynamics.addCollisionObject(collider.get(), btBroadphaseProxy::DefaultFilter,
+                                btBroadphaseProxy::AllFilter);
+    if (part == 0)
+      p.body->setBaseCollider(collider.get());
+    else
+      p.body->getLink(part - 1).m_collider = collider.get();
+    const int id = world.register_part(collider.get(), BodyRole::kGripper, names[part]);
+    (part == 0 ? palm_ : fingers_[part - 1]) = id;
+    p.colliders.push_back(std::move(collider));
+  }
+  btAlignedObjectArray<btQuaternion> rotations;
+  btAlignedObjectArray<btVector3> origins;
+  p.body->forwardKinematics(rotations, origins);
+  p.body->updateCollisionObjectWorldTransforms(rotations, origins);
+
+  const btScalar stroke = btScalar((g.max_aperture_m - g.min_aperture_m) / 2);
+  for (int side = 0; side < 2; ++side) {
+    p.constraints.push_back(
+        std::make_unique<btMultiBodyJointLimitConstraint>(p.body.get(), side, 0, stroke));
+    auto motor = std::make_unique<btMultiBodyJointMotor>(p.body.get(), side, 0,
+                                                         btScalar(-options.finger_speed_m_s),
+                                                         btScalar(options.finger_force_n * dt));
+    p.motors[side] = motor.get();
+    p.constraints.push_back(std::move(motor));
+  }
+  // The gear: both fingers travel alike (joint velocity 0 + ratio x joint velocity 1 = 0).
+  auto gear = std::make_unique<btMultiBodyGearConstraint>(
+      p.body.get(), 0, p.body.get(), 1, btVector3(0, 0, 0), btVector3(0, 0, 0),
+      btMatrix3x3::getIdentity(), btMatrix3x3::getIdentity());
+  gear->setGearRatio(-1);
+  gear->setErp(0.2f);
+  gear->setMaxAppliedImpulse(btScalar(options.hand_force_n * dt));
+  p.constraints.push_back(std::move(gear));
+  auto carrier = std::make_unique<btMultiBodyFixedConstraint>(
+      p.body.get(), -1, static_cast<btRigidBody*>(nullptr), btVector3(0, 0, 0), btVector3(0, 0, 0),
+      btMatrix3x3::getIdentity(), btMatrix3x3::getIdentity());
+  carrier->setMaxAppliedImpulse(btScalar(options.hand_force_n * dt));
+  p.drive = carrier.get();
+  p.constraints.push_back(std::move(carrier));
+  for (auto& constraint : p.constraints) dynamics.addMultiBodyConstraint(constraint.get());
+  drive();
   world.set_before_step([this] { drive(); });
 }
 
 Gripper::~Gripper() {
   world_.set_before_step({});
-  world_.remove_constraints();
-  world_.remove_body(fingers_[0]);
-  world_.remove_body(fingers_[1]);
-  world_.remove_body(palm_);
+  btMultiBodyDynamicsWorld& dynamics = world_.dynamics();
+  Parts& p = *parts_;
+  for (auto& constraint : p.constraints) dynamics.removeMultiBodyConstraint(constraint.get());
+  for (auto& collider : p.colliders) dynamics.removeCollisionObject(collider.get());
+  dynamics.removeMultiBody(p.body.get());
+  for (int id : {palm_, fingers_[0], fingers_[1]}) world_.unregister_part(id);
 }
 
 void Gripper::move_to(const Eigen::Isometry3d& X_BaseHand) { X_BaseHand_ = X_BaseHand; }
 
 Eigen::Isometry3d Gripper::actual_pose() const {
-  return world_.pose(palm_) * offset(options_.palm_thickness_m / 2, 0, 0);
+  return from_bullet(parts_->body->getBaseWorldTransform()) *
+         offset(options_.geometry.palm_thickness_m / 2, 0, 0);
 }
 
 void Gripper::drive() {
-  btRigidBody& palm = world_.body(palm_);
-  const double dt = world_.options().time_step_s;
-  const Eigen::Isometry3d target = X_BaseHand_ * offset(-options_.palm_thickness_m / 2, 0, 0);
-  const Eigen::Isometry3d now = world_.pose(palm_);
-  const Eigen::Vector3d velocity = (target.translation() - now.translation()) / dt;
-  Eigen::Vector3d impulse =
-      options_.palm_mass_kg * (velocity - from_bullet(palm.getLinearVelocity()));
-  if (impulse.norm() > options_.hand_force_n * dt)
-    impulse *= options_.hand_force_n * dt / impulse.norm();
-  palm.applyCentralImpulse(to_bullet(impulse));
-  const Eigen::AngleAxisd error(target.linear() * now.linear().transpose());
-  const Eigen::Vector3d spin = error.axis() * error.angle() / dt;
-  const btVector3 wanted = to_bullet(spin) - palm.getAngularVelocity();
-  const btMatrix3x3 inertia = palm.getInvInertiaTensorWorld().inverse();
-  Eigen::Vector3d torque_impulse = from_bullet(inertia * wanted);
-  if (torque_impulse.norm() > options_.hand_torque_nm * dt)
-    torque_impulse *= options_.hand_torque_nm * dt / torque_impulse.norm();
-  palm.applyTorqueImpulse(to_bullet(torque_impulse));
+  Parts& p = *parts_;
+  const Eigen::Isometry3d target =
+      X_BaseHand_ * offset(-options_.geometry.palm_thickness_m / 2, 0, 0);
+  p.drive->setPivotInB(to_bullet(target.translation()));
+  p.drive->setFrameInB(to_bullet(target).getBasis());
+  // The arm carries the hand: cancel gravity on the palm and the fingers.
+  const btVector3 gravity = world_.dynamics().getGravity();
+  p.body->addBaseForce(-gravity * p.body->getBaseMass());
+  for (int side = 0; side < 2; ++side)
+    p.body->addLinkForce(side, -gravity * p.body->getLinkMass(side));
 }
 
 void Gripper::drive_fingers(double velocity_m_s) {
-  for (auto* slider : sliders_) slider->setTargetLinMotorVelocity(btScalar(velocity_m_s));
+  for (auto* motor : parts_->motors) motor->setVelocityTarget(btScalar(-velocity_m_s));
 }
 
+double Gripper::finger_travel_m(int side) const { return parts_->body->getJointPos(side); }
+
 double Gripper::aperture_m() const {
-  const Eigen::Vector3d a = world_.pose(fingers_[0]).translation();
-  const Eigen::Vector3d b = world_.pose(fingers_[1]).translation();
-  return (b - a).dot(X_BaseHand_.linear().col(1)) - options_.geometry.finger_width_m;
+  return options_.geometry.max_aperture_m - finger_travel_m(0) - finger_travel_m(1);
 }
 
 std::set<int> Gripper::touching(double tolerance_m) const {
   std::set<int> found;
-  for (int part : {palm_, fingers_[0], fingers_[1]})
+  for (const auto& [part, id] : touching_parts(tolerance_m)) found.insert(id);
+  return found;
+}
+
+std::vector<std::pair<std::string, int>> Gripper::touching_parts(double tolerance_m) const {
+  const std::pair<const char*, int> parts[] = {
+      {"palm", palm_}, {"finger -y", fingers_[0]}, {"finger +y", fingers_[1]}};
+  std::vector<std::pair<std::string, int>> found;
+  for (const auto& [name, part] : parts)
     for (int id : world_.touching(part, tolerance_m))
-      if (id >= 0 && world_.has(id) && world_.role(id) != BodyRole::kGripper) found.insert(id);
+      if (id >= 0 && world_.has(id) && world_.role(id) != BodyRole::kGripper)
+        found.emplace_back(name, id);
   return found;
 }
 

@@ -1,32 +1,38 @@
 #pragma once
-// The simulated parallel gripper: a free-floating palm pulled towards the commanded hand pose
-// by a force- and torque-bounded drive (like a robot's wrist that stalls against an obstacle),
-// and two fingers on prismatic joints whose motors are force-limited.
+// The simulated parallel gripper, as an articulated body in Featherstone's reduced
+// coordinates (Bullet's btMultiBody): a palm and two fingers on prismatic joints that a gear
+// keeps symmetric, as a parallel gripper's rack does. A fixed constraint with a bounded force
+// pulls the palm to the commanded hand pose (a robot's wrist that stalls against an
+// obstacle), and each finger's velocity motor squeezes with a bounded force.
+//
+// Reduced coordinates keep the finger joints exact however hard they press: the earlier
+// rigid bodies on slider constraints let the fingers and a held object slide together along
+// the closing direction and sink into curved hulls until the object popped out.
 
+#include <memory>
 #include <set>
+#include <string>
+#include <utility>
+#include <vector>
 
 #include "antipode/core/hand_geometry.hpp"
 #include "physics_world.hpp"
 
-class btSliderConstraint;
-
 namespace antipode::cells {
 
 struct GripperOptions {
-  HandGeometry geometry;           ///< finger sizes and apertures (the Baxter defaults)
-  double palm_thickness_m = 0.02;  ///< palm box behind the palm face
+  HandGeometry geometry;  ///< finger sizes, apertures and palm thickness
   double finger_mass_kg = 0.1;
-  double palm_mass_kg = 10.0;    ///< heavy like a wrist on an arm: it keeps the grip stiff
+  double palm_mass_kg = 1.0;
   double hand_force_n = 300.0;   ///< bound of the drive carrying the hand (VGN/GIGA: 300 N)
-  double hand_torque_nm = 30.0;  ///< bound of the drive's torque
-  double finger_force_n = 10.0;  ///< per finger; docs/cell.md says why not 20 N
+  double finger_force_n = 20.0;  ///< squeeze of each finger (VGN/GIGA: 20 N)
   double finger_speed_m_s = 0.1;
   double friction = 1.0;
 };
 
 /// Adds itself to a world at a hand pose (fingers fully open) and removes itself when
 /// destroyed. Hand frame as in hand_geometry.hpp: x approach, y closing, origin at the
-/// centre of the palm face.
+/// centre of the palm face. Gravity does not act on it (it is carried by the arm).
 class Gripper {
  public:
   Gripper(PhysicsWorld& world, const GripperOptions& options, const Eigen::Isometry3d& X_BaseHand);
@@ -40,27 +46,31 @@ class Gripper {
   const Eigen::Isometry3d& pose() const { return X_BaseHand_; }
   /// Where the hand is (it lags the command when it pushes against something).
   Eigen::Isometry3d actual_pose() const;
-  /// Drives both fingers: negative closes, positive opens (m/s), force-limited.
+  /// Drives the fingers: negative closes, positive opens (m/s), force-limited.
   void drive_fingers(double velocity_m_s);
+  /// How far finger `side` (0: -y, 1: +y) has moved in from fully open.
+  double finger_travel_m(int side) const;
   /// Inner distance between the fingers now.
   double aperture_m() const;
 
   /// Non-gripper bodies touching any part of the gripper now.
   std::set<int> touching(double tolerance_m = 0.0) const;
+  /// The same, with the part that touches each: ("palm" | "finger -y" | "finger +y", id).
+  std::vector<std::pair<std::string, int>> touching_parts(double tolerance_m = 0.0) const;
   /// Objects touching both fingers now.
   std::set<int> pinched(double tolerance_m) const;
 
  private:
-  /// One step of the palm's drive: the impulse that would reach the command in one step,
-  /// clipped to the force and torque bounds.
+  struct Parts;
+  /// Before every physics step: the drive's target and the gravity compensation.
   void drive();
 
   PhysicsWorld& world_;
   GripperOptions options_;
   Eigen::Isometry3d X_BaseHand_;
+  std::unique_ptr<Parts> parts_;
   int palm_ = -1;
   int fingers_[2] = {-1, -1};  // at -y, at +y
-  btSliderConstraint* sliders_[2] = {nullptr, nullptr};
 };
 
 }  // namespace antipode::cells

@@ -3,8 +3,11 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <map>
+#include <mutex>
 
 #include "antipode/core/error.hpp"
+#include "convex_decomposition.hpp"
 #include "mesh_io.hpp"
 
 namespace fs = std::filesystem;
@@ -23,6 +26,29 @@ double mass_of(const TriangleMesh& mesh, double density) {
   const double box = double(mesh.bounds().volume());
   if (!(volume > 0.05 * box)) volume = 0.5 * box;
   return std::max(0.005, volume * density);
+}
+
+// A visual mesh as read and its convex decomposition, both at the file's scale.
+struct MeshShapes {
+  TriangleMesh visual;
+  std::vector<TriangleMesh> hulls;
+};
+
+// Reading and decomposing a 16k-triangle scan takes a good part of a second, and scenes are
+// rebuilt for every seed: each file is read and decomposed once per process.
+const MeshShapes& mesh_shapes(const std::string& path) {
+  static std::mutex mutex;
+  static std::map<std::string, MeshShapes> cache;
+  const std::lock_guard<std::mutex> lock(mutex);
+  auto it = cache.find(path);
+  if (it == cache.end()) {
+    MeshShapes shapes;
+    shapes.visual = read_obj(path);
+    shapes.hulls = convex_decomposition(shapes.visual);
+    if (shapes.hulls.empty()) throw Error("mesh '" + path + "' encloses no volume");
+    it = cache.emplace(path, std::move(shapes)).first;
+  }
+  return it->second;
 }
 
 }  // namespace
@@ -45,12 +71,10 @@ ObjectModel load_mesh_object(const std::string& folder, const std::string& name,
                              double density, double friction) {
   const fs::path dir = fs::path(folder) / name;
   const bool nested = fs::exists(dir / "visual.obj");
-  TriangleMesh visual = read_obj(nested ? (dir / "visual.obj").string() : dir.string() + ".obj");
-  std::vector<TriangleMesh> hulls;
-  if (nested && fs::exists(dir / "collision.stl"))
-    hulls = connected_pieces(read_binary_stl((dir / "collision.stl").string()));
-  else
-    hulls = {visual};
+  const MeshShapes& shapes =
+      mesh_shapes(nested ? (dir / "visual.obj").string() : dir.string() + ".obj");
+  TriangleMesh visual = shapes.visual;
+  std::vector<TriangleMesh> hulls = shapes.hulls;
   const Eigen::Affine3f scaling(Eigen::Scaling(float(scale)));
   visual.transform(scaling);
   for (auto& hull : hulls) hull.transform(scaling);

@@ -1,5 +1,8 @@
 #include "physics_world.hpp"
 
+#include <BulletDynamics/Featherstone/btMultiBodyConstraintSolver.h>
+#include <BulletDynamics/Featherstone/btMultiBodyDynamicsWorld.h>
+
 #include <algorithm>
 
 #include "antipode/core/error.hpp"
@@ -13,8 +16,8 @@ struct PhysicsWorld::Engine {
   btDefaultCollisionConfiguration configuration;
   btCollisionDispatcher dispatcher{&configuration};
   btDbvtBroadphase broadphase;
-  btSequentialImpulseConstraintSolver solver;
-  btDiscreteDynamicsWorld world{&dispatcher, &broadphase, &solver, &configuration};
+  btMultiBodyConstraintSolver solver;
+  btMultiBodyDynamicsWorld world{&dispatcher, &broadphase, &solver, &configuration};
 };
 
 struct PhysicsWorld::Entry {
@@ -22,7 +25,8 @@ struct PhysicsWorld::Entry {
   std::string name;
   ShapeHolder shape;
   std::unique_ptr<btDefaultMotionState> motion;
-  std::unique_ptr<btRigidBody> body;
+  std::unique_ptr<btRigidBody> body;           // null for a registered part
+  btCollisionObject* object = nullptr;         // the body, or the registered part
   std::shared_ptr<const TriangleMesh> visual;  // null = not rendered
 };
 
@@ -54,22 +58,41 @@ PhysicsWorld::PhysicsWorld(const PhysicsOptions& options)
 }
 
 PhysicsWorld::~PhysicsWorld() {
-  remove_constraints();
-  for (auto& [id, entry] : bodies_) engine_->world.removeRigidBody(entry->body.get());
+  for (auto& [id, entry] : bodies_)
+    if (entry->body) engine_->world.removeRigidBody(entry->body.get());
 }
 
 int PhysicsWorld::insert(std::unique_ptr<Entry> entry) {
   const int id = next_id_++;
+  entry->object = entry->body.get();
   entry->body->setUserIndex(id);
   engine_->world.addRigidBody(entry->body.get());
   bodies_[id] = std::move(entry);
   return id;
 }
 
-int PhysicsWorld::add_fixture_box(const Eigen::Isometry3d& pose, const Eigen::Vector3d& half,
-                                  double friction, bool visible) {
+btMultiBodyDynamicsWorld& PhysicsWorld::dynamics() { return engine_->world; }
+
+int PhysicsWorld::register_part(btCollisionObject* object, BodyRole role, const std::string& name) {
   auto entry = std::make_unique<Entry>();
-  entry->name = "fixture";
+  entry->role = role;
+  entry->name = name;
+  entry->object = object;
+  const int id = next_id_++;
+  object->setUserIndex(id);
+  bodies_[id] = std::move(entry);
+  return id;
+}
+
+void PhysicsWorld::unregister_part(int id) {
+  auto it = bodies_.find(id);
+  if (it != bodies_.end() && !it->second->body) bodies_.erase(it);
+}
+
+int PhysicsWorld::add_fixture_box(const std::string& name, const Eigen::Isometry3d& pose,
+                                  const Eigen::Vector3d& half, double friction, bool visible) {
+  auto entry = std::make_unique<Entry>();
+  entry->name = name;
   entry->shape = make_box_shape(half, options_.margin_m);
   entry->motion = std::make_unique<btDefaultMotionState>(to_bullet(pose));
   entry->body = make_body(entry->shape, entry->motion.get(), 0.0, friction);
@@ -88,41 +111,24 @@ int PhysicsWorld::add_object(const ObjectModel& model, const Eigen::Isometry3d& 
   return insert(std::move(entry));
 }
 
-int PhysicsWorld::add_gripper_box(const Eigen::Isometry3d& pose, const Eigen::Vector3d& half,
-                                  double mass_kg, double friction) {
-  auto entry = std::make_unique<Entry>();
-  entry->role = BodyRole::kGripper;
-  entry->name = "gripper";
-  entry->shape = make_box_shape(half, options_.margin_m);
-  entry->motion = std::make_unique<btDefaultMotionState>(to_bullet(pose));
-  entry->body = make_body(entry->shape, entry->motion.get(), mass_kg, friction);
-  btRigidBody& body = *entry->body;
-  body.setActivationState(DISABLE_DEACTIVATION);
-  body.setFlags(body.getFlags() | BT_DISABLE_WORLD_GRAVITY);
-  return insert(std::move(entry));
-}
-
 void PhysicsWorld::remove_body(int id) {
   auto it = bodies_.find(id);
-  if (it == bodies_.end()) return;
+  if (it == bodies_.end() || !it->second->body) return;
   engine_->world.removeRigidBody(it->second->body.get());
   bodies_.erase(it);
 }
 
-void PhysicsWorld::add_constraint(btTypedConstraint* constraint) {
-  constraints_.emplace_back(constraint);
-  engine_->world.addConstraint(constraint, true);
-}
-
-void PhysicsWorld::remove_constraints() {
-  for (auto& c : constraints_) engine_->world.removeConstraint(c.get());
-  constraints_.clear();
-}
-
 btRigidBody& PhysicsWorld::body(int id) const {
   auto it = bodies_.find(id);
-  if (it == bodies_.end()) throw Error("physics body " + std::to_string(id) + " does not exist");
+  if (it == bodies_.end() || !it->second->body)
+    throw Error("physics body " + std::to_string(id) + " does not exist");
   return *it->second->body;
+}
+
+const btCollisionObject& PhysicsWorld::object(int id) const {
+  auto it = bodies_.find(id);
+  if (it == bodies_.end()) throw Error("physics body " + std::to_string(id) + " does not exist");
+  return *it->second->object;
 }
 
 BodyRole PhysicsWorld::role(int id) const { return bodies_.at(id)->role; }
@@ -136,7 +142,7 @@ std::vector<int> PhysicsWorld::ids(BodyRole role) const {
 }
 
 Eigen::Isometry3d PhysicsWorld::pose(int id) const {
-  return from_bullet(body(id).getWorldTransform());
+  return from_bullet(object(id).getWorldTransform());
 }
 
 void PhysicsWorld::step(int steps) {
@@ -178,23 +184,45 @@ std::set<std::pair<int, int>> PhysicsWorld::contacts(double tolerance_m) const {
   return pairs;
 }
 
-std::set<int> PhysicsWorld::touching(int id, double tolerance_m) const {
-  struct Collector : btCollisionWorld::ContactResultCallback {
-    double tolerance;
-    std::set<int> found;
-    btScalar addSingleResult(btManifoldPoint& point, const btCollisionObjectWrapper* a, int, int,
-                             const btCollisionObjectWrapper* b, int, int) override {
-      if (point.getDistance() <= tolerance) {
-        found.insert(id_of(a->getCollisionObject()));
-        found.insert(id_of(b->getCollisionObject()));
-      }
-      return 0;
+namespace {
+
+// Collects the ids of the bodies a contact test finds within `tolerance` of its object.
+struct ContactCollector : btCollisionWorld::ContactResultCallback {
+  explicit ContactCollector(double tolerance_m) : tolerance(tolerance_m) {
+    m_closestDistanceThreshold = btScalar(std::max(0.0, tolerance_m));
+  }
+  btScalar addSingleResult(btManifoldPoint& point, const btCollisionObjectWrapper* a, int, int,
+                           const btCollisionObjectWrapper* b, int, int) override {
+    if (point.getDistance() <= tolerance) {
+      found.insert(id_of(a->getCollisionObject()));
+      found.insert(id_of(b->getCollisionObject()));
     }
-  } collector;
-  collector.tolerance = tolerance_m;
-  collector.m_closestDistanceThreshold = btScalar(std::max(0.0, tolerance_m));
-  engine_->world.contactTest(&body(id), collector);
+    return 0;
+  }
+  double tolerance;
+  std::set<int> found;
+};
+
+}  // namespace
+
+std::set<int> PhysicsWorld::touching(int id, double tolerance_m) const {
+  ContactCollector collector(tolerance_m);
+  engine_->world.contactTest(const_cast<btCollisionObject*>(&object(id)), collector);
   collector.found.erase(id);
+  return collector.found;
+}
+
+std::set<int> PhysicsWorld::overlapping(const Eigen::Isometry3d& pose,
+                                        const Eigen::Vector3d& half_extents_m) const {
+  btBoxShape box(to_bullet(half_extents_m));
+  box.setMargin(0.0f);
+  btCollisionObject probe;
+  probe.setCollisionShape(&box);
+  probe.setWorldTransform(to_bullet(pose));
+  probe.setUserIndex(-1);
+  ContactCollector collector(0.0);
+  engine_->world.contactTest(&probe, collector);
+  collector.found.erase(-1);
   return collector.found;
 }
 

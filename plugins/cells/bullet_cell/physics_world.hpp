@@ -1,6 +1,8 @@
 #pragma once
 // One Bullet world (Bullet is not thread-safe across a shared world: one per cell instance).
-// Bodies are named by integer ids that stay valid until removed.
+// Bodies are named by integer ids that stay valid until removed. The world is Bullet's
+// multibody world, so articulated bodies (the gripper, Featherstone's reduced coordinates)
+// live beside the rigid ones.
 
 #include <functional>
 #include <map>
@@ -14,9 +16,9 @@
 #include "object_model.hpp"
 
 class btRigidBody;
+class btCollisionObject;
 class btCollisionShape;
-class btDiscreteDynamicsWorld;
-class btTypedConstraint;
+class btMultiBodyDynamicsWorld;
 
 namespace antipode::cells {
 
@@ -35,17 +37,21 @@ class PhysicsWorld {
   PhysicsWorld(const PhysicsWorld&) = delete;
   PhysicsWorld& operator=(const PhysicsWorld&) = delete;
 
-  /// A static box (table, box walls), rendered unless `visible` is false.
-  int add_fixture_box(const Eigen::Isometry3d& pose, const Eigen::Vector3d& half_extents_m,
-                      double friction, bool visible = true);
+  /// A static box named `name` (the table, a box wall), rendered unless `visible` is false.
+  int add_fixture_box(const std::string& name, const Eigen::Isometry3d& pose,
+                      const Eigen::Vector3d& half_extents_m, double friction, bool visible = true);
   int add_object(const ObjectModel& model, const Eigen::Isometry3d& pose);
-  /// A box body of the gripper, dynamic and without gravity.
-  int add_gripper_box(const Eigen::Isometry3d& pose, const Eigen::Vector3d& half_extents_m,
-                      double mass_kg, double friction);
   void remove_body(int id);
-  void add_constraint(btTypedConstraint* constraint);  // the world takes ownership
-  void remove_constraints();
 
+  /// The Bullet world itself, for parts that manage their own Bullet objects (the gripper
+  /// adds its multibody and constraints here and removes them before it is destroyed).
+  btMultiBodyDynamicsWorld& dynamics();
+  /// Gives `object` (owned by the caller and already in dynamics()) an id, a role and a
+  /// name, so that contact queries report it; unregister_part() before it is destroyed.
+  int register_part(btCollisionObject* object, BodyRole role, const std::string& name);
+  void unregister_part(int id);
+
+  /// The rigid body `id`; throws antipode::Error for an unknown id or a registered part.
   btRigidBody& body(int id) const;
   BodyRole role(int id) const;
   bool has(int id) const { return bodies_.count(id) != 0; }
@@ -66,6 +72,10 @@ class PhysicsWorld {
   std::set<std::pair<int, int>> contacts(double tolerance_m = 0.0) const;
   /// Ids of bodies touching body `id` now (a fresh collision query, no stepping).
   std::set<int> touching(int id, double tolerance_m = 0.0) const;
+  /// Ids of bodies overlapping the box of half extents `half_extents_m` at `pose` now (a
+  /// fresh collision query; the box is not part of the world).
+  std::set<int> overlapping(const Eigen::Isometry3d& pose,
+                            const Eigen::Vector3d& half_extents_m) const;
   /// The deepest interpenetration (m, >= 0) between any two bodies after the last step.
   double deepest_penetration() const;
 
@@ -83,8 +93,9 @@ class PhysicsWorld {
   PhysicsOptions options_;
   struct Engine;
   std::unique_ptr<Engine> engine_;
+  const btCollisionObject& object(int id) const;
+
   std::map<int, std::unique_ptr<Entry>> bodies_;
-  std::vector<std::unique_ptr<btTypedConstraint>> constraints_;
   std::function<void()> before_step_;
   int next_id_ = 0;
   long steps_ = 0;

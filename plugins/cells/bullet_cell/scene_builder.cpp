@@ -16,7 +16,7 @@ Eigen::Isometry3d translation(double x, double y, double z) {
 
 void add_table_and_box(const SceneSpec& spec, PhysicsWorld& world) {
   const TableSpec& t = spec.table;
-  world.add_fixture_box(translation(t.center_m.x(), t.center_m.y(), t.top_z_m - 0.025),
+  world.add_fixture_box("table", translation(t.center_m.x(), t.center_m.y(), t.top_z_m - 0.025),
                         {t.size_m.x() / 2, t.size_m.y() / 2, 0.025}, t.friction);
   if (!spec.box.present) return;
   const BoxSpec& b = spec.box;
@@ -24,9 +24,11 @@ void add_table_and_box(const SceneSpec& spec, PhysicsWorld& world) {
   const double th = b.wall_thickness_m / 2, hz = b.wall_height_m / 2;
   const double z = t.top_z_m + hz;
   for (int side : {-1, 1}) {
-    world.add_fixture_box(translation(b.center_m.x() + side * (hx + th), b.center_m.y(), z),
+    world.add_fixture_box("box wall",
+                          translation(b.center_m.x() + side * (hx + th), b.center_m.y(), z),
                           {th, hy + 2 * th, hz}, t.friction);
-    world.add_fixture_box(translation(b.center_m.x(), b.center_m.y() + side * (hy + th), z),
+    world.add_fixture_box("box wall",
+                          translation(b.center_m.x(), b.center_m.y() + side * (hy + th), z),
                           {hx, th, hz}, t.friction);
   }
 }
@@ -158,6 +160,11 @@ std::vector<int> build_scene(const SceneSpec& spec, std::uint64_t seed, MeshCach
       pose = *entry->pose;
       if (entry->rest_on_table)
         pose.translation().z() = spec.table.top_z_m + half_height(models[i], pose.linear()) + 0.001;
+    } else if (entry && entry->orientation) {
+      pose = Eigen::Isometry3d::Identity();
+      pose.linear() = *entry->orientation;
+      pose.translation() << spec.region.center(),
+          spec.table.top_z_m + half_height(models[i], pose.linear()) + 0.001;
     } else {
       pose = placed_pose(spec, models[i], random, taken);
     }

@@ -72,34 +72,6 @@ void require_known_shape(const Parameters& p, const std::string& key, const std:
     p.fail(key, unknown_shape_message(shape));
 }
 
-ObjectEntry parse_object(const Parameters& p, const std::string& scene_file) {
-  ObjectEntry e;
-  e.shape = p.get<std::string>("shape", "");
-  e.size_m = p.get<std::vector<double>>("size_m", {});
-  e.mesh = p.get<std::string>("mesh", "");
-  e.folder = p.get<std::string>("folder", "");
-  if (e.shape.empty() == e.mesh.empty())
-    p.fail("shape", "an object needs exactly one of 'shape' and 'mesh'");
-  if (!e.shape.empty()) require_known_shape(p, "shape", e.shape);
-  if (!e.mesh.empty()) {
-    if (e.folder.empty()) p.fail("folder", "a mesh object needs 'folder'");
-    e.folder = resolve_path(e.folder, scene_file);
-  }
-  e.scale = positive(p, "scale", 1.0);
-  e.density_kg_m3 = positive(p, "density_kg_m3", e.density_kg_m3);
-  e.friction = friction_at(p, e.friction);
-  const Eigen::Vector3d rpy = vector_at(p, "rpy_rad", 3, Eigen::Vector3d::Zero());
-  if (p.has("position_m")) {
-    const auto xyz = p.require<std::vector<double>>("position_m");
-    if (xyz.size() != 2 && xyz.size() != 3)
-      p.fail("position_m", "'position_m' needs [x, y] (resting on the table) or [x, y, z]");
-    e.rest_on_table = xyz.size() == 2;
-    e.pose = pose_from({xyz[0], xyz[1], xyz.size() == 3 ? xyz[2] : 0.0}, rpy);
-  }
-  p.reject_unknown();
-  return e;
-}
-
 RandomObjects parse_random(const Parameters& p, const std::string& scene_file) {
   RandomObjects r;
   r.count = p.require<int>("count");
@@ -148,6 +120,36 @@ Placement parse_placement(const Parameters& p) {
 }
 
 }  // namespace
+
+ObjectEntry parse_object(const Parameters& p, const std::string& scene_file) {
+  ObjectEntry e;
+  e.shape = p.get<std::string>("shape", "");
+  e.size_m = p.get<std::vector<double>>("size_m", {});
+  e.mesh = p.get<std::string>("mesh", "");
+  e.folder = p.get<std::string>("folder", "");
+  if (e.shape.empty() == e.mesh.empty())
+    p.fail("shape", "an object needs exactly one of 'shape' and 'mesh'");
+  if (!e.shape.empty()) require_known_shape(p, "shape", e.shape);
+  if (!e.mesh.empty()) {
+    if (e.folder.empty()) p.fail("folder", "a mesh object needs 'folder'");
+    e.folder = resolve_path(e.folder, scene_file);
+  }
+  e.scale = positive(p, "scale", 1.0);
+  e.density_kg_m3 = positive(p, "density_kg_m3", e.density_kg_m3);
+  e.friction = friction_at(p, e.friction);
+  const Eigen::Vector3d rpy = vector_at(p, "rpy_rad", 3, Eigen::Vector3d::Zero());
+  if (p.has("position_m")) {
+    const auto xyz = p.require<std::vector<double>>("position_m");
+    if (xyz.size() != 2 && xyz.size() != 3)
+      p.fail("position_m", "'position_m' needs [x, y] (resting on the table) or [x, y, z]");
+    e.rest_on_table = xyz.size() == 2;
+    e.pose = pose_from({xyz[0], xyz[1], xyz.size() == 3 ? xyz[2] : 0.0}, rpy);
+  } else if (p.has("rpy_rad")) {
+    e.orientation = pose_from(Eigen::Vector3d::Zero(), rpy).linear();
+  }
+  p.reject_unknown();
+  return e;
+}
 
 std::string resolve_path(const std::string& path, const std::string& scene_file) {
   if (fs::path(path).is_absolute() || fs::exists(path) || scene_file.empty()) return path;

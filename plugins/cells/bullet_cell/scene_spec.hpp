@@ -46,6 +46,9 @@ struct ObjectEntry {
   /// Explicit pose; with `rest_on_table` only x, y and the orientation are used.
   std::optional<Eigen::Isometry3d> pose;
   bool rest_on_table = false;
+  /// An orientation without a position (`rpy_rad` alone): set down on the table at the
+  /// centre of the scene's region, turned so.
+  std::optional<Eigen::Matrix3d> orientation;
 };
 
 /// Objects drawn at random: procedural `shapes`, or meshes from `folder` (all or `names`).
@@ -78,6 +81,9 @@ struct SceneSpec {
 SceneSpec read_scene(const std::string& path);
 /// Parses a scene from parameters (the mapping of a scene file).
 SceneSpec parse_scene(const Parameters& params);
+/// Parses one listed object (an item of a scene's `objects`); relative mesh folders are
+/// resolved against `scene_file`.
+ObjectEntry parse_object(const Parameters& params, const std::string& scene_file);
 /// The default cameras: left and right of the table like the paper's two sensors, plus a
 /// top and a front view.
 std::vector<CameraSpec> default_cameras(const TableSpec& table);

@@ -4,7 +4,11 @@
 #include <array>
 #include <numeric>
 
+#include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
+
+#include "antipode/core/atomic_file.hpp"
+#include "antipode/core/error.hpp"
 
 namespace antipode::pictures {
 namespace {
@@ -62,6 +66,34 @@ void draw_hand(cv::Mat& image, const OrthoView& view, const HandBody& body, cons
                const cv::Scalar& colour, int thickness) {
   for (const HandBox* box : {&body.finger_minus_y, &body.finger_plus_y, &body.palm}) {
     draw_box(image, view, *box, hand.X_FrameHand, colour, thickness);
+  }
+}
+
+Eigen::Vector3d default_up(const Cloud& cloud) {
+  return cloud.frame == "sensor" ? Eigen::Vector3d(0, -1, 0) : Eigen::Vector3d(0, 0, 1);
+}
+
+OrthoView view_from_sensor(const Cloud& cloud, const Eigen::Vector3d& target,
+                           const Eigen::Vector3d& up, double extent_m, int size_px) {
+  Eigen::Vector3d origin = target + Eigen::Vector3d::UnitZ();
+  if (!cloud.view_origins_m.empty()) origin = cloud.view_origins_m[0].cast<double>();
+  Eigen::Vector3d forward = target - origin;
+  if (forward.norm() < 1e-6) forward = Eigen::Vector3d::UnitZ();
+  return OrthoView(forward, up, target, extent_m, size_px);
+}
+
+void write_png(const std::string& file, const cv::Mat& image) {
+  write_file_atomically(file, [&](const std::string& temporary) {
+    if (!cv::imwrite(temporary, image)) throw Error("OpenCV could not write a PNG");
+  });
+}
+
+void caption(cv::Mat& image, const std::vector<std::string>& lines) {
+  int y = 22;
+  for (const std::string& line : lines) {
+    cv::putText(image, line, {10, y}, cv::FONT_HERSHEY_SIMPLEX, 0.5, cv::Scalar(0, 0, 0), 1,
+                cv::LINE_AA);
+    y += 20;
   }
 }
 

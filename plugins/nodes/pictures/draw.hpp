@@ -1,6 +1,7 @@
 #pragma once
 // Drawing clouds and grippers into an OpenCV image through an OrthoView.
 
+#include <string>
 #include <vector>
 
 #include <opencv2/core.hpp>
@@ -18,5 +19,19 @@ void draw_cloud(cv::Mat& image, const OrthoView& view, const Cloud& cloud);
 /// Draws the hand's fingers and palm as box outlines.
 void draw_hand(cv::Mat& image, const OrthoView& view, const HandBody& body, const Hand& hand,
                const cv::Scalar& colour, int thickness);
+
+/// "Up" in pictures of `cloud`: -y for a cloud in frame "sensor", +z otherwise.
+Eigen::Vector3d default_up(const Cloud& cloud);
+
+/// A view of `target` from the cloud's first sensor (from +z when it has none), `extent_m`
+/// from the centre to the picture's edge.
+OrthoView view_from_sensor(const Cloud& cloud, const Eigen::Vector3d& target,
+                           const Eigen::Vector3d& up, double extent_m, int size_px);
+
+/// Writes `image` to the PNG `file` atomically (see atomic_file.hpp); throws antipode::Error.
+void write_png(const std::string& file, const cv::Mat& image);
+
+/// Writes `text` at the top left of `image`, one line per item.
+void caption(cv::Mat& image, const std::vector<std::string>& lines);
 
 }  // namespace antipode::pictures

@@ -1,13 +1,10 @@
 #include <algorithm>
 
-#include <opencv2/imgcodecs.hpp>
-#include <opencv2/imgproc.hpp>
-
 #include "antipode/bt/action_node.hpp"
 #include "antipode/bt/node_registry.hpp"
-#include "antipode/core/atomic_file.hpp"
 #include "antipode/plugin/abi.hpp"
 #include "draw.hpp"
+#include "picture_nodes.hpp"
 
 namespace antipode::pictures {
 namespace {
@@ -55,7 +52,6 @@ class DrawGrasps final : public bt::SyncActionNode {
  public:
   using SyncActionNode::SyncActionNode;
   static bt::NodeManifest manifest() {
-    const HandGeometry baxter;
     return {"DrawGrasps",
             bt::NodeCategory::kAction,
             {bt::input_port<HandSetPtr>("hands", "hands and the cloud they came from"),
@@ -64,11 +60,7 @@ class DrawGrasps final : public bt::SyncActionNode {
              bt::input_port<int>("size_px", 700, "side of each of the two square views"),
              bt::input_port<std::vector<double>>(
                  "up", std::vector<double>{},
-                 "up direction [x, y, z]; empty = -y for frame 'sensor', else +z"),
-             bt::input_port<double>("max_aperture_m", baxter.max_aperture_m, "drawn opening"),
-             bt::input_port<double>("finger_width_m", baxter.finger_width_m, "drawn finger"),
-             bt::input_port<double>("depth_m", baxter.depth_m, "drawn finger length"),
-             bt::input_port<double>("height_m", baxter.height_m, "drawn finger height")},
+                 "up direction [x, y, z]; empty = -y for frame 'sensor', else +z")},
             0,
             0,
             "Draws a cloud with hands as grippers into a PNG (two viewpoints).",
@@ -86,19 +78,14 @@ class DrawGrasps final : public bt::SyncActionNode {
     const auto hands =
         best_hands(*set, static_cast<std::size_t>(std::max(0, get_input<int>("max_hands"))));
     const auto [target, extent_m] = framing(*set->cloud, hands);
-    Eigen::Vector3d origin = Eigen::Vector3d::Zero();
-    if (!set->cloud->view_origins_m.empty()) origin = set->cloud->view_origins_m[0].cast<double>();
-    Eigen::Vector3d forward = target - origin;
-    if (forward.norm() < 1e-6) forward = Eigen::Vector3d::UnitZ();
-    const OrthoView sensor_view(forward, up_direction(*set->cloud), target, extent_m, size_px);
+    const OrthoView sensor_view =
+        view_from_sensor(*set->cloud, target, up_direction(*set->cloud), extent_m, size_px);
     cv::Mat image(size_px, 2 * size_px, CV_8UC3, cv::Scalar(255, 255, 255));
     cv::Mat left = image(cv::Rect(0, 0, size_px, size_px));
     cv::Mat right = image(cv::Rect(size_px, 0, size_px, size_px));
     render(left, sensor_view, *set, hands, "sensor view");
     render(right, sensor_view.side_view(), *set, hands, "side view");
-    write_file_atomically(file, [&](const std::string& temporary) {
-      if (!cv::imwrite(temporary, image)) throw Error("OpenCV could not write a PNG");
-    });
+    write_png(file, image);
     log("picture of " + std::to_string(hands.size()) + " hands written to " + file);
     return bt::Status::kSuccess;
   }
@@ -108,23 +95,13 @@ class DrawGrasps final : public bt::SyncActionNode {
     const auto up = get_input<std::vector<double>>("up");
     if (up.size() == 3) return {up[0], up[1], up[2]};
     if (!up.empty()) fail("up", "up must have 3 numbers");
-    return cloud.frame == "sensor" ? Eigen::Vector3d(0, -1, 0) : Eigen::Vector3d(0, 0, 1);
-  }
-
-  HandBody body() const {
-    HandGeometry geometry;
-    geometry.max_aperture_m = get_input<double>("max_aperture_m");
-    geometry.finger_width_m = get_input<double>("finger_width_m");
-    geometry.depth_m = get_input<double>("depth_m");
-    geometry.height_m = get_input<double>("height_m");
-    geometry.outer_diameter_m = geometry.max_aperture_m + 2 * geometry.finger_width_m;
-    return make_hand_body(geometry, geometry.finger_width_m);
+    return default_up(cloud);
   }
 
   void render(cv::Mat& image, const OrthoView& view, const HandSet& set,
               const std::vector<const Hand*>& hands, const std::string& title) const {
     draw_cloud(image, view, *set.cloud);
-    const HandBody hand_body = body();
+    const HandBody hand_body = make_hand_body(set.geometry);
     // Worst first so the best ends on top; the best in green, the others in orange.
     for (std::size_t i = hands.size(); i-- > 0;) {
       const bool best = i == 0;
@@ -134,20 +111,25 @@ class DrawGrasps final : public bt::SyncActionNode {
     const auto candidates = std::count_if(set.hands.begin(), set.hands.end(), [](const Hand& h) {
       return h.rejection == Rejection::kNone;
     });
-    std::string caption = title + ": best " + std::to_string(hands.size()) + " of " +
-                          std::to_string(candidates) + " hands";
+    std::string text = title + ": best " + std::to_string(hands.size()) + " of " +
+                       std::to_string(candidates) + " hands";
     if (static_cast<std::size_t>(candidates) != set.hands.size()) {
-      caption += " (" + std::to_string(set.hands.size()) + " before classification)";
+      text += " (" + std::to_string(set.hands.size()) + " before classification)";
     }
-    cv::putText(image, caption, {10, 24}, cv::FONT_HERSHEY_SIMPLEX, 0.6, cv::Scalar(0, 0, 0), 1,
-                cv::LINE_AA);
+    caption(image, {text});
   }
 };
 
+}  // namespace
+
 void register_draw_grasps(bt::NodeRegistry& registry) { registry.register_node<DrawGrasps>(); }
+
+namespace {
 
 const PluginFactory kFactories[] = {
     {"node", "DrawGrasps", "draws a cloud and hands into a PNG", nullptr, &register_draw_grasps},
+    {"node", "DrawAttempt", "draws a grasp attempt: the planned hand and the hand at closing",
+     nullptr, &register_draw_attempt},
 };
 
 }  // namespace

@@ -5,7 +5,7 @@
 namespace antipode::pipeline {
 namespace {
 
-/// Ranks grasps with a selector and outputs the ranking and the best; fails on none.
+/// Selects and ranks grasps with a selector; fails when it finds none.
 class SelectGrasps final : public bt::SyncActionNode {
  public:
   using SyncActionNode::SyncActionNode;
@@ -14,8 +14,11 @@ class SelectGrasps final : public bt::SyncActionNode {
             bt::NodeCategory::kAction,
             {bt::component_port<GraspSelector>("selector", "the grasp selector to use"),
              bt::input_port<HandSetPtr>("hands", "classified hands"),
-             bt::output_port<std::vector<Hand>>("grasps", "grasps worth trying, best first"),
-             bt::output_port<Hand>("best", "the first of `grasps`")},
+             bt::output_port<HandSetPtr>(
+                 "grasps",
+                 "the selection: grasps to try first, best first, then every other "
+                 "hand with the reason it was not chosen"),
+             bt::output_port<Hand>("best", "the best grasp")},
             0,
             0,
             "Selects and ranks grasps (paper section 5.1).",
@@ -24,15 +27,19 @@ class SelectGrasps final : public bt::SyncActionNode {
 
  protected:
   bt::Status tick() override {
-    std::vector<Hand> grasps =
-        component<GraspSelector>("selector").select(*get_input<HandSetPtr>("hands"));
-    log(std::to_string(grasps.size()) + " grasps selected");
-    if (grasps.empty()) {
+    auto selection = std::make_shared<const HandSet>(
+        component<GraspSelector>("selector").select(*get_input<HandSetPtr>("hands")));
+    std::size_t chosen = 0;
+    while (chosen < selection->hands.size() &&
+           selection->hands[chosen].rejection == Rejection::kNone)
+      ++chosen;
+    log(std::to_string(chosen) + " grasps selected");
+    set_output("grasps", HandSetPtr(selection));
+    if (chosen == 0) {
       set_failure_reason("the selector found no grasp");
       return bt::Status::kFailure;
     }
-    set_output("best", grasps.front());
-    set_output("grasps", std::move(grasps));
+    set_output("best", selection->hands.front());
     return bt::Status::kSuccess;
   }
 };

@@ -69,6 +69,7 @@ HandGeometry hand_geometry(const Parameters& params) {
   h.init_bite_m = number(p, "init_bite_m", h.init_bite_m, 0.0, false);
   h.min_aperture_m = number(p, "min_aperture_m", h.min_aperture_m, 0.0, false);
   h.max_aperture_m = number(p, "max_aperture_m", h.max_aperture_m, 0.0, false);
+  h.palm_thickness_m = number(p, "palm_thickness_m", h.palm_thickness_m, 0.0, true);
   p.reject_unknown();
   try {
     h.validate();
@@ -82,8 +83,8 @@ SupportPlaneMode support_mode(const Parameters& params) {
   const std::string value = params.get<std::string>("support_plane", "auto");
   if (value == "auto") return SupportPlaneMode::kAuto;
   if (value == "none") return SupportPlaneMode::kNone;
-  params.fail("support_plane", "parameter 'support_plane' must be 'auto' or 'none', got '" +
-                                   value + "'");
+  params.fail("support_plane",
+              "parameter 'support_plane' must be 'auto' or 'none', got '" + value + "'");
   return SupportPlaneMode::kNone;
 }
 
@@ -95,7 +96,6 @@ HandSearchParameters search_parameters(const Parameters& params) {
   s.frame.min_points = static_cast<std::size_t>(integer(params, "min_neighbours", 10, 9));
   s.orientations = integer(params, "orientations", s.orientations, 1);
   s.positions = integer(params, "positions", s.positions, 1);
-  s.palm_thickness_m = number(params, "palm_thickness_m", s.palm_thickness_m, 0.0, true);
   s.min_bite_m = number(params, "min_bite_m", s.min_bite_m, 0.0, true);
   s.clearance_m = number(params, "clearance_m", s.clearance_m, 0.0, true);
   s.max_view_angle_deg = number(params, "max_view_angle_deg", s.max_view_angle_deg, 0.0, false);

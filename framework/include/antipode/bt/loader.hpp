@@ -28,6 +28,9 @@ struct LoadOptions {
   /// "component.param" (or "component.a.b") sets a component parameter, with `value` read as
   /// YAML; a plain "key" sets the string entry {key} on the main tree's blackboard.
   std::vector<std::pair<std::string, std::string>> overrides;
+  /// The tree to run instead of the file's `main` ("" = `main`); its blackboard is then the
+  /// main blackboard (where `--set key=value` entries go). An unknown name is an error.
+  std::string main_tree;
 };
 
 /// Reads, validates and builds the tree file at `path`: creates its components (through

@@ -26,6 +26,11 @@ enum class Rejection : std::uint8_t {
   kNoIk,
   kNoPlan,
   kOutOfWorkspace,
+  kBelowSupport,   ///< the body or its approach from the stand-off reaches below the support
+  kApertureLimit,  ///< the object is as wide as the opening or narrower than the closed hand
+  kClustered,      ///< merged into a cluster's grasp (see Hand::merged_into)
+  kSmallCluster,   ///< in a cluster with fewer hands than the selector's minimum
+  kNotSelected,    ///< acceptable, but ranked below the grasps the selector returns
 };
 
 const char* to_string(HandLabel label);
@@ -43,6 +48,9 @@ struct Hand {
   Rejection rejection = Rejection::kNone;
   std::int32_t sample_index = -1;            ///< which surface sample produced this hand
   std::vector<std::int32_t> closing_points;  ///< indices into the cloud, inside the closing region
+  /// Selection only: for a hand rejected as kClustered, the index (in the selection's hand
+  /// list) of the grasp it was merged into; -1 otherwise.
+  std::int32_t merged_into = -1;
 
   Eigen::Vector3d approach() const { return X_FrameHand.linear().col(0); }
   Eigen::Vector3d closing() const { return X_FrameHand.linear().col(1); }

@@ -54,7 +54,10 @@ struct HandBody {
   }
 };
 
-/// The body of a hand of `geometry` with a palm `palm_thickness_m` thick behind its face.
+/// The body of a hand of `geometry` (its palm is `geometry.palm_thickness_m` thick).
+HandBody make_hand_body(const HandGeometry& geometry);
+
+/// The same with another palm thickness (0: the fingers and closing region alone).
 HandBody make_hand_body(const HandGeometry& geometry, double palm_thickness_m);
 
 /// Indices of the points of `points` (in the frame of `X_FrameHand`) that lie in the body

@@ -46,8 +46,6 @@ struct HandSearchParameters {
   /// Hand positions along the closing direction, evenly spaced so that the sample lies
   /// between the fingers in all of them.
   int positions = 20;
-  /// Thickness of the palm box behind the palm face (HandGeometry has no such field).
-  double palm_thickness_m = 0.01;
   /// How far the object must reach between the fingers (from the fingertips towards the
   /// palm) once the hand has been pushed forward until contact. An object wider than the
   /// aperture stops the fingertips early and reaches less far in: with the default, half

@@ -9,21 +9,9 @@
 #include "antipode/core/cloud.hpp"
 #include "antipode/core/hand.hpp"
 #include "antipode/interfaces/component.hpp"
-#include "antipode/interfaces/motion_planner.hpp"
+#include "antipode/interfaces/grasp_attempt.hpp"
 
 namespace antipode {
-
-/// How a grasp attempt ended, judged by the cell (ground truth in simulation).
-enum class GraspOutcome : std::uint8_t {
-  kSuccess,
-  kCollisionOnApproach,
-  kEmptyGrasp,
-  kSlipped,
-  kObjectKnockedOut,
-  kNotExecuted,
-};
-
-const char* to_string(GraspOutcome outcome);
 
 class Cell : public Component {
  public:
@@ -36,8 +24,12 @@ class Cell : public Component {
   /// `views[v]`. Throws antipode::Error for an unknown view name.
   virtual Cloud capture(const std::vector<std::string>& views) = 0;
 
-  /// Executes `grasp` (following `trajectory` when it is not empty) and reports the outcome.
-  virtual GraspOutcome execute(const Hand& grasp, const Trajectory& trajectory) = 0;
+  /// Executes `request.grasp` with a gripper of `request.gripper` (following the request's
+  /// trajectory when it is not empty) and reports the attempt. A request the cell cannot
+  /// execute (another frame than "base", a pose that is not a rigid motion, a gripper it
+  /// cannot be) gives outcome kNotExecuted with the reason; it never throws for a bad
+  /// request.
+  virtual GraspAttempt execute(const GraspRequest& request) = 0;
 
   /// Restores the cell's initial state for `seed`.
   virtual void reset(std::uint64_t seed) = 0;

@@ -3,21 +3,25 @@
 /// What flows from the sampler through the classifier to the selector.
 
 #include <memory>
+#include <optional>
 #include <vector>
 
 #include "antipode/core/cloud.hpp"
 #include "antipode/core/hand.hpp"
 #include "antipode/core/hand_geometry.hpp"
+#include "antipode/geometry/support_plane.hpp"
 
 namespace antipode {
 
-/// Hands together with the (preprocessed) cloud their `closing_points` index into and the
+/// Hands together with the (preprocessed) cloud their `closing_points` index into, the
 /// gripper geometry they were found for (a classifier that images the closing region, such
-/// as the HOG + SVM one, needs its extent).
+/// as the HOG + SVM one, needs its extent; the cell executes that gripper) and the support
+/// plane the sampler found in the cloud, if any (in the cloud's frame).
 struct HandSet {
   std::shared_ptr<const Cloud> cloud;
   std::vector<Hand> hands;
   HandGeometry geometry;
+  std::optional<SupportPlane> support;
 };
 
 /// How hand sets travel between behaviour-tree nodes: shared and immutable; a stage that

@@ -1,0 +1,235 @@
+#include "bench_report.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <functional>
+#include <map>
+
+namespace antipode::cli {
+namespace {
+
+using Json = nlohmann::ordered_json;
+using Filter = std::function<bool(const Json&)>;
+
+double median(std::vector<double> values) {
+  if (values.empty()) return 0.0;
+  std::sort(values.begin(), values.end());
+  const std::size_t n = values.size();
+  return n % 2 ? values[n / 2] : (values[n / 2 - 1] + values[n / 2]) / 2;
+}
+
+bool succeeded(const Json& a) { return a["outcome"] == "success"; }
+
+// Attempts, successes, rate, interval and per-object mean of the attempts `keep` accepts.
+Json tally(const std::vector<const Json*>& attempts, const Filter& keep) {
+  int n = 0, k = 0;
+  std::map<std::string, std::pair<int, int>> by_object;  // successes, attempts
+  for (const Json* a : attempts) {
+    if (!keep(*a)) continue;
+    ++n;
+    k += succeeded(*a) ? 1 : 0;
+    auto& object = by_object[(*a)["object"].get<std::string>()];
+    object.first += succeeded(*a) ? 1 : 0;
+    ++object.second;
+  }
+  double mean = 0.0;
+  for (const auto& [name, counts] : by_object) mean += double(counts.first) / counts.second;
+  const auto [lo, hi] = wilson_interval(k, n);
+  return {{"attempts", n},
+          {"successes", k},
+          {"success_rate", n ? double(k) / n : 0.0},
+          {"ci95", {lo, hi}},
+          {"per_object_mean", by_object.empty() ? 0.0 : mean / double(by_object.size())}};
+}
+
+Json fidelity(const std::vector<const Json*>& attempts) {
+  int executed = 0, as_detected = 0, held = 0;
+  for (const Json* a : attempts) {
+    if (!a->contains("record")) continue;
+    ++executed;
+    const Json& r = (*a)["record"];
+    if (r["reached_pose"].get<bool>() || !r["stopped_by"].empty()) ++as_detected;
+    held += succeeded(*a) ? 1 : 0;
+  }
+  const auto [lo, hi] = wilson_interval(held, executed);
+  return {{"executed", executed},
+          {"as_detected", as_detected},
+          {"as_detected_rate", executed ? double(as_detected) / executed : 0.0},
+          {"held", held},
+          {"held_rate", executed ? double(held) / executed : 0.0},
+          {"held_ci95", {lo, hi}}};
+}
+
+Json stage_medians(const std::vector<const Json*>& attempts) {
+  std::map<std::string, std::vector<double>> seconds;
+  for (const Json* a : attempts) {
+    for (const auto& [stage, s] : (*a)["stage_s"].items())
+      seconds[stage].push_back(s.get<double>());
+    seconds["whole attempt"].push_back((*a)["wall_s"].get<double>());
+  }
+  Json out = Json::object();
+  for (auto& [stage, values] : seconds) out[stage] = median(values);
+  return out;
+}
+
+Json variant_summary(const std::vector<const Json*>& attempts) {
+  Json s = tally(attempts, [](const Json&) { return true; });
+  int no_grasp = 0;
+  Json outcomes = Json::object(), reasons = Json::object();
+  for (const Json* a : attempts) {
+    no_grasp += (*a)["outcome"] == "no grasp found" ? 1 : 0;
+    const std::string outcome = (*a)["outcome"], reason = (*a)["reason"];
+    outcomes[outcome] = outcomes.value(outcome, 0) + 1;
+    reasons[reason] = reasons.value(reason, 0) + 1;
+  }
+  s["no_grasp"] = no_grasp;
+  s["found_grasp"] =
+      tally(attempts, [](const Json& a) { return a["outcome"] != "no grasp found"; });
+  s["outcomes"] = outcomes;
+  s["reasons"] = reasons;
+  s["groups"] = {
+      {"graspable", tally(attempts, [](const Json& a) { return a["graspable"].get<bool>(); })},
+      {"not_graspable", tally(attempts, [](const Json& a) { return !a["graspable"].get<bool>(); })},
+      {"tuning", tally(attempts, [](const Json& a) { return !a["held_out"].get<bool>(); })},
+      {"held_out", tally(attempts, [](const Json& a) { return a["held_out"].get<bool>(); })}};
+  s["fidelity"] = fidelity(attempts);
+  s["stage_s_median"] = stage_medians(attempts);
+  return s;
+}
+
+std::string rate_text(const Json& t) {
+  char text[64];
+  if (t["attempts"].get<int>() == 0) return "-";
+  std::snprintf(text, sizeof text, "%.1f%% [%.1f, %.1f]", 100.0 * t["success_rate"].get<double>(),
+                100.0 * t["ci95"][0].get<double>(), 100.0 * t["ci95"][1].get<double>());
+  return text;
+}
+
+void row(std::ostream& out, const std::string& label, const std::vector<std::string>& cells,
+         int label_width, int cell_width) {
+  char text[256];
+  std::snprintf(text, sizeof text, "%-*s", label_width, label.c_str());
+  out << text;
+  for (const auto& cell : cells) {
+    std::snprintf(text, sizeof text, " %*s", cell_width, cell.c_str());
+    out << text;
+  }
+  out << "\n";
+}
+
+}  // namespace
+
+std::pair<double, double> wilson_interval(int successes, int trials) {
+  if (trials <= 0) return {0.0, 1.0};
+  const double z = 1.959963984540054, n = trials, p = double(successes) / n;
+  const double centre = (p + z * z / (2 * n)) / (1 + z * z / n);
+  const double half = z * std::sqrt(p * (1 - p) / n + z * z / (4 * n * n)) / (1 + z * z / n);
+  return {std::max(0.0, centre - half), std::min(1.0, centre + half)};
+}
+
+Json summarise(const Json& attempts, const std::vector<std::string>& variants) {
+  Json summary = Json::object();
+  for (const auto& variant : variants) {
+    std::vector<const Json*> mine;
+    for (const Json& a : attempts)
+      if (a["variant"] == variant) mine.push_back(&a);
+    summary[variant] = variant_summary(mine);
+  }
+  return summary;
+}
+
+void print_report(std::ostream& out, const Json& attempts, const Json& summary,
+                  const std::vector<std::string>& variants) {
+  std::vector<std::string> objects;
+  std::map<std::string, std::map<std::string, std::pair<int, int>>> cells;  // object, variant
+  std::map<std::string, std::string> marks;
+  for (const Json& a : attempts) {
+    const std::string object = a["object"];
+    if (std::find(objects.begin(), objects.end(), object) == objects.end())
+      objects.push_back(object);
+    auto& cell = cells[object][a["variant"].get<std::string>()];
+    cell.first += succeeded(a) ? 1 : 0;
+    ++cell.second;
+    marks[object] = std::string(a["graspable"].get<bool>() ? "" : " (not graspable)") +
+                    (a["held_out"].get<bool>() ? " (held out)" : "");
+  }
+  const int label_width = 34, cell_width = 20;
+  row(out, "object", variants, label_width, cell_width);
+  for (const auto& object : objects) {
+    std::vector<std::string> texts;
+    for (const auto& variant : variants) {
+      const auto [k, n] = cells[object][variant];
+      char text[64];
+      std::snprintf(text, sizeof text, "%d/%d %3.0f%%", k, n, n ? 100.0 * k / n : 0.0);
+      texts.push_back(n ? text : "-");
+    }
+    row(out, object + marks[object], texts, label_width, cell_width);
+  }
+  const auto group_rows = [&](const std::string& label, const std::string& group) {
+    std::vector<std::string> pooled, mean;
+    for (const auto& variant : variants) {
+      const Json& t = group.empty() ? summary[variant] : summary[variant]["groups"][group];
+      pooled.push_back(rate_text(t));
+      char text[32];
+      std::snprintf(text, sizeof text, "%.1f%%", 100.0 * t["per_object_mean"].get<double>());
+      mean.push_back(t["attempts"].get<int>() ? text : "-");
+    }
+    row(out, label + ", per-object mean", mean, label_width, cell_width);
+    row(out, label + ", all attempts", pooled, label_width, cell_width);
+  };
+  out << "\n";
+  group_rows("every object", "");
+  for (const auto& [label, group] :
+       {std::pair{"graspable objects", "graspable"}, std::pair{"not graspable", "not_graspable"},
+        std::pair{"tuning objects", "tuning"}, std::pair{"held-out objects", "held_out"}}) {
+    bool any = false, all = true;
+    for (const auto& variant : variants) {
+      const int n = summary[variant]["groups"][group]["attempts"];
+      any = any || n > 0;
+      all = all && n == summary[variant]["attempts"].get<int>();
+    }
+    if (any && !all) group_rows(label, group);
+  }
+  std::vector<std::string> found, fidelity;
+  for (const auto& variant : variants) {
+    found.push_back(rate_text(summary[variant]["found_grasp"]));
+    const Json& f = summary[variant]["fidelity"];
+    char text[64];
+    std::snprintf(text, sizeof text, "%d/%d as planned", f["as_detected"].get<int>(),
+                  f["executed"].get<int>());
+    fidelity.push_back(text);
+  }
+  row(out, "where a grasp was found", found, label_width, cell_width);
+  row(out, "executed as planned", fidelity, label_width, cell_width);
+
+  out << "\nfailures (attempts)\n";
+  std::vector<std::string> reasons;
+  for (const auto& variant : variants)
+    for (const auto& [reason, count] : summary[variant]["reasons"].items())
+      if (reason != "success" && std::find(reasons.begin(), reasons.end(), reason) == reasons.end())
+        reasons.push_back(reason);
+  for (const auto& reason : reasons) {
+    std::vector<std::string> counts;
+    for (const auto& variant : variants)
+      counts.push_back(std::to_string(summary[variant]["reasons"].value(reason, 0)));
+    row(out, reason, counts, label_width, cell_width);
+  }
+  out << "\nseconds per stage (median)\n";
+  std::vector<std::string> stages;
+  for (const auto& variant : variants)
+    for (const auto& [stage, s] : summary[variant]["stage_s_median"].items())
+      if (std::find(stages.begin(), stages.end(), stage) == stages.end()) stages.push_back(stage);
+  for (const auto& stage : stages) {
+    std::vector<std::string> seconds;
+    for (const auto& variant : variants) {
+      char text[32];
+      std::snprintf(text, sizeof text, "%.3f",
+                    summary[variant]["stage_s_median"].value(stage, 0.0));
+      seconds.push_back(text);
+    }
+    row(out, stage, seconds, label_width, cell_width);
+  }
+}
+
+}  // namespace antipode::cli

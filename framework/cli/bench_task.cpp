@@ -1,0 +1,180 @@
+#include "bench_task.hpp"
+
+#include <chrono>
+#include <cmath>
+#include <filesystem>
+#include <sstream>
+
+#include <yaml-cpp/yaml.h>
+#include <Eigen/Geometry>
+
+#include "antipode/bt/loader.hpp"
+#include "antipode/core/error.hpp"
+#include "antipode/interfaces/grasp_attempt.hpp"
+#include "antipode/interfaces/hand_set.hpp"
+#include "stage_timer.hpp"
+
+namespace antipode::cli {
+namespace {
+
+std::string yaml_list(const std::vector<std::string>& items) {
+  std::string text = "[";
+  for (std::size_t i = 0; i < items.size(); ++i) text += (i ? ", " : "") + items[i];
+  return text + "]";
+}
+
+std::string number(double value) {
+  std::ostringstream text;
+  text.precision(17);
+  text << value;
+  return text.str();
+}
+
+// Where the tree draws `task` when it fails: DIR/VARIANT-OBJECT-poseK.png, or nowhere.
+std::string picture_file(const TaskSettings& settings, const BenchTask& task) {
+  if (settings.pictures_dir.empty()) return "";
+  return (std::filesystem::path(settings.pictures_dir) /
+          (task.variant->name + "-" + task.object.name + "-pose" + std::to_string(task.pose) +
+           ".png"))
+      .string();
+}
+
+// The --set entries that make the tree run `task`.
+std::vector<std::pair<std::string, std::string>> task_overrides(const TaskSettings& settings,
+                                                                const BenchTask& task) {
+  const Eigen::Vector3d rpy = pose_rpy(task.pose, task.poses);
+  std::vector<std::string> entries = {"cell.object={" + task.object.spec_yaml + ", rpy_rad: [" +
+                                          number(rpy.x()) + ", " + number(rpy.y()) + ", " +
+                                          number(rpy.z()) + "]}",
+                                      "cell.seed=" + std::to_string(task.seed),
+                                      "cell.render_threads=" + std::to_string(settings.threads),
+                                      "sampler.threads=" + std::to_string(settings.threads),
+                                      "views=" + yaml_list(task.variant->views),
+                                      "picture_file=" + picture_file(settings, task)};
+  if (!settings.noise.empty()) entries.push_back("cell.noise=" + settings.noise);
+  if (task.variant->classifier_plugin.empty()) {
+    entries.push_back("classifier.threads=" + std::to_string(settings.threads));
+  } else {
+    entries.push_back("classifier.plugin=" + task.variant->classifier_plugin);
+    if (task.variant->classifier_plugin == "antipodal_classifier")
+      entries.push_back("classifier.threads=" + std::to_string(settings.threads));
+  }
+  entries.insert(entries.end(), settings.overrides.begin(), settings.overrides.end());
+  std::vector<std::pair<std::string, std::string>> pairs;
+  for (const auto& entry : entries) {
+    const auto equals = entry.find('=');
+    pairs.emplace_back(entry.substr(0, equals), entry.substr(equals + 1));
+  }
+  return pairs;
+}
+
+std::vector<double> vector_of(const Eigen::Vector3d& v) { return {v.x(), v.y(), v.z()}; }
+
+nlohmann::ordered_json hand_json(const Hand& hand) {
+  const Eigen::Quaterniond q(hand.X_FrameHand.linear());
+  return {{"position_m", vector_of(hand.position_m())},
+          {"quaternion_xyzw", {q.x(), q.y(), q.z(), q.w()}},
+          {"approach", vector_of(hand.approach())},
+          {"score", hand.score},
+          {"width_m", hand.width_m}};
+}
+
+nlohmann::ordered_json record_json(const GraspAttempt& r) {
+  const auto finite_or_null = [](double v) {
+    return std::isfinite(v) ? nlohmann::ordered_json(v) : nlohmann::ordered_json();
+  };
+  return {{"reached_pose", r.reached_pose},
+          {"pose_error_m", finite_or_null(r.pose_error_m)},
+          {"stopped_by", r.stopped_by},
+          {"first_contact", r.first_contact},
+          {"first_contact_before_pose_m", finite_or_null(r.first_contact_before_pose_m)},
+          {"opening_at_contact_m", finite_or_null(r.opening_at_contact_m)},
+          {"between_fingers_at_detection", r.between_fingers_at_detection},
+          {"between_fingers_at_closing", r.between_fingers_at_closing},
+          {"in_collision_at_planned_pose", r.in_collision_at_planned_pose},
+          {"pinched_object", r.pinched_object},
+          {"lift_m", r.lift_m},
+          {"duration_s", r.duration_s}};
+}
+
+// The failure class of an executed attempt, from the cell's record (docs/cli.md lists them).
+std::string failure_class(const GraspAttempt& r) {
+  switch (r.outcome) {
+    case GraspOutcome::kSuccess:
+      return "success";
+    case GraspOutcome::kCollisionOnApproach:
+      return "collision at the stand-off pose";
+    case GraspOutcome::kNotExecuted:
+      return "not executed";
+    default:
+      break;
+  }
+  if (!r.in_collision_at_planned_pose.empty()) return "planned into the object";
+  if (!r.reached_pose) return "stopped short of the pose";
+  if (r.between_fingers_at_detection.empty()) return "nothing between the planned fingers";
+  if (r.outcome == GraspOutcome::kEmptyGrasp) return "closed on nothing";
+  if (r.outcome == GraspOutcome::kObjectKnockedOut) return "knocked off the table";
+  return "slipped";
+}
+
+}  // namespace
+
+const std::vector<BenchVariant>& isolation_variants() {
+  static const std::vector<BenchVariant> variants = {
+      {"nc_1v", "passthrough_classifier", {"left"}},
+      {"nc_2v", "passthrough_classifier", {"left", "right"}},
+      {"a_2v", "antipodal_classifier", {"left", "right"}},
+      {"svm_1v", "", {"left"}},
+      {"svm_2v", "", {"left", "right"}},
+  };
+  return variants;
+}
+
+nlohmann::ordered_json run_task(const Session& session, const TaskSettings& settings,
+                                const BenchTask& task) {
+  nlohmann::ordered_json out = {{"task", task.index},
+                                {"attempt", task.attempt},
+                                {"object", task.object.name},
+                                {"pose", task.pose},
+                                {"variant", task.variant->name},
+                                {"seed", task.seed},
+                                {"graspable", task.object.graspable},
+                                {"held_out", task.held_out}};
+  bt::LoadOptions load;
+  load.registry = &session.registry;
+  load.components = session.host.get();
+  load.seed = task.seed;
+  load.overrides = task_overrides(settings, task);
+  load.main_tree = "attempt";
+  const auto start = std::chrono::steady_clock::now();
+  bt::Tree tree = bt::load_tree_string(settings.tree_yaml, settings.tree_path, load);
+  tree.set_log_sink([](const bt::Node&, const std::string&) {});
+  StageTimer timer;
+  tree.add_observer(&timer);
+  timer.start();
+  try {
+    tree.tick_while_running(std::chrono::milliseconds(0));
+    const bt::Blackboard& board = tree.blackboard();
+    out["outcome"] = board.has("outcome") ? board.text("outcome") : "no grasp found";
+    if (board.has("attempt")) {
+      const GraspAttempt& record = board.get_ref<GraspAttempt>("attempt");
+      out["reason"] = failure_class(record);
+      out["detail"] = record.reason;
+      out["hand"] = hand_json(board.get_ref<Hand>("grasp"));
+      out["record"] = record_json(record);
+    } else {
+      out["reason"] = "no grasp found";
+      out["detail"] = timer.first_failure();
+    }
+  } catch (const std::exception& error) {
+    out["outcome"] = "error";
+    out["reason"] = "error";
+    out["detail"] = error.what();
+  }
+  out["stage_s"] = timer.seconds();
+  out["wall_s"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  tree.remove_observer(&timer);
+  return out;
+}
+
+}  // namespace antipode::cli

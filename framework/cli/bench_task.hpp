@@ -1,0 +1,55 @@
+#pragma once
+// One attempt of the isolation benchmark: the pick tree's `attempt` tree run once on one
+// object in one pose for one variant, and its record as JSON.
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "bench_objects.hpp"
+#include "session.hpp"
+
+namespace antipode::cli {
+
+/// A variant of the paper's isolation experiment: a classifier and the views captured.
+struct BenchVariant {
+  std::string name;               ///< "nc_1v", "nc_2v", "a_2v", "svm_1v", "svm_2v"
+  std::string classifier_plugin;  ///< replaces the tree's classifier; "" keeps it (SVM)
+  std::vector<std::string> views;
+};
+
+/// The paper's five variants, in its order.
+const std::vector<BenchVariant>& isolation_variants();
+
+/// What every task of a run shares.
+struct TaskSettings {
+  std::string tree_path;               ///< the pick tree file (its `attempt` tree is run)
+  std::string tree_yaml;               ///< its text, read once
+  int threads = 2;                     ///< threads of the sampler, classifier and renderer
+  std::string noise;                   ///< the cell's `noise` ("" = the tree's)
+  std::string pictures_dir;            ///< where failed attempts are drawn ("" = nowhere)
+  std::vector<std::string> overrides;  ///< the user's --set entries, applied last
+};
+
+struct BenchTask {
+  int index = 0;    ///< position in the run's task list
+  int attempt = 0;  ///< attempt number (object and pose); variants of an attempt share it
+  BenchObject object;
+  int pose = 0;
+  int poses = 1;
+  const BenchVariant* variant = nullptr;
+  std::uint64_t seed = 0;  ///< the cell's seed: sensor noise and settling
+  bool held_out = false;
+};
+
+/// Runs `task` and returns its record: the task's identity, "outcome" ("no grasp found",
+/// "error" or the cell's outcome), "reason" (a failure class, see failure_class()),
+/// "detail" (one line), the executed "hand", the cell's "record", "stage_s" and "wall_s".
+/// A tree that cannot be loaded throws antipode::Error (the run stops); an error while the
+/// tree runs is recorded as outcome "error".
+nlohmann::ordered_json run_task(const Session& session, const TaskSettings& settings,
+                                const BenchTask& task);
+
+}  // namespace antipode::cli

@@ -1,0 +1,229 @@
+#include "isolation_bench.hpp"
+
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <sstream>
+#include <thread>
+
+#include "antipode/core/atomic_file.hpp"
+#include "antipode/core/error.hpp"
+#include "bench_report.hpp"
+#include "bench_task.hpp"
+#include "exit_codes.hpp"
+
+namespace fs = std::filesystem;
+
+namespace antipode::cli {
+namespace {
+
+using Json = nlohmann::ordered_json;
+
+// The gripper's range in the paper's setting: objects narrower or wider in every
+// direction cannot be held, and finding no grasp on them is the right answer.
+constexpr double kMinGraspableWidthM = 0.03;
+constexpr double kMaxGraspableWidthM = 0.07;
+
+std::vector<const BenchVariant*> chosen_variants(const std::vector<std::string>& names) {
+  std::vector<std::string> known;
+  for (const auto& v : isolation_variants()) known.push_back(v.name);
+  std::vector<const BenchVariant*> chosen;
+  for (const auto& v : isolation_variants())
+    if (names.empty() || std::find(names.begin(), names.end(), v.name) != names.end())
+      chosen.push_back(&v);
+  for (const auto& name : names)
+    if (std::find(known.begin(), known.end(), name) == known.end())
+      throw Error("--variants: unknown variant '" + name + "'" + did_you_mean(name, known) +
+                  " (variants: nc_1v, nc_2v, a_2v, svm_1v, svm_2v)");
+  return chosen;
+}
+
+void check_options(const IsolationBenchOptions& o) {
+  if (o.poses < 1 || o.poses > 360) throw Error("--poses must be in 1..360");
+  if (o.attempts < 0) throw Error("--attempts must be 0 (every object in every pose) or more");
+  if (o.jobs < 1 || o.jobs > 64) throw Error("--jobs must be in 1..64");
+  if (!fs::is_regular_file(o.tree_path)) throw Error("--tree: no tree file '" + o.tree_path + "'");
+  if (!o.pictures_dir.empty() && fs::exists(o.pictures_dir) && !fs::is_directory(o.pictures_dir))
+    throw Error("--pictures: '" + o.pictures_dir + "' is not a folder");
+}
+
+std::vector<BenchTask> plan(const IsolationBenchOptions& o, const std::vector<BenchObject>& objects,
+                            const std::vector<const BenchVariant*>& variants) {
+  std::vector<std::string> names;
+  for (const auto& object : objects) names.push_back(object.name);
+  for (const auto& name : o.held_out)
+    if (std::find(names.begin(), names.end(), name) == names.end())
+      throw Error("--held-out: no object '" + name + "'" + did_you_mean(name, names));
+  const int n = int(objects.size());
+  const int attempts = o.attempts > 0 ? o.attempts : n * o.poses;
+  std::vector<BenchTask> tasks;
+  for (int i = 0; i < attempts; ++i)
+    for (const BenchVariant* variant : variants) {
+      BenchTask t;
+      t.index = int(tasks.size());
+      t.attempt = i;
+      t.object = objects[std::size_t(i % n)];
+      t.pose = (i / n) % o.poses;
+      t.poses = o.poses;
+      t.variant = variant;
+      t.seed = o.seed + std::uint64_t(i);
+      t.held_out =
+          std::find(o.held_out.begin(), o.held_out.end(), t.object.name) != o.held_out.end();
+      tasks.push_back(std::move(t));
+    }
+  return tasks;
+}
+
+std::string progress_line(const Json& r, std::size_t total) {
+  std::ostringstream line;
+  line << "[" << r["task"].get<int>() + 1 << "/" << total << "] " << r["variant"].get<std::string>()
+       << " " << r["object"].get<std::string>() << " pose " << r["pose"].get<int>() << ": "
+       << r["outcome"].get<std::string>();
+  if (r["outcome"] != "success" && !r["detail"].get<std::string>().empty())
+    line << " - " << r["detail"].get<std::string>();
+  line << "\n";
+  return line.str();
+}
+
+// Runs the tasks whose index is `job` modulo `jobs`, in order; `sink` gets each record.
+void run_share(const TaskSettings& settings, const std::vector<BenchTask>& tasks, int job, int jobs,
+               const std::function<void(const Json&)>& sink) {
+  const Session session = open_session();
+  for (const BenchTask& task : tasks)
+    if (task.index % jobs == job) sink(run_task(session, settings, task));
+}
+
+// Runs every task in `jobs` forked processes, each writing its records to a file of its
+// own; returns the records in task order.
+std::vector<Json> run_in_processes(const TaskSettings& settings,
+                                   const std::vector<BenchTask>& tasks, int jobs) {
+  std::string pattern = (fs::temp_directory_path() / "antipode-bench-XXXXXX").string();
+  if (mkdtemp(pattern.data()) == nullptr) throw Error("cannot create a temporary folder");
+  const fs::path folder = pattern;
+  std::cout.flush();
+  std::vector<pid_t> children;
+  for (int job = 0; job < jobs; ++job) {
+    const pid_t pid = fork();
+    if (pid < 0) throw Error("cannot start a benchmark process");
+    if (pid > 0) {
+      children.push_back(pid);
+      continue;
+    }
+    int code = 0;
+    try {
+      std::ofstream file(folder / ("job-" + std::to_string(job) + ".jsonl"));
+      run_share(settings, tasks, job, jobs, [&](const Json& record) {
+        file << record.dump() << "\n" << std::flush;
+        const std::string line = progress_line(record, tasks.size());
+        if (::write(STDOUT_FILENO, line.data(), line.size()) < 0) code = 3;
+      });
+    } catch (const std::exception& error) {
+      std::cerr << "antipode: error: " << error.what() << "\n";
+      code = dynamic_cast<const Error*>(&error) ? kExitInvalidInput : kExitInternalError;
+    }
+    std::_Exit(code);
+  }
+  int failed = 0;
+  for (const pid_t pid : children) {
+    int status = 0;
+    waitpid(pid, &status, 0);
+    if (!WIFEXITED(status) || WEXITSTATUS(status) != 0)
+      failed = WIFEXITED(status) ? WEXITSTATUS(status) : 3;
+  }
+  std::vector<Json> records(tasks.size());
+  for (int job = 0; job < jobs; ++job) {
+    std::ifstream file(folder / ("job-" + std::to_string(job) + ".jsonl"));
+    for (std::string line; std::getline(file, line);) {
+      Json record = Json::parse(line);
+      records[record["task"].get<std::size_t>()] = std::move(record);
+    }
+  }
+  fs::remove_all(folder);
+  if (failed != 0) throw Error("a benchmark process failed (see its message above)");
+  for (const Json& record : records)
+    if (record.is_null()) throw InternalError("a benchmark process lost an attempt");
+  return records;
+}
+
+}  // namespace
+
+int bench_isolation_command(const IsolationBenchOptions& o) {
+  check_options(o);
+  const std::vector<const BenchVariant*> variants = chosen_variants(o.variants);
+  const std::vector<BenchObject> objects =
+      bench_objects(o.objects, o.procedural_file, kMinGraspableWidthM, kMaxGraspableWidthM);
+  const std::vector<BenchTask> tasks = plan(o, objects, variants);
+  if (!o.pictures_dir.empty()) fs::create_directories(o.pictures_dir);
+
+  TaskSettings settings;
+  settings.tree_path = o.tree_path;
+  std::ifstream tree_file(o.tree_path);
+  settings.tree_yaml.assign(std::istreambuf_iterator<char>(tree_file), {});
+  const int cores = int(std::max(1u, std::thread::hardware_concurrency()));
+  settings.threads = std::max(1, cores / o.jobs);
+  settings.noise = o.noise;
+  settings.pictures_dir = o.pictures_dir;
+  settings.overrides = o.set;
+
+  std::vector<std::string> variant_names;
+  for (const BenchVariant* v : variants) variant_names.push_back(v->name);
+  std::cout << "isolation bench: " << objects.size() << " objects, " << o.poses << " poses, "
+            << tasks.size() / variants.size() << " attempts for each of " << variant_names.size()
+            << " variants, " << o.jobs << " process(es)\n";
+  const auto start = std::chrono::steady_clock::now();
+  std::vector<Json> records;
+  if (o.jobs == 1) {
+    run_share(settings, tasks, 0, 1, [&](const Json& record) {
+      std::cout << progress_line(record, tasks.size()) << std::flush;
+      records.push_back(record);
+    });
+  } else {
+    records = run_in_processes(settings, tasks, o.jobs);
+  }
+  const double wall_s =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+
+  Json attempts = Json::array();
+  for (auto& record : records) attempts.push_back(std::move(record));
+  const Json summary = summarise(attempts, variant_names);
+  std::cout << "\n";
+  print_report(std::cout, attempts, summary, variant_names);
+  std::cout << "\nwall time " << wall_s << " s\n";
+  if (!o.report_path.empty()) {
+    Json names = Json::array();
+    for (const auto& object : objects) names.push_back(object.name);
+    const Json report = {{"bench", "isolation"},
+                         {"tree", o.tree_path},
+                         {"objects", o.objects},
+                         {"object_names", names},
+                         {"held_out", o.held_out},
+                         {"poses", o.poses},
+                         {"attempts_per_variant", tasks.size() / variants.size()},
+                         {"seed", o.seed},
+                         {"noise", o.noise.empty() ? "tree" : o.noise},
+                         {"overrides", o.set},
+                         {"variants", variant_names},
+                         {"jobs", o.jobs},
+                         {"threads_per_job", settings.threads},
+                         {"cores", cores},
+                         {"wall_s", wall_s},
+                         {"summary", summary},
+                         {"attempts", attempts}};
+    write_file_atomically(o.report_path, [&](const std::string& temporary) {
+      std::ofstream out(temporary);
+      out << report.dump(1) << "\n";
+      if (!out) throw Error("cannot write the report");
+    });
+    std::cout << "report: " << o.report_path << "\n";
+  }
+  return kExitSuccess;
+}
+
+}  // namespace antipode::cli

@@ -1,0 +1,33 @@
+#pragma once
+// `antipode bench isolation`: the paper's isolation experiment (section 5.2) in the
+// simulated cell - every test object in systematic poses, one attempt per pose and
+// variant, through the pick tree's `attempt` tree (docs/cli.md, docs/results.md).
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace antipode::cli {
+
+struct IsolationBenchOptions {
+  std::string objects = "procedural";  ///< "procedural" or a folder of meshes
+  std::string procedural_file = "scenes/objects/procedural_test_set.yaml";
+  std::vector<std::string> variants;  ///< empty: all five
+  int poses = 8;                      ///< systematic poses per object
+  int attempts = 0;                   ///< per variant; 0: every object in every pose
+  std::uint64_t seed = 1000;          ///< attempt i uses cell seed `seed + i`
+  int jobs = 1;                       ///< processes sharing the machine's cores
+  std::string report_path;            ///< JSON report ("" = none)
+  std::string pictures_dir;           ///< failed attempts drawn here ("" = none)
+  std::string tree_path = "trees/pick_isolated.yaml";
+  std::string noise;                  ///< the cell's sensor noise scale ("" = the tree's)
+  std::vector<std::string> held_out;  ///< object names reported apart
+  std::vector<std::string> set;       ///< --set overrides of the tree, applied last
+};
+
+/// Plans the attempts (object i % objects, pose (i / objects) % poses), runs them in
+/// `jobs` processes (the same results for any number), prints the tables and writes the
+/// report. Returns the exit code; throws antipode::Error for bad options.
+int bench_isolation_command(const IsolationBenchOptions& options);
+
+}  // namespace antipode::cli

@@ -1,0 +1,115 @@
+#include "cluster_selector.hpp"
+
+#include <algorithm>
+#include <numeric>
+
+#include "antipode/core/error.hpp"
+#include "antipode/geometry/hand_body.hpp"
+#include "hand_clearance.hpp"
+#include "hand_clusters.hpp"
+
+namespace antipode::selectors {
+namespace {
+
+bool candidate(const Hand& hand) {
+  return hand.rejection == Rejection::kNone &&
+         (hand.label == HandLabel::kPositive || hand.label == HandLabel::kUnknown);
+}
+
+// A grasp a cluster proposes, with the input hands it stands for.
+struct Proposal {
+  Hand grasp;
+  std::vector<std::size_t> members;
+  double penalty = 0.0;
+};
+
+}  // namespace
+
+double aperture_penalty(double width_m, const HandGeometry& geometry, double margin_m) {
+  const double distance =
+      std::min(width_m - geometry.min_aperture_m, geometry.max_aperture_m - width_m);
+  return distance >= margin_m ? 0.0 : (margin_m - distance) * (margin_m - distance);
+}
+
+ClusterSelector::ClusterSelector(const Parameters& params)
+    : options_(read_selection_options(params)) {}
+
+HandSet ClusterSelector::select(const HandSet& in) const {
+  if (!in.cloud) throw Error("cluster_selector: the hand set has no cloud");
+  const HandGeometry& g = in.geometry;
+  std::optional<SupportPlane> support = in.support;
+  if (!support && options_.support_z_m) {
+    support = SupportPlane{Eigen::Vector3f::UnitZ(), float(-*options_.support_z_m), 0};
+  }
+  const auto feasible = [&](const Hand& hand) {
+    if (support && !clears_support(hand, g, *support, options_.standoff_m, options_.clearance_m))
+      return Rejection::kBelowSupport;
+    if (hand.width_m < g.min_aperture_m || hand.width_m > g.max_aperture_m)
+      return Rejection::kApertureLimit;
+    return Rejection::kNone;
+  };
+
+  std::vector<Hand> hands = in.hands;
+  std::vector<std::size_t> order;
+  for (std::size_t i = 0; i < hands.size(); ++i) {
+    if (!candidate(hands[i])) continue;
+    hands[i].rejection = feasible(hands[i]);
+    if (hands[i].rejection == Rejection::kNone) order.push_back(i);
+  }
+  std::stable_sort(order.begin(), order.end(),
+                   [&](std::size_t a, std::size_t b) { return hands[a].score > hands[b].score; });
+
+  std::vector<Proposal> proposals;
+  for (auto& members :
+       cluster_hands(hands, order, {options_.cluster_distance_m, options_.cluster_angle_deg})) {
+    if (members.size() < options_.min_cluster_size) {
+      for (std::size_t m : members) hands[m].rejection = Rejection::kSmallCluster;
+      continue;
+    }
+    Proposal p;
+    p.grasp = mean_hand(hands, members);
+    if (feasible(p.grasp) != Rejection::kNone ||
+        !approach_is_free(p.grasp, g, *in.cloud, options_.standoff_m))
+      p.grasp.X_FrameHand = hands[members.front()].X_FrameHand;  // the seed passed them
+    p.members = std::move(members);
+    p.penalty = aperture_penalty(p.grasp.width_m, g, options_.aperture_margin_m);
+    proposals.push_back(std::move(p));
+  }
+  std::stable_sort(proposals.begin(), proposals.end(), [&](const Proposal& a, const Proposal& b) {
+    if (std::abs(a.penalty - b.penalty) > options_.penalty_tolerance_m2)
+      return a.penalty < b.penalty;
+    return a.grasp.score > b.grasp.score;
+  });
+
+  // The kept grasps first, then the proposals not kept, then the input hands.
+  std::vector<Hand> kept, dropped;
+  std::vector<std::pair<const Proposal*, bool>> placed;  // proposal, kept?
+  for (const Proposal& p : proposals) {
+    Hand grasp = p.grasp;
+    grasp.rejection = Rejection::kNone;
+    if (kept.size() >= options_.max_grasps)
+      grasp.rejection = Rejection::kNotSelected;
+    else if (!approach_is_free(grasp, g, *in.cloud, options_.standoff_m))
+      grasp.rejection = Rejection::kInCollision;
+    placed.emplace_back(&p, grasp.rejection == Rejection::kNone);
+    (grasp.rejection == Rejection::kNone ? kept : dropped).push_back(std::move(grasp));
+  }
+  const HandBody body = make_hand_body(g);
+  for (Hand& grasp : kept)
+    if (grasp.closing_points.empty())
+      grasp.closing_points = points_in_closing_region(body, grasp.X_FrameHand, in.cloud->points_m);
+  std::size_t next_kept = 0, next_dropped = kept.size();
+  for (const auto& [proposal, was_kept] : placed) {
+    const std::int32_t index = std::int32_t(was_kept ? next_kept++ : next_dropped++);
+    for (std::size_t m : proposal->members) {
+      hands[m].rejection = Rejection::kClustered;
+      hands[m].merged_into = index;
+    }
+  }
+  HandSet out{in.cloud, std::move(kept), g, in.support};
+  out.hands.insert(out.hands.end(), dropped.begin(), dropped.end());
+  out.hands.insert(out.hands.end(), hands.begin(), hands.end());
+  return out;
+}
+
+}  // namespace antipode::selectors

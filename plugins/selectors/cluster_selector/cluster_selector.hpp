@@ -1,0 +1,37 @@
+#pragma once
+// The cluster_selector component: the paper's grasp selection (section 5.1) for a hand that
+// is not yet on an arm - geometric filters, clusters of similar hands, one mean grasp per
+// cluster, ranked by the distance from the gripper's aperture limits (criterion 2), then by
+// the classifier's score. The arm's criteria (joint limits, travel) extend this ranking when
+// a robot is in the tree.
+
+#include "antipode/interfaces/grasp_selector.hpp"
+#include "selection_options.hpp"
+
+namespace antipode::selectors {
+
+/// Criterion 2 of the paper: zero while `width_m` is at least `margin_m` from both aperture
+/// limits of `geometry`, (margin - distance)^2 closer to them.
+double aperture_penalty(double width_m, const HandGeometry& geometry, double margin_m);
+
+class ClusterSelector final : public GraspSelector {
+ public:
+  /// Parameters as in docs/selection.md; throws antipode::Error for unknown or invalid ones.
+  explicit ClusterSelector(const Parameters& params);
+  explicit ClusterSelector(const SelectionOptions& options) : options_(options) {}
+
+  /// In order: hands already rejected or labelled otherwise than positive (or unknown) stay
+  /// out; hands reaching below the support on their way in (kBelowSupport) or whose width is
+  /// outside the aperture (kApertureLimit) are dropped; the rest are clustered, best score
+  /// first, and clusters smaller than the minimum dropped (kSmallCluster). Each cluster
+  /// proposes its mean grasp, or its best hand where the mean's body or way in meets
+  /// observed points; proposals are ranked by criterion 2 (ties within the tolerance), then
+  /// score, and the first `max_grasps` whose way in is free are the grasps. See
+  /// GraspSelector::select for the layout of the result.
+  HandSet select(const HandSet& hands) const override;
+
+ private:
+  SelectionOptions options_;
+};
+
+}  // namespace antipode::selectors

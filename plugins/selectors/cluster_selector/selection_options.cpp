@@ -1,0 +1,46 @@
+#include "selection_options.hpp"
+
+#include <cmath>
+#include <string>
+
+namespace antipode::selectors {
+namespace {
+
+std::string text(double value) {
+  std::string s = std::to_string(value);
+  s.erase(s.find_last_not_of('0') + 1);
+  if (!s.empty() && s.back() == '.') s.pop_back();
+  return s;
+}
+
+double in_range(const Parameters& params, const std::string& key, double fallback, double lo,
+                double hi) {
+  const double value = params.get<double>(key, fallback);
+  if (!(std::isfinite(value) && value >= lo && value <= hi)) {
+    params.fail(key, "parameter '" + key + "' must be in [" + text(lo) + ", " + text(hi) +
+                         "], got " + text(value));
+  }
+  return value;
+}
+
+}  // namespace
+
+SelectionOptions read_selection_options(const Parameters& params) {
+  SelectionOptions o;
+  o.standoff_m = in_range(params, "standoff_m", o.standoff_m, 0.0, 0.5);
+  o.clearance_m = in_range(params, "clearance_m", o.clearance_m, 0.0, 0.1);
+  if (params.has("support_z_m")) o.support_z_m = in_range(params, "support_z_m", 0.0, -1e3, 1e3);
+  params.get<double>("support_z_m", 0.0);  // known either way
+  o.cluster_distance_m = in_range(params, "cluster_distance_m", o.cluster_distance_m, 0.0, 0.5);
+  o.cluster_angle_deg = in_range(params, "cluster_angle_deg", o.cluster_angle_deg, 0.0, 180.0);
+  o.min_cluster_size =
+      std::size_t(in_range(params, "min_cluster_size", double(o.min_cluster_size), 1, 1e6));
+  o.aperture_margin_m = in_range(params, "aperture_margin_m", o.aperture_margin_m, 0.0, 0.1);
+  o.penalty_tolerance_m2 =
+      in_range(params, "penalty_tolerance_m2", o.penalty_tolerance_m2, 0.0, 1.0);
+  o.max_grasps = std::size_t(in_range(params, "max_grasps", double(o.max_grasps), 1, 1e6));
+  params.reject_unknown();
+  return o;
+}
+
+}  // namespace antipode::selectors

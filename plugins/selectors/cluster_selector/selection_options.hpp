@@ -1,0 +1,39 @@
+#pragma once
+// The parameters of cluster_selector (docs/selection.md).
+
+#include <cstddef>
+#include <optional>
+
+#include "antipode/core/parameters.hpp"
+
+namespace antipode::selectors {
+
+struct SelectionOptions {
+  /// Where the cell starts its approach, back along the approach from the grasp pose: the
+  /// way from there must be free of observed points and clear of the support.
+  double standoff_m = 0.10;
+  /// How far above the support every corner of the hand must stay, at the grasp and on its
+  /// way in.
+  double clearance_m = 0.005;
+  /// The support's height in the hands' frame (a plane z = support_z_m, normal +z) for hand
+  /// sets whose sampler found no support plane; unset: no support check then.
+  std::optional<double> support_z_m;
+  /// Hands whose palm-face centres are this close and whose approach and closing directions
+  /// are within `cluster_angle_deg` of each other (closing up to its sign) form a cluster.
+  double cluster_distance_m = 0.02;
+  double cluster_angle_deg = 20.0;
+  /// Clusters with fewer hands are dropped (the paper: "a specified minimum number").
+  std::size_t min_cluster_size = 3;
+  /// Criterion 2: the penalty of a grasp is zero while the object's width stays this far
+  /// from both aperture limits, and grows quadratically closer to them.
+  double aperture_margin_m = 0.005;
+  /// Penalties closer than this (m^2) tie, and the classifier's score decides.
+  double penalty_tolerance_m2 = 1e-6;
+  /// How many grasps to return.
+  std::size_t max_grasps = 10;
+};
+
+/// Reads the component's parameters; throws antipode::Error located at the bad key.
+SelectionOptions read_selection_options(const Parameters& params);
+
+}  // namespace antipode::selectors

@@ -1,0 +1,213 @@
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "antipode/core/error.hpp"
+#include "antipode/interfaces/grasp_selector.hpp"
+#include "antipode/plugin/plugin_host.hpp"
+#include "hand_clearance.hpp"
+#include "hand_clusters.hpp"
+
+namespace antipode {
+namespace {
+
+using selectors::ClusterOptions;
+
+// A hand approaching straight down (x = -z), closing along +y, palm face at (x, y, z).
+Hand top_down(double x, double y, double z, double score = 1.0, double width = 0.05) {
+  Hand hand;
+  Eigen::Matrix3d r;
+  r.col(0) = -Eigen::Vector3d::UnitZ();
+  r.col(1) = Eigen::Vector3d::UnitY();
+  r.col(2) = r.col(0).cross(r.col(1));
+  hand.X_FrameHand.linear() = r;
+  hand.X_FrameHand.translation() << x, y, z;
+  hand.score = score;
+  hand.width_m = width;
+  hand.label = HandLabel::kPositive;
+  return hand;
+}
+
+// The same hand turned about the vertical by `yaw_deg`.
+Hand turned(Hand hand, double yaw_deg) {
+  hand.X_FrameHand.linear() = Eigen::AngleAxisd(yaw_deg * M_PI / 180.0, Eigen::Vector3d::UnitZ()) *
+                              hand.X_FrameHand.linear();
+  return hand;
+}
+
+// A set over an empty cloud (nothing blocks any approach) with a table at z = 0.
+HandSet on_table(std::vector<Hand> hands) {
+  HandSet set;
+  set.cloud = std::make_shared<Cloud>();
+  set.hands = std::move(hands);
+  set.support = SupportPlane{Eigen::Vector3f::UnitZ(), 0.0f, 0};
+  return set;
+}
+
+class ClusterSelectorTest : public ::testing::Test {
+ protected:
+  ClusterSelectorTest() : host_(std::vector<std::string>{}) {
+    host_.load_library(std::string(ANTIPODE_TEST_PLUGIN_DIR) + "/" +
+                       plugin_file_name("cluster_selector"));
+  }
+
+  std::shared_ptr<GraspSelector> create(const std::string& yaml) {
+    const Parameters params(YAML::Load(yaml), "component 'selector'", "tree.yaml");
+    return std::dynamic_pointer_cast<GraspSelector>(host_.create("cluster_selector", params));
+  }
+
+  std::string creation_error(const std::string& yaml) {
+    try {
+      create(yaml);
+    } catch (const Error& error) {
+      return error.what();
+    }
+    return "";
+  }
+
+  PluginHost host_;
+};
+
+std::size_t grasp_count(const HandSet& selection) {
+  std::size_t n = 0;
+  while (n < selection.hands.size() && selection.hands[n].rejection == Rejection::kNone) ++n;
+  return n;
+}
+
+TEST(HandClusters, SimilarHandsUpToTheClosingSign) {
+  const ClusterOptions options{0.02, 20.0};
+  const Hand a = top_down(0.0, 0.0, 0.1);
+  EXPECT_TRUE(selectors::similar(a, top_down(0.01, 0.0, 0.1), options));
+  EXPECT_FALSE(selectors::similar(a, top_down(0.03, 0.0, 0.1), options));
+  EXPECT_TRUE(selectors::similar(a, turned(a, 15.0), options));
+  EXPECT_FALSE(selectors::similar(a, turned(a, 30.0), options));
+  EXPECT_TRUE(selectors::similar(a, turned(a, 180.0), options)) << "a half turn is the same grasp";
+}
+
+TEST(HandClusters, TheMeanGraspAveragesPositionsAndRotations) {
+  const std::vector<Hand> hands = {top_down(0.0, 0.0, 0.1, 2.0, 0.04),
+                                   turned(top_down(0.01, 0.0, 0.1, 1.0, 0.05), 190.0),
+                                   turned(top_down(0.02, 0.0, 0.1, 1.0, 0.045), -10.0)};
+  const Hand mean = selectors::mean_hand(hands, {0, 1, 2});
+  EXPECT_NEAR(mean.position_m().x(), 0.01, 1e-12);
+  EXPECT_NEAR(mean.approach().z(), -1.0, 1e-9);
+  // Closing directions at 0, 10 (190 turned back by half a turn) and -10 degrees: mean 0.
+  EXPECT_NEAR(mean.closing().y(), 1.0, 1e-9);
+  EXPECT_NEAR((mean.X_FrameHand.linear().transpose() * mean.X_FrameHand.linear() -
+               Eigen::Matrix3d::Identity())
+                  .norm(),
+              0.0, 1e-9);
+  EXPECT_DOUBLE_EQ(mean.width_m, 0.05) << "the widest member";
+  EXPECT_DOUBLE_EQ(mean.score, 4.0) << "the members' scores add up";
+}
+
+TEST(HandClearance, TheWayInMustStayAboveTheSupport) {
+  const HandGeometry g;  // fingers 6 cm, palm 2 cm, half height 1 cm
+  const SupportPlane table{Eigen::Vector3f::UnitZ(), 0.0f, 0};
+  // Top down: the fingertips are the lowest corners, 6 cm below the palm face.
+  EXPECT_TRUE(selectors::clears_support(top_down(0, 0, 0.07, 1), g, table, 0.1, 0.005));
+  EXPECT_FALSE(selectors::clears_support(top_down(0, 0, 0.062, 1), g, table, 0.1, 0.005));
+  // Approaching horizontally along +x, 2 cm above the table: the 2 cm high hand's lower
+  // face is 1 cm up on the whole way in.
+  Hand side = top_down(0, 0, 0.02);
+  side.X_FrameHand.linear().setIdentity();
+  EXPECT_TRUE(selectors::clears_support(side, g, table, 0.1, 0.005));
+  // Approaching 17 degrees upwards to a pose 3 cm above the table: the pose clears it by
+  // 1.5 cm, the stand-off pose 10 cm back is below the table.
+  Hand rising = top_down(0, 0, 0.03);
+  rising.X_FrameHand.linear() = Eigen::AngleAxisd(-0.3, Eigen::Vector3d::UnitY()).matrix();
+  ASSERT_GT(rising.approach().z(), 0.29);
+  EXPECT_FALSE(selectors::clears_support(rising, g, table, 0.1, 0.005));
+  EXPECT_TRUE(selectors::clears_support(rising, g, table, 0.0, 0.005))
+      << "without a stand-off only the pose itself counts";
+}
+
+TEST(HandClearance, PointsOnTheWayInBlockIt) {
+  const HandGeometry g;
+  const Hand hand = top_down(0, 0, 0.1);  // palm face at 10 cm, fingertips at 4 cm
+  Cloud cloud;
+  cloud.points_m = {Eigen::Vector3f(0, 0, 0.06)};  // between the fingers: the object
+  EXPECT_TRUE(selectors::approach_is_free(hand, g, cloud, 0.1));
+  cloud.points_m.emplace_back(0, 0, 0.15);  // 5 cm above the palm face, under the stand-off
+  EXPECT_FALSE(selectors::approach_is_free(hand, g, cloud, 0.1));
+  EXPECT_TRUE(selectors::approach_is_free(hand, g, cloud, 0.02)) << "a shorter stand-off";
+  cloud.points_m = {Eigen::Vector3f(0, 0.04, 0.06)};  // in the +y finger
+  EXPECT_FALSE(selectors::approach_is_free(hand, g, cloud, 0.1));
+}
+
+TEST_F(ClusterSelectorTest, ClustersHandsIntoOneMeanGraspAndKeepsEveryReason) {
+  const auto selector = create("min_cluster_size: 2");
+  std::vector<Hand> hands = {top_down(0.0, 0.0, 0.1, 1.0), top_down(0.005, 0.0, 0.1, 2.0),
+                             top_down(0.3, 0.0, 0.1, 3.0), top_down(0.0, 0.2, 0.1, 1.0)};
+  hands[3].rejection = Rejection::kNotAntipodal;
+  const HandSet selection = selector->select(on_table(hands));
+  ASSERT_EQ(grasp_count(selection), 1u);
+  EXPECT_NEAR(selection.hands[0].position_m().x(), 0.0025, 1e-12);
+  EXPECT_DOUBLE_EQ(selection.hands[0].score, 3.0);
+  EXPECT_FALSE(selection.hands[0].closing_points.size() > 0) << "the cloud is empty";
+  ASSERT_EQ(selection.hands.size(), 1u + hands.size()) << "the grasp, then every input hand";
+  EXPECT_EQ(selection.hands[1].rejection, Rejection::kClustered);
+  EXPECT_EQ(selection.hands[1].merged_into, 0);
+  EXPECT_EQ(selection.hands[2].rejection, Rejection::kClustered);
+  EXPECT_EQ(selection.hands[3].rejection, Rejection::kSmallCluster) << "alone at x = 0.3";
+  EXPECT_EQ(selection.hands[4].rejection, Rejection::kNotAntipodal) << "earlier reasons stay";
+}
+
+TEST_F(ClusterSelectorTest, DropsHandsBelowTheSupportOrOutsideTheAperture) {
+  const auto selector = create("min_cluster_size: 1");
+  const HandSet selection =
+      selector->select(on_table({top_down(0, 0, 0.05), top_down(0.2, 0, 0.1, 1.0, 0.08),
+                                 top_down(0.4, 0, 0.1, 1.0, 0.02), top_down(0.6, 0, 0.1)}));
+  ASSERT_EQ(grasp_count(selection), 1u);
+  EXPECT_NEAR(selection.hands[0].position_m().x(), 0.6, 1e-12);
+  EXPECT_EQ(selection.hands[1].rejection, Rejection::kBelowSupport) << "fingertips at -1 cm";
+  EXPECT_EQ(selection.hands[2].rejection, Rejection::kApertureLimit) << "8 cm: wider than open";
+  EXPECT_EQ(selection.hands[3].rejection, Rejection::kApertureLimit) << "2 cm: under closed";
+}
+
+TEST_F(ClusterSelectorTest, TheApertureCriterionRanksBeforeTheScore) {
+  const auto selector = create("min_cluster_size: 1\nmax_grasps: 3");
+  const HandSet selection = selector->select(
+      on_table({top_down(0, 0, 0.1, 9.0, 0.071), top_down(0.2, 0, 0.1, 1.0, 0.05),
+                top_down(0.4, 0, 0.1, 2.0, 0.066)}));  // 6.6 cm: 6 mm from the limit, no penalty
+  ASSERT_EQ(grasp_count(selection), 3u);
+  EXPECT_DOUBLE_EQ(selection.hands[0].score, 2.0);
+  EXPECT_DOUBLE_EQ(selection.hands[1].score, 1.0);
+  EXPECT_DOUBLE_EQ(selection.hands[2].score, 9.0) << "1 mm from the open gripper ranks last";
+}
+
+TEST_F(ClusterSelectorTest, AGraspWhoseWayInIsBlockedIsDroppedWithItsReason) {
+  const auto selector = create("min_cluster_size: 1\nmax_grasps: 1");
+  HandSet set =
+      on_table({top_down(0, 0, 0.1, 2.0), top_down(0.2, 0, 0.1, 1.0), top_down(0.4, 0, 0.1, 0.5)});
+  auto cloud = std::make_shared<Cloud>();
+  cloud->points_m = {Eigen::Vector3f(0, 0, 0.16)};  // above the best hand's palm
+  set.cloud = cloud;
+  const HandSet selection = selector->select(set);
+  ASSERT_EQ(grasp_count(selection), 1u);
+  EXPECT_DOUBLE_EQ(selection.hands[0].score, 1.0);
+  EXPECT_EQ(selection.hands[1].rejection, Rejection::kInCollision);
+  EXPECT_EQ(selection.hands[2].rejection, Rejection::kNotSelected) << "beyond max_grasps";
+  EXPECT_EQ(selection.hands[3].merged_into, 1) << "the input hands name their proposal";
+}
+
+TEST_F(ClusterSelectorTest, UsesAFixedSupportHeightWhenTheSetHasNone) {
+  const auto selector = create("min_cluster_size: 1\nsupport_z_m: 0.02");
+  HandSet set = on_table({top_down(0, 0, 0.085)});  // fingertips at 2.5 cm
+  set.support.reset();
+  EXPECT_EQ(grasp_count(selector->select(set)), 1u);
+  set.hands[0].X_FrameHand.translation().z() = 0.075;  // fingertips at 1.5 cm
+  EXPECT_EQ(selector->select(set).hands.back().rejection, Rejection::kBelowSupport);
+}
+
+TEST_F(ClusterSelectorTest, RejectsBadParameters) {
+  EXPECT_NE(creation_error("min_cluster_sise: 3").find("did you mean 'min_cluster_size'"),
+            std::string::npos);
+  EXPECT_NE(creation_error("cluster_angle_deg: 200").find("cluster_angle_deg"), std::string::npos);
+  EXPECT_NE(creation_error("max_grasps: 0").find("max_grasps"), std::string::npos);
+  const HandSet no_cloud;
+  EXPECT_THROW(create("{}")->select(no_cloud), Error);
+}
+
+}  // namespace
+}  // namespace antipode
