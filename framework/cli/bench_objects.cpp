@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <fstream>
+#include <sstream>
 
 #include <yaml-cpp/yaml.h>
 
@@ -49,23 +51,43 @@ std::vector<BenchObject> procedural_objects(const std::string& file, double min_
   return objects;
 }
 
-std::vector<BenchObject> mesh_objects(const std::string& folder) {
+// The smallest extent of the bounding box of the vertices of the OBJ file at `path`: the
+// width a gripper must span at least (a mug 8 cm across in every direction cannot be held by
+// a 7 cm gripper, whatever the detector does).
+double smallest_extent(const fs::path& path) {
+  std::ifstream file(path);
+  Eigen::Vector3d lo = Eigen::Vector3d::Constant(1e30), hi = -lo;
+  for (std::string line; std::getline(file, line);) {
+    if (line.size() < 2 || line[0] != 'v' || line[1] != ' ') continue;
+    std::istringstream fields(line.substr(2));
+    Eigen::Vector3d v;
+    if (fields >> v.x() >> v.y() >> v.z()) lo = lo.cwiseMin(v), hi = hi.cwiseMax(v);
+  }
+  if ((hi.array() < lo.array()).any()) throw Error("mesh '" + path.string() + "' has no vertex");
+  return (hi - lo).minCoeff();
+}
+
+std::vector<BenchObject> mesh_objects(const std::string& folder, double min_width_m,
+                                      double max_width_m) {
   if (!fs::is_directory(folder))
     throw Error("--objects: '" + folder + "' is neither 'procedural' nor a folder of meshes");
   const std::string absolute = fs::absolute(folder).lexically_normal().string();
-  std::vector<std::string> names;
+  std::vector<std::pair<std::string, fs::path>> meshes;  // name, file
   for (const auto& entry : fs::directory_iterator(folder)) {
     if (entry.is_directory() && fs::exists(entry.path() / "visual.obj"))
-      names.push_back(entry.path().filename().string());
+      meshes.emplace_back(entry.path().filename().string(), entry.path() / "visual.obj");
     else if (entry.is_regular_file() && entry.path().extension() == ".obj")
-      names.push_back(entry.path().stem().string());
+      meshes.emplace_back(entry.path().stem().string(), entry.path());
   }
-  if (names.empty())
+  if (meshes.empty())
     throw Error("--objects: '" + folder + "' holds no mesh (NAME/visual.obj or NAME.obj)");
-  std::sort(names.begin(), names.end());
+  std::sort(meshes.begin(), meshes.end());
   std::vector<BenchObject> objects;
-  for (const auto& name : names)
-    objects.push_back({name, "mesh: '" + name + "', folder: '" + absolute + "'", true});
+  for (const auto& [name, file] : meshes) {
+    const double width = smallest_extent(file);
+    objects.push_back({name, "mesh: '" + name + "', folder: '" + absolute + "'",
+                       width >= min_width_m && width <= max_width_m});
+  }
   return objects;
 }
 
@@ -74,7 +96,7 @@ std::vector<BenchObject> mesh_objects(const std::string& folder) {
 std::vector<BenchObject> bench_objects(const std::string& which, const std::string& procedural_file,
                                        double min_width_m, double max_width_m) {
   if (which == "procedural") return procedural_objects(procedural_file, min_width_m, max_width_m);
-  return mesh_objects(which);
+  return mesh_objects(which, min_width_m, max_width_m);
 }
 
 Eigen::Vector3d pose_rpy(int k, int poses) {

@@ -19,8 +19,9 @@ struct BenchObject {
 
 /// The objects of `which`: "procedural" reads `procedural_file` (a list of shapes with their
 /// sizes and graspable widths, scenes/objects/procedural_test_set.yaml), anything else is a
-/// folder of meshes (subfolders holding visual.obj, or NAME.obj files), taken in name order.
-/// Objects whose graspable width lies outside [min_width_m, max_width_m] are not graspable.
+/// folder of meshes (subfolders holding visual.obj, or NAME.obj files), taken in name order,
+/// whose graspable width is the smallest extent of the mesh's bounding box. Objects whose
+/// graspable width lies outside [min_width_m, max_width_m] are not graspable.
 /// Throws antipode::Error naming the file or folder when it cannot be read or holds none.
 std::vector<BenchObject> bench_objects(const std::string& which, const std::string& procedural_file,
                                        double min_width_m, double max_width_m);

@@ -46,7 +46,7 @@ Json tally(const std::vector<const Json*>& attempts, const Filter& keep) {
 Json fidelity(const std::vector<const Json*>& attempts) {
   int executed = 0, as_detected = 0, held = 0;
   for (const Json* a : attempts) {
-    if (!a->contains("record")) continue;
+    if (!a->contains("record") || !(*a)["graspable"].get<bool>()) continue;
     ++executed;
     const Json& r = (*a)["record"];
     if (r["reached_pose"].get<bool>() || !r["stopped_by"].empty()) ++as_detected;
@@ -196,12 +196,12 @@ void print_report(std::ostream& out, const Json& attempts, const Json& summary,
     found.push_back(rate_text(summary[variant]["found_grasp"]));
     const Json& f = summary[variant]["fidelity"];
     char text[64];
-    std::snprintf(text, sizeof text, "%d/%d as planned", f["as_detected"].get<int>(),
-                  f["executed"].get<int>());
+    std::snprintf(text, sizeof text, "%d/%d held, %d planned", f["held"].get<int>(),
+                  f["executed"].get<int>(), f["as_detected"].get<int>());
     fidelity.push_back(text);
   }
   row(out, "where a grasp was found", found, label_width, cell_width);
-  row(out, "executed as planned", fidelity, label_width, cell_width);
+  row(out, "executed on graspable objects", fidelity, label_width, cell_width);
 
   out << "\nfailures (attempts)\n";
   std::vector<std::string> reasons;

@@ -20,8 +20,8 @@ std::pair<double, double> wilson_interval(int successes, int trials);
 /// counts A 2V), per_object_mean (the mean of the objects' rates, as the paper averages),
 /// outcomes and reasons (failure classes), groups (graspable / not_graspable, tuning /
 /// held_out, each with attempts, successes, success_rate, ci95, per_object_mean), fidelity
-/// (executed attempts: as_detected - the hand reached its pose or the record names what
-/// stopped it - and held, their rates) and stage_s_median.
+/// (executed attempts on graspable objects: as_detected - the hand reached its pose or the
+/// record names what stopped it - and held, their rates) and stage_s_median.
 nlohmann::ordered_json summarise(const nlohmann::ordered_json& attempts,
                                  const std::vector<std::string>& variants);
 

@@ -12,6 +12,7 @@
 #include "antipode/core/error.hpp"
 #include "antipode/interfaces/grasp_attempt.hpp"
 #include "antipode/interfaces/hand_set.hpp"
+#include "commands.hpp"
 #include "stage_timer.hpp"
 
 namespace antipode::cli {
@@ -39,33 +40,25 @@ std::string picture_file(const TaskSettings& settings, const BenchTask& task) {
       .string();
 }
 
-// The --set entries that make the tree run `task`.
+// The --set entries that make the tree run `task`, the user's last.
 std::vector<std::pair<std::string, std::string>> task_overrides(const TaskSettings& settings,
                                                                 const BenchTask& task) {
   const Eigen::Vector3d rpy = pose_rpy(task.pose, task.poses);
-  std::vector<std::string> entries = {"cell.object={" + task.object.spec_yaml + ", rpy_rad: [" +
-                                          number(rpy.x()) + ", " + number(rpy.y()) + ", " +
-                                          number(rpy.z()) + "]}",
-                                      "cell.seed=" + std::to_string(task.seed),
-                                      "cell.render_threads=" + std::to_string(settings.threads),
-                                      "sampler.threads=" + std::to_string(settings.threads),
-                                      "views=" + yaml_list(task.variant->views),
-                                      "picture_file=" + picture_file(settings, task)};
-  if (!settings.noise.empty()) entries.push_back("cell.noise=" + settings.noise);
-  if (task.variant->classifier_plugin.empty()) {
-    entries.push_back("classifier.threads=" + std::to_string(settings.threads));
-  } else {
-    entries.push_back("classifier.plugin=" + task.variant->classifier_plugin);
-    if (task.variant->classifier_plugin == "antipodal_classifier")
-      entries.push_back("classifier.threads=" + std::to_string(settings.threads));
-  }
-  entries.insert(entries.end(), settings.overrides.begin(), settings.overrides.end());
-  std::vector<std::pair<std::string, std::string>> pairs;
-  for (const auto& entry : entries) {
-    const auto equals = entry.find('=');
-    pairs.emplace_back(entry.substr(0, equals), entry.substr(equals + 1));
-  }
-  return pairs;
+  const std::string threads = std::to_string(settings.threads);
+  std::vector<std::pair<std::string, std::string>> entries = {
+      {"cell.object", "{" + task.object.spec_yaml + ", rpy_rad: [" + number(rpy.x()) + ", " +
+                          number(rpy.y()) + ", " + number(rpy.z()) + "]}"},
+      {"cell.seed", std::to_string(task.seed)},
+      {"cell.render_threads", threads},
+      {"sampler.threads", threads},
+      {"views", yaml_list(task.variant->views)},
+      {"picture_file", picture_file(settings, task)}};
+  if (!settings.noise.empty()) entries.emplace_back("cell.noise", settings.noise);
+  if (!task.variant->classifier_plugin.empty())
+    entries.emplace_back("classifier.plugin", task.variant->classifier_plugin);
+  if (task.variant->classifier_threads) entries.emplace_back("classifier.threads", threads);
+  for (auto& entry : parse_overrides(settings.overrides)) entries.push_back(std::move(entry));
+  return entries;
 }
 
 std::vector<double> vector_of(const Eigen::Vector3d& v) { return {v.x(), v.y(), v.z()}; }
@@ -97,6 +90,31 @@ nlohmann::ordered_json record_json(const GraspAttempt& r) {
           {"duration_s", r.duration_s}};
 }
 
+// How many hands each stage passed on: hypotheses, hands classified as grasps, and the
+// selection's reasons (what became of every classified hand).
+nlohmann::ordered_json funnel(const bt::Blackboard& board) {
+  nlohmann::ordered_json out = nlohmann::ordered_json::object();
+  const auto count_of = [&](const char* key) {
+    return board.get_ref<HandSetPtr>(key)->hands.size();
+  };
+  if (board.has("hands")) out["hypotheses"] = count_of("hands");
+  if (board.has("classified")) {
+    std::size_t positive = 0;
+    for (const Hand& hand : board.get_ref<HandSetPtr>("classified")->hands)
+      positive += hand.rejection == Rejection::kNone ? 1 : 0;
+    out["grasps_classified"] = positive;
+  }
+  if (board.has("grasps")) {
+    nlohmann::ordered_json reasons = nlohmann::ordered_json::object();
+    for (const Hand& hand : board.get_ref<HandSetPtr>("grasps")->hands) {
+      const std::string reason = to_string(hand.rejection);
+      reasons[reason] = reasons.value(reason, 0) + 1;
+    }
+    out["selection"] = reasons;
+  }
+  return out;
+}
+
 // The failure class of an executed attempt, from the cell's record (docs/cli.md lists them).
 std::string failure_class(const GraspAttempt& r) {
   switch (r.outcome) {
@@ -121,13 +139,24 @@ std::string failure_class(const GraspAttempt& r) {
 
 const std::vector<BenchVariant>& isolation_variants() {
   static const std::vector<BenchVariant> variants = {
-      {"nc_1v", "passthrough_classifier", {"left"}},
-      {"nc_2v", "passthrough_classifier", {"left", "right"}},
-      {"a_2v", "antipodal_classifier", {"left", "right"}},
-      {"svm_1v", "", {"left"}},
-      {"svm_2v", "", {"left", "right"}},
+      {"nc_1v", "passthrough_classifier", false, {"left"}},
+      {"nc_2v", "passthrough_classifier", false, {"left", "right"}},
+      {"a_2v", "antipodal_classifier", true, {"left", "right"}},
+      {"svm_1v", "", true, {"left"}},
+      {"svm_2v", "", true, {"left", "right"}},
   };
   return variants;
+}
+
+bt::Tree load_task_tree(const Session& session, const TaskSettings& settings,
+                        const BenchTask& task) {
+  bt::LoadOptions load;
+  load.registry = &session.registry;
+  load.components = session.host.get();
+  load.seed = task.seed;
+  load.overrides = task_overrides(settings, task);
+  load.main_tree = "attempt";
+  return bt::load_tree_string(settings.tree_yaml, settings.tree_path, load);
 }
 
 nlohmann::ordered_json run_task(const Session& session, const TaskSettings& settings,
@@ -140,14 +169,8 @@ nlohmann::ordered_json run_task(const Session& session, const TaskSettings& sett
                                 {"seed", task.seed},
                                 {"graspable", task.object.graspable},
                                 {"held_out", task.held_out}};
-  bt::LoadOptions load;
-  load.registry = &session.registry;
-  load.components = session.host.get();
-  load.seed = task.seed;
-  load.overrides = task_overrides(settings, task);
-  load.main_tree = "attempt";
   const auto start = std::chrono::steady_clock::now();
-  bt::Tree tree = bt::load_tree_string(settings.tree_yaml, settings.tree_path, load);
+  bt::Tree tree = load_task_tree(session, settings, task);
   tree.set_log_sink([](const bt::Node&, const std::string&) {});
   StageTimer timer;
   tree.add_observer(&timer);
@@ -166,6 +189,7 @@ nlohmann::ordered_json run_task(const Session& session, const TaskSettings& sett
       out["reason"] = "no grasp found";
       out["detail"] = timer.first_failure();
     }
+    out["funnel"] = funnel(board);
   } catch (const std::exception& error) {
     out["outcome"] = "error";
     out["reason"] = "error";

@@ -15,8 +15,9 @@ namespace antipode::cli {
 
 /// A variant of the paper's isolation experiment: a classifier and the views captured.
 struct BenchVariant {
-  std::string name;               ///< "nc_1v", "nc_2v", "a_2v", "svm_1v", "svm_2v"
-  std::string classifier_plugin;  ///< replaces the tree's classifier; "" keeps it (SVM)
+  std::string name;                ///< "nc_1v", "nc_2v", "a_2v", "svm_1v", "svm_2v"
+  std::string classifier_plugin;   ///< replaces the tree's classifier; "" keeps it (SVM)
+  bool classifier_threads = true;  ///< the classifier takes a `threads` parameter
   std::vector<std::string> views;
 };
 
@@ -43,6 +44,12 @@ struct BenchTask {
   std::uint64_t seed = 0;  ///< the cell's seed: sensor noise and settling
   bool held_out = false;
 };
+
+/// The pick tree's `attempt` tree, loaded for `task` (its components created, nothing run).
+/// Throws antipode::Error when it cannot be loaded (e.g. a parameter the variant's
+/// classifier does not take).
+bt::Tree load_task_tree(const Session& session, const TaskSettings& settings,
+                        const BenchTask& task);
 
 /// Runs `task` and returns its record: the task's identity, "outcome" ("no grasp found",
 /// "error" or the cell's outcome), "reason" (a failure class, see failure_class()),

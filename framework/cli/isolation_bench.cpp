@@ -17,6 +17,7 @@
 #include "antipode/core/error.hpp"
 #include "bench_report.hpp"
 #include "bench_task.hpp"
+#include "commands.hpp"
 #include "exit_codes.hpp"
 
 namespace fs = std::filesystem;
@@ -25,6 +26,11 @@ namespace antipode::cli {
 namespace {
 
 using Json = nlohmann::ordered_json;
+
+// A child process already printed why the run cannot go on; exit with its code.
+struct BenchStopped {
+  int code;
+};
 
 // The gripper's range in the paper's setting: objects narrower or wider in every
 // direction cannot be held, and finding no grasp on them is the right answer.
@@ -52,6 +58,7 @@ void check_options(const IsolationBenchOptions& o) {
   if (!fs::is_regular_file(o.tree_path)) throw Error("--tree: no tree file '" + o.tree_path + "'");
   if (!o.pictures_dir.empty() && fs::exists(o.pictures_dir) && !fs::is_directory(o.pictures_dir))
     throw Error("--pictures: '" + o.pictures_dir + "' is not a folder");
+  parse_overrides(o.set);  // throws for an entry without '='
 }
 
 std::vector<BenchTask> plan(const IsolationBenchOptions& o, const std::vector<BenchObject>& objects,
@@ -100,6 +107,35 @@ void run_share(const TaskSettings& settings, const std::vector<BenchTask>& tasks
     if (task.index % jobs == job) sink(run_task(session, settings, task));
 }
 
+// Loads the tree of each variant's first task (in a child process, so that this one starts
+// no plugin before forking its workers): a parameter the variant's plugin does not take is
+// one error line before anything runs, not one per worker.
+void check_every_variant_loads(const TaskSettings& settings, const std::vector<BenchTask>& tasks) {
+  std::cout.flush();
+  const pid_t pid = fork();
+  if (pid < 0) throw Error("cannot start a benchmark process");
+  if (pid == 0) {
+    int code = 0;
+    try {
+      const Session session = open_session();
+      std::vector<const BenchVariant*> seen;
+      for (const BenchTask& task : tasks) {
+        if (std::find(seen.begin(), seen.end(), task.variant) != seen.end()) continue;
+        seen.push_back(task.variant);
+        load_task_tree(session, settings, task);
+      }
+    } catch (const std::exception& error) {
+      std::cerr << "antipode: error: " << error.what() << "\n";
+      code = dynamic_cast<const Error*>(&error) ? kExitInvalidInput : kExitInternalError;
+    }
+    std::_Exit(code);
+  }
+  int status = 0;
+  waitpid(pid, &status, 0);
+  if (!WIFEXITED(status) || WEXITSTATUS(status) != 0)
+    throw BenchStopped{WIFEXITED(status) ? WEXITSTATUS(status) : kExitInternalError};
+}
+
 // Runs every task in `jobs` forked processes, each writing its records to a file of its
 // own; returns the records in task order.
 std::vector<Json> run_in_processes(const TaskSettings& settings,
@@ -142,7 +178,8 @@ std::vector<Json> run_in_processes(const TaskSettings& settings,
     std::ifstream file(folder / ("job-" + std::to_string(job) + ".jsonl"));
     for (std::string line; std::getline(file, line);) {
       Json record = Json::parse(line);
-      records[record["task"].get<std::size_t>()] = std::move(record);
+      const auto index = record.at("task").get<std::size_t>();
+      records.at(index) = std::move(record);
     }
   }
   fs::remove_all(folder);
@@ -185,6 +222,11 @@ int bench_isolation_command(const IsolationBenchOptions& o) {
       records.push_back(record);
     });
   } else {
+    try {
+      check_every_variant_loads(settings, tasks);
+    } catch (const BenchStopped& stopped) {
+      return stopped.code;
+    }
     records = run_in_processes(settings, tasks, o.jobs);
   }
   const double wall_s =

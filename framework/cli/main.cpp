@@ -12,7 +12,7 @@
 namespace {
 
 constexpr const char* kExamples = R"(Examples:
-  antipode run trees/demo.yaml
+  antipode run trees/pick_isolated.yaml
   antipode run trees/detect.yaml --set sampler.samples=500 --seed 3 --trace run.jsonl
   antipode validate trees/detect.yaml
   antipode detect ../shared/data/clouds/table_mug.pcd --out grasps.json --image grasps.png

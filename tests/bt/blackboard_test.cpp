@@ -198,6 +198,46 @@ trees:
   EXPECT_EQ(tree.component_names(), std::vector<std::string>{"sampler"});
 }
 
+TEST_F(EntryTest, SettingAComponentsPluginStartsItsParametersAfresh) {
+  // `classifier` was written for another plugin; its parameters mean nothing to the new one.
+  options.overrides = {{"sampler.plugin", "fake_sampler"}, {"sampler.samples", "9"}};
+  Tree tree = load(R"(
+components:
+  sampler: { plugin: fake_classifier, model: m.model, threads: 2 }
+main: t
+trees:
+  t:
+    UseSampler: { sampler: sampler, out: "{n}" }
+)");
+  EXPECT_EQ(tree.tick_once(), Status::kSuccess);
+  EXPECT_EQ(tree.blackboard().get<int>("n"), 9);
+}
+
+TEST_F(EntryTest, AnotherTreeOfTheFileCanBeRunAsTheMainOne) {
+  options.overrides = {{"n", "5"}};
+  options.main_tree = "inner";
+  Tree tree = load(R"(
+main: outer
+trees:
+  outer:
+    SubTree: { tree: inner, ports: { n: 4 } }
+  inner:
+    ports: { n: input }
+    ReadInt: { in: "{n}", expect: 5 }
+)");
+  EXPECT_EQ(tree.main_tree(), "inner");
+  EXPECT_EQ(tree.tick_once(), Status::kSuccess) << "{n} is the main blackboard's entry";
+  options.main_tree = "inne";
+  try {
+    load("main: t\ntrees:\n  t: AlwaysSuccess\n  inner: AlwaysSuccess\n");
+    FAIL() << "expected an error";
+  } catch (const Error& error) {
+    EXPECT_NE(std::string(error.what()).find("no tree 'inne' to run (did you mean 'inner'?)"),
+              std::string::npos)
+        << error.what();
+  }
+}
+
 TEST_F(EntryTest, ErrorsThrownByATickAreLocatedAtTheNode) {
   NodeManifest thrower;
   thrower.type = "Thrower";

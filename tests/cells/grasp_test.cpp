@@ -1,5 +1,7 @@
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include "antipode/core/parameters.hpp"
 #include "bullet_cell.hpp"
 #include "gripper.hpp"
@@ -37,11 +39,74 @@ TEST(Grasp, HandAroundA5cmCylinderLiftsIt) {
   EXPECT_TRUE(cell.objects().empty()) << "a grasped object is removed";
 }
 
+TEST(Grasp, TheRecordTellsWhatHappened) {
+  BulletCell cell = cylinder_cell(0.05);
+  const Hand hand = top_down(0.72, -0.12, top_of_cylinder(cell) + 0.005);
+  const GraspAttempt r = execute(cell, hand);
+  ASSERT_EQ(r.outcome, GraspOutcome::kSuccess) << r.reason;
+  EXPECT_TRUE(r.reached_pose);
+  EXPECT_LT(r.pose_error_m, 0.003);
+  EXPECT_TRUE(r.stopped_by.empty());
+  EXPECT_TRUE(r.in_collision_at_planned_pose.empty());
+  EXPECT_EQ(r.between_fingers_at_detection, std::vector<std::string>{"cylinder"});
+  EXPECT_EQ(r.between_fingers_at_closing, std::vector<std::string>{"cylinder"});
+  EXPECT_EQ(r.pinched_object, "cylinder");
+  EXPECT_NEAR(r.opening_at_contact_m, 0.05, 0.004) << "the fingers stop on the 5 cm cylinder";
+  EXPECT_GT(r.lift_m, 0.15);
+  EXPECT_TRUE(r.X_BaseHand_planned.isApprox(hand.X_FrameHand));
+  EXPECT_GT(r.duration_s, 1.0);
+  EXPECT_NE(r.reason.find("held cylinder"), std::string::npos) << r.reason;
+}
+
 TEST(Grasp, HandBesideTheCylinderClosesOnNothing) {
   BulletCell cell = cylinder_cell(0.05);
   const Hand hand = top_down(0.72, -0.22, top_of_cylinder(cell) + 0.005);
-  EXPECT_EQ(execute(cell, hand).outcome, GraspOutcome::kEmptyGrasp);
+  const GraspAttempt r = execute(cell, hand);
+  EXPECT_EQ(r.outcome, GraspOutcome::kEmptyGrasp);
+  EXPECT_TRUE(r.reached_pose);
+  EXPECT_TRUE(r.between_fingers_at_detection.empty());
+  EXPECT_NE(r.reason.find("no object was between the planned fingers"), std::string::npos)
+      << r.reason;
+  EXPECT_NEAR(r.opening_at_contact_m, HandGeometry{}.min_aperture_m, 0.001);
   EXPECT_EQ(cell.objects().size(), 1u);
+}
+
+TEST(Grasp, AHandPlannedIntoTheObjectStopsShortAndSaysOnWhat) {
+  BulletCell cell = cylinder_cell(0.05);
+  // The palm face 3 cm below the cylinder's top: the palm meets the top and stalls (the
+  // table holds the cylinder).
+  const Hand hand = top_down(0.72, -0.12, top_of_cylinder(cell) - 0.03);
+  const GraspAttempt r = execute(cell, hand);
+  EXPECT_FALSE(r.reached_pose);
+  EXPECT_GT(r.pose_error_m, 0.02);
+  EXPECT_NE(std::find(r.stopped_by.begin(), r.stopped_by.end(), "palm: cylinder"),
+            r.stopped_by.end());
+  EXPECT_NE(std::find(r.in_collision_at_planned_pose.begin(), r.in_collision_at_planned_pose.end(),
+                      "palm: cylinder"),
+            r.in_collision_at_planned_pose.end());
+  EXPECT_EQ(r.first_contact, "palm: cylinder");
+  EXPECT_NE(r.reason.find("short of the pose"), std::string::npos) << r.reason;
+}
+
+TEST(Grasp, TheFingersCloseAlikeOnAnObjectOffCentre) {
+  // A 4 cm box 1 cm off the hand's centre line: the geared fingers stay symmetric, so the
+  // first finger to touch pushes the box to the centre.
+  const SceneSpec spec = parse(
+      "placement: isolated\nobjects:\n"
+      "  - { shape: box, size_m: [0.04, 0.06, 0.08], position_m: [0.73, -0.12] }\n");
+  PhysicsWorld world(PhysicsOptions{});
+  MeshCache meshes;
+  const std::vector<int> ids = build_scene(spec, 0, meshes, world);
+  GripperOptions options;
+  const double top = spec.table.top_z_m + 0.08;
+  Gripper gripper(world, options, top_down(0.72, -0.12, top + 0.002).X_FrameHand);
+  world.step(24);
+  gripper.drive_fingers(-options.finger_speed_m_s);
+  world.step(120);
+  EXPECT_NEAR(gripper.finger_travel_m(0), gripper.finger_travel_m(1), 0.001);
+  EXPECT_NEAR(gripper.aperture_m(), 0.04, 0.003);
+  EXPECT_NEAR(world.pose(ids.at(0)).translation().x(), 0.72, 0.003) << "pushed to the centre";
+  EXPECT_EQ(gripper.pinched(0.002).size(), 1u);
 }
 
 TEST(Grasp, CylinderTooWideForTheGripperIsNotLifted) {

@@ -14,27 +14,17 @@
 
 #include "antipode/grasp/svm_model.hpp"
 #include "antipode/grasp/training_set.hpp"
+#include "support/command_output.hpp"
 
 namespace {
 namespace fs = std::filesystem;
 
-struct Result {
-  int exit_code = -1;
-  std::string out;  // stdout and stderr
-};
+using Result = antipode::testing::CommandResult;
 
 // Runs the CLI with `arguments` (shell words) and `environment` ("A=b " prefixes).
 Result run(const std::string& arguments, const std::string& environment = "") {
-  const std::string command =
-      environment + " " + std::string(ANTIPODE_CLI) + " " + arguments + " 2>&1";
-  Result result;
-  FILE* pipe = popen(command.c_str(), "r");
-  if (pipe == nullptr) return result;
-  char buffer[4096];
-  while (std::fgets(buffer, sizeof(buffer), pipe) != nullptr) result.out += buffer;
-  const int status = pclose(pipe);
-  result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return result;
+  return antipode::testing::run_command(environment + " " + std::string(ANTIPODE_CLI) + " " +
+                                        arguments);
 }
 
 class CliTest : public ::testing::Test {

@@ -37,7 +37,7 @@ struct Labelled {
 
 Labelled check(const Cloud& cloud, const Hand& hand, const AntipodalParameters& p = {}) {
   const auto normals = estimate_normals(cloud, NormalEstimationOptions{});
-  const AntipodalCount count = count_antipodal_normals(hand, normals, p.max_angle_deg);
+  const AntipodalCount count = count_antipodal_normals(hand, cloud.points_m, normals, p);
   return {count, antipodal_label(count, p.min_points)};
 }
 
@@ -75,8 +75,8 @@ TEST(AntipodalTest, BoxSeenFromOneSideIsIndeterminateAndTheSignsFollowTheFingers
 TEST(AntipodalTest, TopOfAWideBoxIsNegativeFromAnyNumberOfViews) {
   // A 20 cm box: between the fingers there is only its top face, whose normals are
   // perpendicular to the closing direction.
-  for (const auto& sensors : {std::vector<Eigen::Vector3d>{kLeft},
-                              std::vector<Eigen::Vector3d>{kLeft, kRight}}) {
+  for (const auto& sensors :
+       {std::vector<Eigen::Vector3d>{kLeft}, std::vector<Eigen::Vector3d>{kLeft, kRight}}) {
     const Cloud cloud = seen_from(box({0.2, 0.2, 0.1}), Eigen::Vector3d::Zero(), sensors);
     const Hand hand = hand_at(cloud, kDown, Eigen::Vector3d::UnitX(), {0.0, 0.0, 0.1});
     ASSERT_GT(hand.closing_points.size(), 50u);
@@ -97,6 +97,39 @@ TEST(AntipodalTest, CylinderAcrossItsAxis) {
   EXPECT_GE(result.count.facing_plus, 6);
   EXPECT_LT(result.count.facing_minus, 6);
   EXPECT_EQ(result.label, HandLabel::kIndeterminate);
+}
+
+// A 2 cm wide slab, 3 cm high, under a 1 cm square bar running along x through the whole
+// closing region, 5 mm above the slab: closing along x, the slab's faces are aligned, but
+// the points nearest each finger are the bar's, whose normals are across x.
+testing::Shape bar_over_a_slab() {
+  return [](const Eigen::Vector3d& c) {
+    Cloud cloud = testing::box_cloud(c + Eigen::Vector3d(0, 0, 0.015), Eigen::Matrix3d::Identity(),
+                                     {0.02, 0.05, 0.03});
+    testing::append(cloud, testing::box_cloud(c + Eigen::Vector3d(0, 0, 0.04),
+                                              Eigen::Matrix3d::Identity(), {0.2, 0.01, 0.01}));
+    return cloud;
+  };
+}
+
+TEST(AntipodalTest, ContactPatchesCountWhatTheFingersMeetFirst) {
+  const Cloud cloud = seen_from(bar_over_a_slab(), Eigen::Vector3d::Zero(), {kLeft, kRight});
+  const Hand hand = hand_at(cloud, kDown, Eigen::Vector3d::UnitX(), {0.0, 0.0, 0.06});
+  AntipodalParameters whole_region;
+  whole_region.contact_depth_m = 0.0;  // the paper's Definition 3
+  EXPECT_EQ(check(cloud, hand, whole_region).label, HandLabel::kPositive) << "the slab's faces";
+  const Labelled patches = check(cloud, hand, AntipodalParameters{});
+  EXPECT_EQ(patches.label, HandLabel::kNegative);
+  EXPECT_EQ(patches.count.facing_plus + patches.count.facing_minus, 0);
+  // Without the bar the slab's faces are the first contacts: positive either way.
+  const Cloud slab = seen_from(
+      [](const Eigen::Vector3d& c) {
+        return testing::box_cloud(c + Eigen::Vector3d(0, 0, 0.015), Eigen::Matrix3d::Identity(),
+                                  {0.02, 0.05, 0.03});
+      },
+      Eigen::Vector3d::Zero(), {kLeft, kRight});
+  EXPECT_EQ(check(slab, hand_at(slab, kDown, Eigen::Vector3d::UnitX(), {0.0, 0.0, 0.06})).label,
+            HandLabel::kPositive);
 }
 
 TEST(AntipodalTest, CylinderAlongItsAxisIsNegative) {

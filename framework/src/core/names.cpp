@@ -49,6 +49,8 @@ const char* to_string(Rejection reason) {
       return "cluster too small";
     case Rejection::kNotSelected:
       return "not selected";
+    case Rejection::kUnbalanced:
+      return "too far from the centre of mass";
   }
   return "?";
 }

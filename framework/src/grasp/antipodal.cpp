@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <string>
 
 #include <tbb/blocked_range.h>
@@ -21,6 +22,10 @@ void AntipodalParameters::validate() const {
     throw Error("antipodal check: max_angle_deg must be in (0, 90], got " +
                 std::to_string(max_angle_deg));
   }
+  if (!(contact_depth_m >= 0.0 && contact_depth_m < 1.0)) {
+    throw Error("antipodal check: contact_depth_m must be in [0, 1), got " +
+                std::to_string(contact_depth_m));
+  }
 }
 
 AntipodalCount count_antipodal_normals(const Hand& hand,
@@ -37,6 +42,37 @@ AntipodalCount count_antipodal_normals(const Hand& hand,
     const float c = normals[static_cast<std::size_t>(i)].dot(closing);
     if (c >= cos_theta) ++count.facing_plus;
     if (c <= -cos_theta) ++count.facing_minus;
+  }
+  return count;
+}
+
+AntipodalCount count_antipodal_normals(const Hand& hand, const std::vector<Eigen::Vector3f>& points,
+                                       const std::vector<Eigen::Vector3f>& normals,
+                                       const AntipodalParameters& parameters) {
+  if (parameters.contact_depth_m <= 0.0)
+    return count_antipodal_normals(hand, normals, parameters.max_angle_deg);
+  const float cos_theta = static_cast<float>(std::cos(parameters.max_angle_deg * M_PI / 180.0));
+  const Eigen::Vector3f closing = hand.closing().cast<float>();
+  const float origin = closing.dot(hand.position_m().cast<float>());
+  // Each point's coordinate along the closing direction, and the two first contacts.
+  float lowest = std::numeric_limits<float>::infinity(), highest = -lowest;
+  for (const std::int32_t i : hand.closing_points) {
+    if (i < 0 || static_cast<std::size_t>(i) >= points.size() ||
+        static_cast<std::size_t>(i) >= normals.size()) {
+      throw Error("antipodal check: closing point " + std::to_string(i) +
+                  " is outside the cloud of " + std::to_string(points.size()) + " points");
+    }
+    const float y = closing.dot(points[static_cast<std::size_t>(i)]) - origin;
+    lowest = std::min(lowest, y);
+    highest = std::max(highest, y);
+  }
+  const float depth = static_cast<float>(parameters.contact_depth_m);
+  AntipodalCount count;
+  for (const std::int32_t i : hand.closing_points) {
+    const float y = closing.dot(points[static_cast<std::size_t>(i)]) - origin;
+    const float c = normals[static_cast<std::size_t>(i)].dot(closing);
+    if (y >= highest - depth && c >= cos_theta) ++count.facing_plus;
+    if (y <= lowest + depth && c <= -cos_theta) ++count.facing_minus;
   }
   return count;
 }
@@ -68,8 +104,8 @@ std::vector<AntipodalCount> count_antipodal_normals(const HandSet& set,
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, set.hands.size(), 64),
                       [&](const tbb::blocked_range<std::size_t>& range) {
                         for (std::size_t h = range.begin(); h != range.end(); ++h) {
-                          counts[h] = count_antipodal_normals(set.hands[h], normals,
-                                                              options.antipodal.max_angle_deg);
+                          counts[h] = count_antipodal_normals(set.hands[h], set.cloud->points_m,
+                                                              normals, options.antipodal);
                         }
                       });
   });

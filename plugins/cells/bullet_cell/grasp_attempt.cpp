@@ -211,7 +211,8 @@ AttemptResult attempt_grasp(PhysicsWorld& world, const Eigen::Isometry3d& X_Base
       r.X_BaseHand_closing = gripper.actual_pose();
       r.pose_error_m = distance_m(r.X_BaseHand_closing, X_BaseHand);
       r.reached_pose = r.pose_error_m <= options.pose_tolerance_m;
-      if (!r.reached_pose) r.stopped_by = part_names(world, gripper.touching_parts());
+      // Resting against what stopped it, the gripper's contacts are within a hair of zero.
+      if (!r.reached_pose) r.stopped_by = part_names(world, gripper.touching_parts(0.001));
       r.between_fingers_at_closing = objects_between_fingers(world, body, r.X_BaseHand_closing);
       result.held_object = close_and_lift(world, gripper, options, r);
     }

@@ -2,8 +2,9 @@
 // by the near-antipodal check (Definition 3) on the hand set's cloud; see
 // antipode/grasp/antipodal.hpp and docs/classification.md.
 //
-// Parameters: min_points (k, 6), max_angle_deg (theta, 20), normal_radius_m (0.01),
-// min_neighbours (10), threads (0 = all).
+// Parameters: min_points (k, 6), max_angle_deg (theta, 20), contact_depth_m (0.005; 0 =
+// the paper's whole closing region), normal_radius_m (0.01), min_neighbours (10), threads
+// (0 = all).
 #include <cmath>
 #include <string>
 
@@ -47,9 +48,11 @@ AntipodalLabellingOptions read_options(const Parameters& params) {
   o.antipodal.min_points = integer_at_least(params, "min_points", o.antipodal.min_points, 1);
   o.antipodal.max_angle_deg =
       number_in(params, "max_angle_deg", o.antipodal.max_angle_deg, 0.0, false, 90.0);
+  o.antipodal.contact_depth_m =
+      number_in(params, "contact_depth_m", o.antipodal.contact_depth_m, 0.0, true, 0.1);
   o.normals.radius_m = number_in(params, "normal_radius_m", o.normals.radius_m, 0.0, false, 0.1);
-  o.normals.min_neighbours = static_cast<std::size_t>(integer_at_least(
-      params, "min_neighbours", static_cast<int>(o.normals.min_neighbours), 9));
+  o.normals.min_neighbours = static_cast<std::size_t>(
+      integer_at_least(params, "min_neighbours", static_cast<int>(o.normals.min_neighbours), 9));
   o.normals.threads = integer_at_least(params, "threads", o.normals.threads, 0);
   params.reject_unknown();
   return o;

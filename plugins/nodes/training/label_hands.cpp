@@ -27,6 +27,9 @@ class LabelHands final : public bt::SyncActionNode {
                                       "unset: the hands' own cloud"),
              bt::input_port<int>("min_points", 6, "k of Definition 3"),
              bt::input_port<double>("max_angle_deg", 20.0, "theta of Definition 3"),
+             bt::input_port<double>("contact_depth_m", AntipodalParameters{}.contact_depth_m,
+                                    "count each finger's contact patch this deep (0: the whole "
+                                    "closing region, as Definition 3)"),
              bt::input_port<double>("normal_radius_m", 0.01, "ball the normals are fitted over"),
              bt::input_port<int>("threads", 0, "workers (0: all cores)"),
              bt::output_port<HandSetPtr>("labelled", "the same hands, labelled and scored"),
@@ -47,6 +50,7 @@ class LabelHands final : public bt::SyncActionNode {
     AntipodalLabellingOptions options;
     options.antipodal.min_points = get_input<int>("min_points");
     options.antipodal.max_angle_deg = get_input<double>("max_angle_deg");
+    options.antipodal.contact_depth_m = get_input<double>("contact_depth_m");
     options.normals.radius_m = get_input<double>("normal_radius_m");
     options.normals.threads = get_input<int>("threads");
     auto labelled = std::make_shared<HandSet>(*hands);

@@ -5,6 +5,7 @@
 
 #include "antipode/core/error.hpp"
 #include "antipode/geometry/hand_body.hpp"
+#include "grasp_balance.hpp"
 #include "hand_clearance.hpp"
 #include "hand_clusters.hpp"
 
@@ -20,8 +21,14 @@ bool candidate(const Hand& hand) {
 struct Proposal {
   Hand grasp;
   std::vector<std::size_t> members;
-  double penalty = 0.0;
+  double penalty = 0.0;  // criterion 2: the aperture
+  double balance = 0.0;  // gravity's lever about the closing axis
+  double arm_m = 0.0;
 };
+
+double beyond(double value, double free) {
+  return value <= free ? 0.0 : (value - free) * (value - free);
+}
 
 }  // namespace
 
@@ -59,6 +66,9 @@ HandSet ClusterSelector::select(const HandSet& in) const {
   std::stable_sort(order.begin(), order.end(),
                    [&](std::size_t a, std::size_t b) { return hands[a].score > hands[b].score; });
 
+  const std::vector<Eigen::Vector3f> objects = object_points(*in.cloud, support, 0.01f);
+  const Eigen::Vector3d up =
+      support ? Eigen::Vector3d(support->normal.cast<double>()) : Eigen::Vector3d::UnitZ();
   std::vector<Proposal> proposals;
   for (auto& members :
        cluster_hands(hands, order, {options_.cluster_distance_m, options_.cluster_angle_deg})) {
@@ -73,11 +83,17 @@ HandSet ClusterSelector::select(const HandSet& in) const {
       p.grasp.X_FrameHand = hands[members.front()].X_FrameHand;  // the seed passed them
     p.members = std::move(members);
     p.penalty = aperture_penalty(p.grasp.width_m, g, options_.aperture_margin_m);
+    if (const auto centroid =
+            centroid_near(objects, grasp_centre(p.grasp, g), options_.object_radius_m)) {
+      p.arm_m = torque_arm_m(p.grasp, g, *centroid, up);
+      p.balance = beyond(p.arm_m, options_.balance_free_m);
+    }
     proposals.push_back(std::move(p));
   }
   std::stable_sort(proposals.begin(), proposals.end(), [&](const Proposal& a, const Proposal& b) {
-    if (std::abs(a.penalty - b.penalty) > options_.penalty_tolerance_m2)
-      return a.penalty < b.penalty;
+    const double tolerance = options_.penalty_tolerance_m2;
+    if (std::abs(a.penalty - b.penalty) > tolerance) return a.penalty < b.penalty;
+    if (std::abs(a.balance - b.balance) > tolerance) return a.balance < b.balance;
     return a.grasp.score > b.grasp.score;
   });
 
@@ -87,7 +103,9 @@ HandSet ClusterSelector::select(const HandSet& in) const {
   for (const Proposal& p : proposals) {
     Hand grasp = p.grasp;
     grasp.rejection = Rejection::kNone;
-    if (kept.size() >= options_.max_grasps)
+    if (p.arm_m > options_.max_torque_arm_m)
+      grasp.rejection = Rejection::kUnbalanced;
+    else if (kept.size() >= options_.max_grasps)
       grasp.rejection = Rejection::kNotSelected;
     else if (!approach_is_free(grasp, g, *in.cloud, options_.standoff_m))
       grasp.rejection = Rejection::kInCollision;

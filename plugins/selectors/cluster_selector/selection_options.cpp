@@ -36,6 +36,9 @@ SelectionOptions read_selection_options(const Parameters& params) {
   o.min_cluster_size =
       std::size_t(in_range(params, "min_cluster_size", double(o.min_cluster_size), 1, 1e6));
   o.aperture_margin_m = in_range(params, "aperture_margin_m", o.aperture_margin_m, 0.0, 0.1);
+  o.balance_free_m = in_range(params, "balance_free_m", o.balance_free_m, 0.0, 1.0);
+  o.max_torque_arm_m = in_range(params, "max_torque_arm_m", o.max_torque_arm_m, 0.0, 1.0);
+  o.object_radius_m = in_range(params, "object_radius_m", o.object_radius_m, 0.01, 2.0);
   o.penalty_tolerance_m2 =
       in_range(params, "penalty_tolerance_m2", o.penalty_tolerance_m2, 0.0, 1.0);
   o.max_grasps = std::size_t(in_range(params, "max_grasps", double(o.max_grasps), 1, 1e6));

@@ -27,7 +27,16 @@ struct SelectionOptions {
   /// Criterion 2: the penalty of a grasp is zero while the object's width stays this far
   /// from both aperture limits, and grows quadratically closer to them.
   double aperture_margin_m = 0.005;
-  /// Penalties closer than this (m^2) tie, and the classifier's score decides.
+  /// Then balance: the penalty is zero while gravity's lever arm about the closing axis
+  /// (from the centroid of the object points within `object_radius_m`) is at most this,
+  /// and grows quadratically beyond (grasp_balance.hpp).
+  double balance_free_m = 0.02;
+  /// Grasps whose lever arm exceeds this are dropped (kUnbalanced): the object would turn
+  /// out of the fingers.
+  double max_torque_arm_m = 0.03;
+  double object_radius_m = 0.15;
+  /// Penalties closer than this (m^2) tie, and the next criterion decides; the last is the
+  /// cluster's score.
   double penalty_tolerance_m2 = 1e-6;
   /// How many grasps to return.
   std::size_t max_grasps = 10;

@@ -31,6 +31,7 @@ enum class Rejection : std::uint8_t {
   kClustered,      ///< merged into a cluster's grasp (see Hand::merged_into)
   kSmallCluster,   ///< in a cluster with fewer hands than the selector's minimum
   kNotSelected,    ///< acceptable, but ranked below the grasps the selector returns
+  kUnbalanced,     ///< too far from the object's centre of mass: it would turn out
 };
 
 const char* to_string(HandLabel label);

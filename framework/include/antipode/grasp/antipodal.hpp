@@ -9,6 +9,13 @@
 /// *face the +y finger*. Likewise points with n . closing <= -cos theta face the -y finger,
 /// which closes along +closing. Definition 3 asks for k points of each kind in the closing
 /// region.
+///
+/// Contact patches. Definition 3 counts aligned points anywhere between the fingers, but a
+/// closing finger first meets the points nearest to it: across a box's edge, the aligned
+/// points of a rounded lip may lie between the fingers while the fingers meet the two faces
+/// at 45 degrees, and the object squirts out. With `contact_depth_m` > 0, only the points
+/// within that distance of each finger's first contact (the closing-region points farthest
+/// along +closing for the +y finger, along -closing for the -y finger) are counted for it.
 
 #include <cstdint>
 #include <vector>
@@ -27,6 +34,10 @@ struct AntipodalParameters {
   int min_points = 6;
   /// theta in degrees, in (0, 90] (the paper: 20).
   double max_angle_deg = 20.0;
+  /// Count, for each finger, only the points within this distance (m) of its first contact
+  /// along the closing direction; 0 counts the whole closing region (the paper's
+  /// Definition 3). See "Contact patches" above.
+  double contact_depth_m = 0.005;
 
   /// Throws antipode::Error naming the offending field.
   void validate() const;
@@ -44,6 +55,13 @@ struct AntipodalCount {
 AntipodalCount count_antipodal_normals(const Hand& hand,
                                        const std::vector<Eigen::Vector3f>& normals,
                                        double max_angle_deg);
+
+/// The same, counting for each finger only its contact patch when
+/// `parameters.contact_depth_m` > 0 (`points` are the cloud's, indexed like `normals`).
+/// Throws antipode::Error for an index outside `points` or `normals`.
+AntipodalCount count_antipodal_normals(const Hand& hand, const std::vector<Eigen::Vector3f>& points,
+                                       const std::vector<Eigen::Vector3f>& normals,
+                                       const AntipodalParameters& parameters);
 
 /// The label for `count` with threshold k = `min_points`:
 /// - kPositive: at least k points face each finger (Definition 3 holds);
