@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+
+#include <Eigen/Geometry>
 #include <fstream>
 #include <sstream>
 
@@ -21,8 +23,7 @@ std::string flow_list(const YAML::Node& list) {
   return text + "]";
 }
 
-std::vector<BenchObject> procedural_objects(const std::string& file, double min_width_m,
-                                            double max_width_m) {
+std::vector<BenchObject> procedural_objects(const std::string& file) {
   YAML::Node root;
   try {
     root = YAML::LoadFile(file);
@@ -39,8 +40,7 @@ std::vector<BenchObject> procedural_objects(const std::string& file, double min_
       object.name = item["name"].as<std::string>();
       object.spec_yaml =
           "shape: " + item["shape"].as<std::string>() + ", size_m: " + flow_list(item["size_m"]);
-      const double width = item["graspable_width_m"].as<double>();
-      object.graspable = width >= min_width_m && width <= max_width_m;
+      object.width_m = item["graspable_width_m"].as<double>();
       objects.push_back(std::move(object));
     } catch (const YAML::Exception&) {
       throw Error("procedural test set '" + file + "', object " +
@@ -51,24 +51,21 @@ std::vector<BenchObject> procedural_objects(const std::string& file, double min_
   return objects;
 }
 
-// The smallest extent of the bounding box of the vertices of the OBJ file at `path`: the
-// width a gripper must span at least (a mug 8 cm across in every direction cannot be held by
-// a 7 cm gripper, whatever the detector does).
-double smallest_extent(const fs::path& path) {
+// The vertices of the OBJ file at `path`.
+std::vector<Eigen::Vector3d> obj_vertices(const fs::path& path) {
   std::ifstream file(path);
-  Eigen::Vector3d lo = Eigen::Vector3d::Constant(1e30), hi = -lo;
+  std::vector<Eigen::Vector3d> vertices;
   for (std::string line; std::getline(file, line);) {
     if (line.size() < 2 || line[0] != 'v' || line[1] != ' ') continue;
     std::istringstream fields(line.substr(2));
     Eigen::Vector3d v;
-    if (fields >> v.x() >> v.y() >> v.z()) lo = lo.cwiseMin(v), hi = hi.cwiseMax(v);
+    if (fields >> v.x() >> v.y() >> v.z()) vertices.push_back(v);
   }
-  if ((hi.array() < lo.array()).any()) throw Error("mesh '" + path.string() + "' has no vertex");
-  return (hi - lo).minCoeff();
+  if (vertices.empty()) throw Error("mesh '" + path.string() + "' has no vertex");
+  return vertices;
 }
 
-std::vector<BenchObject> mesh_objects(const std::string& folder, double min_width_m,
-                                      double max_width_m) {
+std::vector<BenchObject> mesh_objects(const std::string& folder) {
   if (!fs::is_directory(folder))
     throw Error("--objects: '" + folder + "' is neither 'procedural' nor a folder of meshes");
   const std::string absolute = fs::absolute(folder).lexically_normal().string();
@@ -84,19 +81,47 @@ std::vector<BenchObject> mesh_objects(const std::string& folder, double min_widt
   std::sort(meshes.begin(), meshes.end());
   std::vector<BenchObject> objects;
   for (const auto& [name, file] : meshes) {
-    const double width = smallest_extent(file);
-    objects.push_back({name, "mesh: '" + name + "', folder: '" + absolute + "'",
-                       width >= min_width_m && width <= max_width_m});
+    BenchObject object{name, "mesh: '" + name + "', folder: '" + absolute + "'", 0.0, nullptr};
+    auto vertices = std::make_shared<const std::vector<Eigen::Vector3d>>(obj_vertices(file));
+    Eigen::Vector3d lo = vertices->front(), hi = lo;
+    for (const auto& v : *vertices) lo = lo.cwiseMin(v), hi = hi.cwiseMax(v);
+    object.width_m = (hi - lo).minCoeff();
+    object.vertices = std::move(vertices);
+    objects.push_back(std::move(object));
   }
   return objects;
 }
 
 }  // namespace
 
-std::vector<BenchObject> bench_objects(const std::string& which, const std::string& procedural_file,
-                                       double min_width_m, double max_width_m) {
-  if (which == "procedural") return procedural_objects(procedural_file, min_width_m, max_width_m);
-  return mesh_objects(which, min_width_m, max_width_m);
+std::vector<BenchObject> bench_objects(const std::string& which,
+                                       const std::string& procedural_file) {
+  if (which == "procedural") return procedural_objects(procedural_file);
+  return mesh_objects(which);
+}
+
+bool BenchObject::graspable_in_pose(int k, int poses, double min_width_m,
+                                    double max_width_m) const {
+  if (!vertices) return width_m >= min_width_m && width_m <= max_width_m;
+  const Eigen::Vector3d rpy = pose_rpy(k, poses);
+  const Eigen::Matrix3d rotation = (Eigen::AngleAxisd(rpy.z(), Eigen::Vector3d::UnitZ()) *
+                                    Eigen::AngleAxisd(rpy.x(), Eigen::Vector3d::UnitX()))
+                                       .toRotationMatrix();
+  // The narrowest horizontal extent, over directions one degree apart.
+  double narrowest = 1e30;
+  for (int degree = 0; degree < 180; ++degree) {
+    const double a = degree * M_PI / 180.0;
+    const Eigen::Vector3d across =
+        rotation.transpose() * Eigen::Vector3d(std::cos(a), std::sin(a), 0);
+    double lo = 1e30, hi = -1e30;
+    for (const auto& v : *vertices) {
+      const double d = across.dot(v);
+      lo = std::min(lo, d);
+      hi = std::max(hi, d);
+    }
+    narrowest = std::min(narrowest, hi - lo);
+  }
+  return narrowest >= min_width_m && narrowest <= max_width_m;
 }
 
 Eigen::Vector3d pose_rpy(int k, int poses) {

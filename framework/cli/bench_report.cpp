@@ -143,7 +143,8 @@ void print_report(std::ostream& out, const Json& attempts, const Json& summary,
                   const std::vector<std::string>& variants) {
   std::vector<std::string> objects;
   std::map<std::string, std::map<std::string, std::pair<int, int>>> cells;  // object, variant
-  std::map<std::string, std::string> marks;
+  std::map<std::string, std::pair<int, int>> poses;  // graspable, all (of the first variant)
+  std::map<std::string, bool> held_out;
   for (const Json& a : attempts) {
     const std::string object = a["object"];
     if (std::find(objects.begin(), objects.end(), object) == objects.end())
@@ -151,10 +152,22 @@ void print_report(std::ostream& out, const Json& attempts, const Json& summary,
     auto& cell = cells[object][a["variant"].get<std::string>()];
     cell.first += succeeded(a) ? 1 : 0;
     ++cell.second;
-    marks[object] = std::string(a["graspable"].get<bool>() ? "" : " (not graspable)") +
-                    (a["held_out"].get<bool>() ? " (held out)" : "");
+    if (a["variant"] == variants.front()) {
+      poses[object].first += a["graspable"].get<bool>() ? 1 : 0;
+      ++poses[object].second;
+    }
+    held_out[object] = a["held_out"].get<bool>();
   }
-  const int label_width = 34, cell_width = 20;
+  std::map<std::string, std::string> marks;
+  for (const auto& [object, counts] : poses) {
+    if (counts.first == 0)
+      marks[object] = " (not graspable)";
+    else if (counts.first < counts.second)
+      marks[object] = " (graspable in " + std::to_string(counts.first) + "/" +
+                      std::to_string(counts.second) + ")";
+    if (held_out[object]) marks[object] += " (held out)";
+  }
+  const int label_width = 42, cell_width = 20;
   row(out, "object", variants, label_width, cell_width);
   for (const auto& object : objects) {
     std::vector<std::string> texts;

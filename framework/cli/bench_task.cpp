@@ -161,14 +161,10 @@ bt::Tree load_task_tree(const Session& session, const TaskSettings& settings,
 
 nlohmann::ordered_json run_task(const Session& session, const TaskSettings& settings,
                                 const BenchTask& task) {
-  nlohmann::ordered_json out = {{"task", task.index},
-                                {"attempt", task.attempt},
-                                {"object", task.object.name},
-                                {"pose", task.pose},
-                                {"variant", task.variant->name},
-                                {"seed", task.seed},
-                                {"graspable", task.object.graspable},
-                                {"held_out", task.held_out}};
+  nlohmann::ordered_json out = {
+      {"task", task.index},          {"attempt", task.attempt},       {"object", task.object.name},
+      {"pose", task.pose},           {"variant", task.variant->name}, {"seed", task.seed},
+      {"graspable", task.graspable}, {"held_out", task.held_out}};
   const auto start = std::chrono::steady_clock::now();
   bt::Tree tree = load_task_tree(session, settings, task);
   tree.set_log_sink([](const bt::Node&, const std::string&) {});

@@ -43,6 +43,7 @@ struct BenchTask {
   const BenchVariant* variant = nullptr;
   std::uint64_t seed = 0;  ///< the cell's seed: sensor noise and settling
   bool held_out = false;
+  bool graspable = true;  ///< the gripper can hold the object in this pose at all
 };
 
 /// The pick tree's `attempt` tree, loaded for `task` (its components created, nothing run).

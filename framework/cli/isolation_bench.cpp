@@ -54,6 +54,7 @@ std::vector<const BenchVariant*> chosen_variants(const std::vector<std::string>&
 void check_options(const IsolationBenchOptions& o) {
   if (o.poses < 1 || o.poses > 360) throw Error("--poses must be in 1..360");
   if (o.attempts < 0) throw Error("--attempts must be 0 (every object in every pose) or more");
+  if (o.first < 0) throw Error("--first must be 0 or more");
   if (o.jobs < 1 || o.jobs > 64) throw Error("--jobs must be in 1..64");
   if (!fs::is_regular_file(o.tree_path)) throw Error("--tree: no tree file '" + o.tree_path + "'");
   if (!o.pictures_dir.empty() && fs::exists(o.pictures_dir) && !fs::is_directory(o.pictures_dir))
@@ -71,7 +72,7 @@ std::vector<BenchTask> plan(const IsolationBenchOptions& o, const std::vector<Be
   const int n = int(objects.size());
   const int attempts = o.attempts > 0 ? o.attempts : n * o.poses;
   std::vector<BenchTask> tasks;
-  for (int i = 0; i < attempts; ++i)
+  for (int i = o.first; i < o.first + attempts; ++i)
     for (const BenchVariant* variant : variants) {
       BenchTask t;
       t.index = int(tasks.size());
@@ -83,6 +84,8 @@ std::vector<BenchTask> plan(const IsolationBenchOptions& o, const std::vector<Be
       t.seed = o.seed + std::uint64_t(i);
       t.held_out =
           std::find(o.held_out.begin(), o.held_out.end(), t.object.name) != o.held_out.end();
+      t.graspable =
+          t.object.graspable_in_pose(t.pose, o.poses, kMinGraspableWidthM, kMaxGraspableWidthM);
       tasks.push_back(std::move(t));
     }
   return tasks;
@@ -194,8 +197,7 @@ std::vector<Json> run_in_processes(const TaskSettings& settings,
 int bench_isolation_command(const IsolationBenchOptions& o) {
   check_options(o);
   const std::vector<const BenchVariant*> variants = chosen_variants(o.variants);
-  const std::vector<BenchObject> objects =
-      bench_objects(o.objects, o.procedural_file, kMinGraspableWidthM, kMaxGraspableWidthM);
+  const std::vector<BenchObject> objects = bench_objects(o.objects, o.procedural_file);
   const std::vector<BenchTask> tasks = plan(o, objects, variants);
   if (!o.pictures_dir.empty()) fs::create_directories(o.pictures_dir);
 

@@ -15,6 +15,7 @@ struct IsolationBenchOptions {
   std::vector<std::string> variants;  ///< empty: all five
   int poses = 8;                      ///< systematic poses per object
   int attempts = 0;                   ///< per variant; 0: every object in every pose
+  int first = 0;                      ///< the first attempt's number (to rerun one attempt)
   std::uint64_t seed = 1000;          ///< attempt i uses cell seed `seed + i`
   int jobs = 1;                       ///< processes sharing the machine's cores
   std::string report_path;            ///< JSON report ("" = none)

@@ -116,7 +116,9 @@ void add_bench(CLI::App& app, Commands& commands) {
       ->add_option("--attempts", o.attempts,
                    "Attempts per variant, objects in turn (0: every object in every pose)")
       ->capture_default_str();
-  isolation->add_option("--seed", o.seed, "Cell seed of the first attempt")->capture_default_str();
+  isolation->add_option("--first", o.first, "Number of the first attempt (e.g. to rerun one)")
+      ->capture_default_str();
+  isolation->add_option("--seed", o.seed, "Cell seed of attempt 0")->capture_default_str();
   isolation->add_option("--jobs", o.jobs, "Processes (the same results for any number)")
       ->capture_default_str();
   isolation->add_option("--report", o.report_path, "Write the report as JSON");

@@ -24,12 +24,23 @@ Eigen::Isometry3d offset(double x, double y, double z) {
 // at -y and +y), one box shape and collider per part, and the constraints.
 struct Gripper::Parts {
   std::unique_ptr<btMultiBody> body;
-  std::vector<std::unique_ptr<btBoxShape>> shapes;
+  std::unique_ptr<btBoxShape> palm_shape;
+  std::vector<std::unique_ptr<btCollisionShape>> finger_parts;  // owned children of compounds
+  btCollisionShape* finger_shapes[2] = {nullptr, nullptr};
   std::vector<std::unique_ptr<btMultiBodyLinkCollider>> colliders;  // palm, finger -y, +y
   std::vector<std::unique_ptr<btMultiBodyConstraint>> constraints;
   btMultiBodyFixedConstraint* drive = nullptr;
   btMultiBodyJointMotor* motors[2] = {nullptr, nullptr};
 };
+
+namespace {
+
+// A finger: a box with a half-round tip (Baxter's fingers end in half cylinders), in the
+// finger's frame (its box centre). A rounded tip slides over an edge or a curved surface
+// where a box corner catches and jolts; the tip's cylinder runs along the hand axis.
+btCollisionShape* finger_shape(const HandGeometry& g, btScalar margin, Gripper::Parts& p);
+
+}  // namespace
 
 Gripper::Gripper(PhysicsWorld& world, const GripperOptions& options,
                  const Eigen::Isometry3d& X_BaseHand)
@@ -43,13 +54,13 @@ Gripper::Gripper(PhysicsWorld& world, const GripperOptions& options,
   const btVector3 finger_half(btScalar(g.depth_m / 2), btScalar(g.finger_width_m / 2),
                               btScalar(g.height_m / 2));
   Parts& p = *parts_;
-  for (const btVector3& half : {palm_half, finger_half, finger_half}) {
-    p.shapes.push_back(std::make_unique<btBoxShape>(half));
-    p.shapes.back()->setMargin(btScalar(world.options().margin_m));
-  }
+  const btScalar margin = btScalar(world.options().margin_m);
+  p.palm_shape = std::make_unique<btBoxShape>(palm_half);
+  p.palm_shape->setMargin(margin);
+  for (int side = 0; side < 2; ++side) p.finger_shapes[side] = finger_shape(g, margin, p);
   btVector3 palm_inertia, finger_inertia;
-  p.shapes[0]->calculateLocalInertia(btScalar(options.palm_mass_kg), palm_inertia);
-  p.shapes[1]->calculateLocalInertia(btScalar(options.finger_mass_kg), finger_inertia);
+  p.palm_shape->calculateLocalInertia(btScalar(options.palm_mass_kg), palm_inertia);
+  btBoxShape(finger_half).calculateLocalInertia(btScalar(options.finger_mass_kg), finger_inertia);
 
   // Base frame: the palm box's centre, t/2 behind the palm face. Finger joints move inwards:
   // joint position 0 is fully open, positive closes.
@@ -75,7 +86,8 @@ Gripper::Gripper(PhysicsWorld& world, const GripperOptions& options,
   const char* names[] = {"palm", "finger -y", "finger +y"};
   for (int part = 0; part < 3; ++part) {
     auto collider = std::make_unique<btMultiBodyLinkCollider>(p.body.get(), part - 1);
-    collider->setCollisionShape(p.shapes[std::size_t(part)].get());
+    collider->setCollisionShape(part == 0 ? static_cast<btCollisionShape*>(p.palm_shape.get())
+                                          : p.finger_shapes[part - 1]);
     collider->setFriction(btScalar(options.friction));
     dynamics.addCollisionObject(collider.get(), btBroadphaseProxy::DefaultFilter,
                                 btBroadphaseProxy::AllFilter);
@@ -130,6 +142,33 @@ Gripper::~Gripper() {
   dynamics.removeMultiBody(p.body.get());
   for (int id : {palm_, fingers_[0], fingers_[1]}) world_.unregister_part(id);
 }
+
+namespace {
+
+btCollisionShape* finger_shape(const HandGeometry& g, btScalar margin, Gripper::Parts& p) {
+  const double r = g.finger_width_m / 2;
+  const double box_depth = g.depth_m - r;
+  auto box = std::make_unique<btBoxShape>(
+      btVector3(btScalar(box_depth / 2), btScalar(r), btScalar(g.height_m / 2)));
+  auto tip = std::make_unique<btCylinderShapeZ>(
+      btVector3(btScalar(r), btScalar(r), btScalar(g.height_m / 2)));
+  box->setMargin(margin);
+  tip->setMargin(margin);
+  auto finger = std::make_unique<btCompoundShape>();
+  btTransform at;
+  at.setIdentity();
+  at.setOrigin(btVector3(btScalar(-g.depth_m / 2 + box_depth / 2), 0, 0));
+  finger->addChildShape(at, box.get());
+  at.setOrigin(btVector3(btScalar(g.depth_m / 2 - r), 0, 0));
+  finger->addChildShape(at, tip.get());
+  btCollisionShape* shape = finger.get();
+  p.finger_parts.push_back(std::move(box));
+  p.finger_parts.push_back(std::move(tip));
+  p.finger_parts.push_back(std::move(finger));
+  return shape;
+}
+
+}  // namespace
 
 void Gripper::move_to(const Eigen::Isometry3d& X_BaseHand) { X_BaseHand_ = X_BaseHand; }
 

@@ -37,6 +37,7 @@ class Gripper {
  public:
   Gripper(PhysicsWorld& world, const GripperOptions& options, const Eigen::Isometry3d& X_BaseHand);
   ~Gripper();
+  struct Parts;
   Gripper(const Gripper&) = delete;
   Gripper& operator=(const Gripper&) = delete;
 
@@ -61,7 +62,6 @@ class Gripper {
   std::set<int> pinched(double tolerance_m) const;
 
  private:
-  struct Parts;
   /// Before every physics step: the drive's target and the gravity compensation.
   void drive();
 
