@@ -52,7 +52,9 @@ void expect_valid_hands(const Cloud& cloud, const HandSearchResult& result,
     EXPECT_FALSE(hand.closing_points.empty()) << "hand " << h;
     EXPECT_GE(hand.width_m, 0.0);
     EXPECT_LT(hand.width_m, parameters.hand.max_aperture_m);
-    EXPECT_GE(hand.score, parameters.min_bite_m - 1e-6);
+    const double min_bite =
+        result.support_plane ? parameters.min_bite_at_support_m : parameters.min_bite_m;
+    EXPECT_GE(hand.score, min_bite - 1e-6);
     EXPECT_EQ(hand.rejection, Rejection::kNone);
     const auto colliding = points_in_collision(body, hand.X_FrameHand, cloud.points_m);
     EXPECT_TRUE(colliding.empty()) << "hand " << h << " collides with " << colliding.size()

@@ -152,13 +152,15 @@ TEST(HandSearchTest, NoHandReachesIntoTheSupportPlane) {
   EXPECT_GT(s.result.support_plane->normal.cast<double>().dot(up), 0.999);
   EXPECT_GT(s.result.stats.on_support, s.cloud.size() / 2);
   ASSERT_GE(s.result.hands.size(), 20u);
-  const double margin = parameters.support.distance_m + 1e-4;
+  // The fitted plane lies within a millimetre of the table's.
+  const double floor = parameters.support_clearance_m - 1e-3;
   for (const Hand& hand : s.result.hands) {
     const Eigen::Vector3d sample = s.cloud.points_m[hand.sample_index].cast<double>();
     EXPECT_GT((sample - on_table).dot(up), parameters.support.distance_m - 1e-3);
-    EXPECT_GE(lowest_point(hand, parameters, up, on_table), -margin)
-        << "hand at " << hand.position_m().transpose() << " reaches into the table";
+    EXPECT_GE(lowest_point(hand, parameters, up, on_table), floor)
+        << "hand at " << hand.position_m().transpose() << " comes too near the table";
   }
+  const double margin = parameters.support.distance_m;
   // Without the support, hands grip the table's border and reach below it.
   parameters.support_plane = SupportPlaneMode::kNone;
   const Search none = search(cloud, parameters);
@@ -168,6 +170,37 @@ TEST(HandSearchTest, NoHandReachesIntoTheSupportPlane) {
     below += lowest_point(hand, parameters, up, on_table) < -margin;
   }
   EXPECT_GT(below, 0u);
+}
+
+TEST(HandSearchTest, TheSupportStopsTheHandAboveALowObject) {
+  // A box 2.5 cm high and 5 cm wide lying on the table: from above, the fingers reach the
+  // table's clearance before the palm meets the box, so the support stops the push, and the
+  // hand holds the box over less than min_bite_m.
+  const Eigen::Vector3d up = Eigen::Vector3d(0.0, -1.0, -1.0).normalized();
+  const Eigen::Vector3d on_table(0.0, 0.0, 0.7);
+  Cloud cloud = testing::plane_cloud(on_table, up, 0.3);
+  const Eigen::Vector3d x = Eigen::Vector3d::UnitX(), y = up.cross(x);
+  Eigen::Matrix3d rotation;
+  rotation << x, y, up;
+  testing::append(cloud, testing::box_cloud(on_table + 0.0125 * up, rotation,
+                                            Eigen::Vector3d(0.05, 0.12, 0.025)));
+  HandSearchParameters parameters = small_search();
+  parameters.samples = 1000;
+  const Search s = search(cloud, parameters);
+  std::size_t from_above = 0;
+  for (const Hand& hand : s.result.hands) {
+    if (hand.approach().dot(-up) < 0.95) continue;
+    ++from_above;
+    const double lowest = lowest_point(hand, parameters, up, on_table);
+    EXPECT_GE(lowest, parameters.support_clearance_m - 1e-3);
+    EXPECT_LT(hand.score, parameters.min_bite_m);
+    EXPECT_GE(hand.score, parameters.min_bite_at_support_m - 1e-6);
+  }
+  EXPECT_GT(from_above, 0u);
+  // Asking the full bite of such hands leaves none from above.
+  parameters.min_bite_at_support_m = parameters.min_bite_m;
+  const Search strict = search(cloud, parameters);
+  for (const Hand& hand : strict.result.hands) EXPECT_LT(hand.approach().dot(-up), 0.95);
 }
 
 TEST(HandSearchTest, ResultDoesNotDependOnThreadCount) {

@@ -126,28 +126,37 @@ Contacts nearest_contacts(const GridSpec& spec, float offset, const GridScratch&
 #endif
 
 // Pushes the hand centred at closing offset `offset` forward from spec.start_m until it
-// touches a point, then judges it.
-PoseOutcome evaluate_pose(const GridSpec& spec, float offset, const GridScratch& g) {
+// touches a point, or until its body comes within the support clearance of the support plane
+// (palm position `palm_limit`; infinite when pushing forward does not lower the hand), then
+// judges it. A hand the support stopped needs only spec.min_bite_at_support_m of bite: the
+// object is held down to where the fingers may go.
+PoseOutcome evaluate_pose(const GridSpec& spec, float offset, float palm_limit,
+                          const GridScratch& g) {
   const Contacts contacts = nearest_contacts(spec, offset, g);
   PoseOutcome pose;
   // orient() dropped every point behind the palm's starting position, so a contact at or
   // before the start means the hand collides there.
   if (contacts.first <= spec.start_m) return pose.rejection = Rejection::kInCollision, pose;
+  if (palm_limit < spec.start_m) return pose.rejection = Rejection::kBelowSupport, pose;
   pose.palm_m = std::max(spec.start_m, contacts.first - spec.clearance_m);
+  const bool at_support = pose.palm_m > palm_limit;
+  if (at_support) pose.palm_m = palm_limit;
   if (!(contacts.between <= pose.palm_m + spec.depth_m)) {
     return pose.rejection = Rejection::kEmptyClosingRegion, pose;
   }
   pose.bite_m = pose.palm_m + spec.depth_m - contacts.between;
-  if (pose.bite_m < spec.min_bite_m) return pose.rejection = Rejection::kTooWide, pose;
+  if (pose.bite_m < (at_support ? spec.min_bite_at_support_m : spec.min_bite_m)) {
+    return pose.rejection = Rejection::kTooWide, pose;
+  }
   pose.acceptable = true;
   return pose;
 }
 
-void count(const PoseOutcome& pose, bool below, bool hidden, HandSearchStats& stats) {
+void count(const PoseOutcome& pose, bool hidden, HandSearchStats& stats) {
   ++stats.poses;
   if (pose.acceptable)
     ++stats.acceptable;
-  else if (below)
+  else if (pose.rejection == Rejection::kBelowSupport)
     ++stats.below_support;
   else if (hidden)
     ++stats.hidden;
@@ -235,12 +244,19 @@ struct BodyDepth {
   }
 };
 
-// True when the body of the hand at `pose` reaches more than the margin below the support.
-bool below_support(const SampleContext& context, const GridSpec& spec, const BodyDepth& body,
-                   float offset, const PoseOutcome& pose) {
-  const float origin = context.support->distance(context.frame.origin_m) +
-                       pose.palm_m * body.along_approach + offset * body.along_closing;
-  return origin + body.lowest(spec) < -spec.support_margin_m;
+// The height of the body's lowest point above the support is linear in the palm position:
+// h(palm) = h0 + palm * along_approach. The push may go on while h >= the support clearance,
+// so it ends at palm = (clearance - h0) / along_approach when the approach points down; when
+// it does not, pushing never lowers the hand, and the start decides: -infinity (rejected) if
+// the body starts below the clearance, +infinity (no limit) otherwise.
+float support_palm_limit(const SampleContext& context, const GridSpec& spec, const BodyDepth& body,
+                         float offset) {
+  if (context.support == nullptr) return kInfinity;
+  const float h0 = context.support->distance(context.frame.origin_m) + offset * body.along_closing +
+                   body.lowest(spec);
+  if (body.along_approach < -1e-6f) return (spec.support_clearance_m - h0) / body.along_approach;
+  const float h_start = h0 + spec.start_m * body.along_approach;
+  return h_start >= spec.support_clearance_m ? kInfinity : -kInfinity;
 }
 
 // True when a finger of the hand at `pose` reaches into space no sensor saw.
@@ -272,10 +288,11 @@ GridSpec::GridSpec(const HandSearchParameters& p) {
   start_m = static_cast<float>(-(h.depth_m - h.init_bite_m));
   clearance_m = static_cast<float>(p.clearance_m);
   min_bite_m = static_cast<float>(p.min_bite_m);
+  min_bite_at_support_m = static_cast<float>(p.min_bite_at_support_m);
   min_view_cosine = static_cast<float>(std::cos(p.max_view_angle_deg * M_PI / 180.0));
   keep_all_positions = p.keep_all_positions;
   occlusion_margin_m = static_cast<float>(p.occlusion_margin_m);
-  support_margin_m = p.support.distance_m;
+  support_clearance_m = static_cast<float>(p.support_clearance_m);
   for (const float side : {-1.0f, 1.0f}) {
     for (const float fraction : {1.0f / 3.0f, 2.0f / 3.0f, 1.0f}) {
       finger_probes.emplace_back(fraction * depth_m, side * (half_aperture_m + finger_width_m / 2),
@@ -322,14 +339,12 @@ void grid_search(const SampleContext& context, const GridSpec& spec, GridScratch
     }
     for (std::size_t p = 0; p < spec.offsets_m.size(); ++p) {
       PoseOutcome& pose = g.poses[p];
-      pose = evaluate_pose(spec, spec.offsets_m[p], g);
-      const bool below = pose.acceptable && context.support != nullptr &&
-                         below_support(context, spec, body, spec.offsets_m[p], pose);
-      if (below) pose.acceptable = false;
+      const float offset = spec.offsets_m[p];
+      pose = evaluate_pose(spec, offset, support_palm_limit(context, spec, body, offset), g);
       const bool hidden = pose.acceptable && context.occlusion != nullptr &&
-                          finger_hidden(context, spec, c, s, spec.offsets_m[p], pose);
+                          finger_hidden(context, spec, c, s, offset, pose);
       if (hidden) pose.acceptable = false;
-      count(pose, below, hidden, stats);
+      count(pose, hidden, stats);
     }
     choose_positions(g.poses, spec.keep_all_positions, g.chosen);
     for (const std::size_t p : g.chosen) {

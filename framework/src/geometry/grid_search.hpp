@@ -22,14 +22,14 @@ struct GridSpec {
   explicit GridSpec(const HandSearchParameters& parameters);
 
   float half_aperture_m, finger_width_m, body_half_width_m, depth_m, half_height_m;
-  float palm_thickness_m, start_m, clearance_m, min_bite_m;
+  float palm_thickness_m, start_m, clearance_m, min_bite_m, min_bite_at_support_m;
   float slab_half_thickness_m;  ///< half height of the hand plus the search margin
   float max_lateral_m;          ///< largest |closing coordinate| a colliding point can have
   float reach_m;                ///< radius of the ball holding every point that can matter
   float min_view_cosine;        ///< cosine of max_view_angle_deg
   bool keep_all_positions;
   float occlusion_margin_m;
-  float support_margin_m;  ///< how far the body may reach below the support plane
+  float support_clearance_m;                   ///< how close the body may come to the support plane
   std::vector<Eigen::Vector3f> finger_probes;  ///< hand-frame points tested for occlusion
   std::vector<float> cos_phi, sin_phi;         ///< per orientation
   std::vector<float> offsets_m;                ///< per position: hand centre along closing
@@ -71,7 +71,7 @@ struct SampleContext {
   std::int32_t sample;            ///< the sample's index in the cloud
   Eigen::Vector3f toward_viewer;  ///< unit direction to the sensors that saw it (or zero)
   const OcclusionMap* occlusion;  ///< null: no occlusion test
-  const SupportPlane* support;     ///< null: no support plane
+  const SupportPlane* support;    ///< null: no support plane
 };
 
 /// Searches the orientation x position grid around the sample's frame using the cloud points

@@ -27,6 +27,10 @@ void HandSearchParameters::validate() const {
           min_bite_m);
   require(clearance_m >= 0.0 && clearance_m < hand.depth_m, "clearance_m", "in [0, depth_m)",
           clearance_m);
+  require(support_clearance_m >= 0.0 && support_clearance_m < 0.1, "support_clearance_m",
+          "in [0, 0.1)", support_clearance_m);
+  require(min_bite_at_support_m >= 0.0 && min_bite_at_support_m <= min_bite_m,
+          "min_bite_at_support_m", "in [0, min_bite_m]", min_bite_at_support_m);
   require(max_view_angle_deg > 0.0 && max_view_angle_deg <= 180.0, "max_view_angle_deg",
           "in (0, 180]", max_view_angle_deg);
   require(occlusion_margin_m >= 0.0 && std::isfinite(occlusion_margin_m), "occlusion_margin_m",

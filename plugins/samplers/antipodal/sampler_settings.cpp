@@ -98,6 +98,9 @@ HandSearchParameters search_parameters(const Parameters& params) {
   s.positions = integer(params, "positions", s.positions, 1);
   s.min_bite_m = number(params, "min_bite_m", s.min_bite_m, 0.0, true);
   s.clearance_m = number(params, "clearance_m", s.clearance_m, 0.0, true);
+  s.support_clearance_m = number(params, "support_clearance_m", s.support_clearance_m, 0.0, true);
+  s.min_bite_at_support_m =
+      number(params, "min_bite_at_support_m", s.min_bite_at_support_m, 0.0, true);
   s.max_view_angle_deg = number(params, "max_view_angle_deg", s.max_view_angle_deg, 0.0, false);
   s.reject_hidden_fingers = params.get<bool>("reject_hidden_fingers", s.reject_hidden_fingers);
   s.occlusion_margin_m = number(params, "occlusion_margin_m", s.occlusion_margin_m, 0.0, true);

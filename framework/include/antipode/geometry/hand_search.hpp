@@ -53,6 +53,15 @@ struct HandSearchParameters {
   double min_bite_m = 0.03;
   /// How far the hand backs off from the contact that stopped it.
   double clearance_m = 0.001;
+  /// With a support plane, the push also stops where the lowest point of the hand's body
+  /// comes within this distance of the plane, as it stops at a cloud point: the plane is
+  /// solid even where the support's points were removed. A pose whose body starts closer is
+  /// rejected (`below_support`).
+  double support_clearance_m = 0.005;
+  /// How far the object must reach between the fingers in a hand the support stopped (in
+  /// place of `min_bite_m`): the fingers then hold a low object down to where they may go,
+  /// so a 2.5 cm-high object lying on the table can still be taken from above.
+  double min_bite_at_support_m = 0.015;
   /// A hand must approach from within this angle of the direction towards a sensor that saw
   /// its sample (the side of the surface that was observed). 180 disables the check.
   double max_view_angle_deg = 90.0;
@@ -72,10 +81,9 @@ struct HandSearchParameters {
   bool keep_all_positions = false;
   /// kAuto: find the support plane the objects stand on (find_support_plane, with
   /// `support.distance_m` as the inlier distance); when there is one, points within that
-  /// distance of it (or below it) are not sampled, and a pose whose fingers or palm reach
-  /// more than that distance below it is rejected (`below_support`): the plane is a solid
-  /// half-space even where the cloud has no points (beyond a cropped scene's cut edge, in
-  /// the shadow of an object).
+  /// distance of it (or below it) are not sampled, and the plane is a solid half-space the
+  /// hand's body keeps `support_clearance_m` away from, even where the cloud has no points
+  /// (beyond a cropped scene's cut edge, in the shadow of an object).
   SupportPlaneMode support_plane = SupportPlaneMode::kAuto;
   SupportPlaneOptions support;
   /// For a cloud without view origins: unset - seen from (0, 0, 0); set - seen from all
