@@ -88,11 +88,13 @@ Json variant_summary(const std::vector<const Json*>& attempts) {
       tally(attempts, [](const Json& a) { return a["outcome"] != "no grasp found"; });
   s["outcomes"] = outcomes;
   s["reasons"] = reasons;
+  const auto graspable = [](const Json& a) { return a["graspable"].get<bool>(); };
+  const auto held_out = [](const Json& a) { return a["held_out"].get<bool>(); };
   s["groups"] = {
-      {"graspable", tally(attempts, [](const Json& a) { return a["graspable"].get<bool>(); })},
-      {"not_graspable", tally(attempts, [](const Json& a) { return !a["graspable"].get<bool>(); })},
-      {"tuning", tally(attempts, [](const Json& a) { return !a["held_out"].get<bool>(); })},
-      {"held_out", tally(attempts, [](const Json& a) { return a["held_out"].get<bool>(); })}};
+      {"graspable", tally(attempts, graspable)},
+      {"not_graspable", tally(attempts, [&](const Json& a) { return !graspable(a); })},
+      {"tuning", tally(attempts, [&](const Json& a) { return graspable(a) && !held_out(a); })},
+      {"held_out", tally(attempts, [&](const Json& a) { return graspable(a) && held_out(a); })}};
   s["fidelity"] = fidelity(attempts);
   s["stage_s_median"] = stage_medians(attempts);
   return s;
@@ -167,7 +169,7 @@ void print_report(std::ostream& out, const Json& attempts, const Json& summary,
                       std::to_string(counts.second) + ")";
     if (held_out[object]) marks[object] += " (held out)";
   }
-  const int label_width = 42, cell_width = 20;
+  const int label_width = 46, cell_width = 20;
   row(out, "object", variants, label_width, cell_width);
   for (const auto& object : objects) {
     std::vector<std::string> texts;
@@ -195,7 +197,8 @@ void print_report(std::ostream& out, const Json& attempts, const Json& summary,
   group_rows("every object", "");
   for (const auto& [label, group] :
        {std::pair{"graspable objects", "graspable"}, std::pair{"not graspable", "not_graspable"},
-        std::pair{"tuning objects", "tuning"}, std::pair{"held-out objects", "held_out"}}) {
+        std::pair{"graspable, tuning objects", "tuning"},
+        std::pair{"graspable, held-out objects", "held_out"}}) {
     bool any = false, all = true;
     for (const auto& variant : variants) {
       const int n = summary[variant]["groups"][group]["attempts"];

@@ -5,6 +5,7 @@
 #include "antipode/core/error.hpp"
 #include "antipode/interfaces/grasp_selector.hpp"
 #include "antipode/plugin/plugin_host.hpp"
+#include "closing_tilt.hpp"
 #include "hand_clearance.hpp"
 #include "hand_clusters.hpp"
 
@@ -176,6 +177,62 @@ TEST_F(ClusterSelectorTest, TheApertureCriterionRanksBeforeTheScore) {
   EXPECT_DOUBLE_EQ(selection.hands[2].score, 9.0) << "1 mm from the open gripper ranks last";
 }
 
+// A hand approaching along +x at height z, its closing direction turned `tilt_deg` from
+// the horizontal +y towards +z (about the approach).
+Hand from_side(double y, double z, double tilt_deg, double score) {
+  Hand hand = top_down(0.0, y, z, score);
+  Eigen::Matrix3d r;
+  r.col(0) = Eigen::Vector3d::UnitX();
+  r.col(1) = Eigen::AngleAxisd(tilt_deg * M_PI / 180.0, Eigen::Vector3d::UnitX()) *
+             Eigen::Vector3d::UnitY();
+  r.col(2) = r.col(0).cross(r.col(1));
+  hand.X_FrameHand.linear() = r;
+  return hand;
+}
+
+TEST(ClosingTilt, AngleOfTheClosingDirectionFromTheSupport) {
+  const Eigen::Vector3d up = Eigen::Vector3d::UnitZ();
+  EXPECT_NEAR(selectors::closing_tilt_rad(from_side(0, 0.1, 0.0, 1), up), 0.0, 1e-12);
+  EXPECT_NEAR(selectors::closing_tilt_rad(from_side(0, 0.1, 40.0, 1), up), 40 * M_PI / 180, 1e-12);
+  EXPECT_NEAR(selectors::closing_tilt_rad(from_side(0, 0.1, -90.0, 1), up), M_PI / 2, 1e-7)
+      << "the sign of the closing direction does not matter";
+  EXPECT_NEAR(selectors::closing_tilt_rad(turned(top_down(0, 0, 0.1), 70.0), up), 0.0, 1e-12);
+  EXPECT_EQ(selectors::tilt_penalty(0.2, 0.25), 0.0);
+  EXPECT_NEAR(selectors::tilt_penalty(0.35, 0.25), 0.01, 1e-12);
+}
+
+TEST_F(ClusterSelectorTest, ATiltedClosingRanksBelowAFlatterOne) {
+  const auto selector = create("min_cluster_size: 1\nmax_grasps: 3");
+  const HandSet selection =
+      selector->select(on_table({from_side(0.0, 0.1, 45.0, 9.0), from_side(0.2, 0.1, 10.0, 1.0),
+                                 from_side(0.4, 0.1, 25.0, 5.0)}));
+  ASSERT_EQ(grasp_count(selection), 3u);
+  EXPECT_DOUBLE_EQ(selection.hands[0].score, 1.0) << "10 degrees: within the free 15";
+  EXPECT_DOUBLE_EQ(selection.hands[1].score, 5.0);
+  EXPECT_DOUBLE_EQ(selection.hands[2].score, 9.0) << "45 degrees ranks last";
+  const HandSet untilted =
+      create("min_cluster_size: 1\nmax_grasps: 3\ntilt_free_deg: 90")
+          ->select(on_table({from_side(0.0, 0.1, 45.0, 9.0), from_side(0.2, 0.1, 10.0, 1.0)}));
+  EXPECT_DOUBLE_EQ(untilted.hands[0].score, 9.0) << "with every tilt free the score decides";
+}
+
+TEST_F(ClusterSelectorTest, AGraspFarFromTheCentreOfMassIsTriedOnlyWhenNoOtherRemains) {
+  const auto selector = create("min_cluster_size: 1");
+  HandSet set = on_table({top_down(0.0, 0, 0.1, 9.0)});  // held 10 cm from the mass below
+  auto cloud = std::make_shared<Cloud>();
+  for (int i = 0; i < 10; ++i) cloud->points_m.emplace_back(0.1f, 0.001f * float(i), 0.05f);
+  set.cloud = cloud;
+  HandSet selection = selector->select(set);
+  ASSERT_EQ(grasp_count(selection), 1u) << "the last resort";
+  EXPECT_DOUBLE_EQ(selection.hands[0].score, 9.0);
+
+  set.hands.push_back(top_down(0.1, 0, 0.1, 1.0));  // right above the mass
+  selection = selector->select(set);
+  ASSERT_EQ(grasp_count(selection), 1u);
+  EXPECT_DOUBLE_EQ(selection.hands[0].score, 1.0);
+  EXPECT_EQ(selection.hands[1].rejection, Rejection::kUnbalanced);
+}
+
 TEST_F(ClusterSelectorTest, AGraspWhoseWayInIsBlockedIsDroppedWithItsReason) {
   const auto selector = create("min_cluster_size: 1\nmax_grasps: 1");
   HandSet set =
@@ -204,6 +261,8 @@ TEST_F(ClusterSelectorTest, RejectsBadParameters) {
   EXPECT_NE(creation_error("min_cluster_sise: 3").find("did you mean 'min_cluster_size'"),
             std::string::npos);
   EXPECT_NE(creation_error("cluster_angle_deg: 200").find("cluster_angle_deg"), std::string::npos);
+  EXPECT_NE(creation_error("tilt_free_deg: 95").find("'tilt_free_deg' must be in [0, 90]"),
+            std::string::npos);
   EXPECT_NE(creation_error("max_grasps: 0").find("max_grasps"), std::string::npos);
   const HandSet no_cloud;
   EXPECT_THROW(create("{}")->select(no_cloud), Error);

@@ -1,10 +1,13 @@
 #include "cluster_selector.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <numeric>
+#include <optional>
 
 #include "antipode/core/error.hpp"
 #include "antipode/geometry/hand_body.hpp"
+#include "closing_tilt.hpp"
 #include "grasp_balance.hpp"
 #include "hand_clearance.hpp"
 #include "hand_clusters.hpp"
@@ -21,6 +24,7 @@ bool candidate(const Hand& hand) {
 struct Proposal {
   Hand grasp;
   std::vector<std::size_t> members;
+  double tilt = 0.0;     // the closing direction's tilt from the support
   double penalty = 0.0;  // criterion 2: the aperture
   double balance = 0.0;  // gravity's lever about the closing axis
   double arm_m = 0.0;
@@ -82,6 +86,7 @@ HandSet ClusterSelector::select(const HandSet& in) const {
         !approach_is_free(p.grasp, g, *in.cloud, options_.standoff_m))
       p.grasp.X_FrameHand = hands[members.front()].X_FrameHand;  // the seed passed them
     p.members = std::move(members);
+    p.tilt = tilt_penalty(closing_tilt_rad(p.grasp, up), options_.tilt_free_deg * M_PI / 180.0);
     p.penalty = aperture_penalty(p.grasp.width_m, g, options_.aperture_margin_m);
     if (const auto centroid =
             centroid_near(objects, grasp_centre(p.grasp, g), options_.object_radius_m)) {
@@ -91,19 +96,28 @@ HandSet ClusterSelector::select(const HandSet& in) const {
     proposals.push_back(std::move(p));
   }
   std::stable_sort(proposals.begin(), proposals.end(), [&](const Proposal& a, const Proposal& b) {
+    if (std::abs(a.tilt - b.tilt) > options_.tilt_tolerance_rad2) return a.tilt < b.tilt;
     const double tolerance = options_.penalty_tolerance_m2;
     if (std::abs(a.penalty - b.penalty) > tolerance) return a.penalty < b.penalty;
     if (std::abs(a.balance - b.balance) > tolerance) return a.balance < b.balance;
     return a.grasp.score > b.grasp.score;
   });
 
+  // Grasps whose lever arm is beyond the limit come last, and are tried only when no other
+  // grasp remains: an attempt that may turn out of the fingers beats no attempt.
+  const auto unbalanced = [&](const Proposal& p) { return p.arm_m > options_.max_torque_arm_m; };
+  std::stable_partition(proposals.begin(), proposals.end(),
+                        [&](const Proposal& p) { return !unbalanced(p); });
+
   // The kept grasps first, then the proposals not kept, then the input hands.
   std::vector<Hand> kept, dropped;
   std::vector<std::pair<const Proposal*, bool>> placed;  // proposal, kept?
+  std::optional<bool> last_resort;                       // set at the first unbalanced proposal
   for (const Proposal& p : proposals) {
     Hand grasp = p.grasp;
     grasp.rejection = Rejection::kNone;
-    if (p.arm_m > options_.max_torque_arm_m)
+    if (unbalanced(p) && !last_resort) last_resort = kept.empty();
+    if (unbalanced(p) && !*last_resort)
       grasp.rejection = Rejection::kUnbalanced;
     else if (kept.size() >= options_.max_grasps)
       grasp.rejection = Rejection::kNotSelected;

@@ -1,8 +1,9 @@
 #pragma once
 // The cluster_selector component: the paper's grasp selection (section 5.1) for a hand that
 // is not yet on an arm - geometric filters, clusters of similar hands, one mean grasp per
-// cluster, ranked by the distance from the gripper's aperture limits (criterion 2), then by
-// the classifier's score. The arm's criteria (joint limits, travel) extend this ranking when
+// cluster, ranked by the tilt of the closing direction from the support, the distance from
+// the gripper's aperture limits (criterion 2), the object's balance, then the classifier's
+// score. The arm's criteria (joint limits, travel) extend this ranking when
 // a robot is in the tree.
 
 #include "antipode/interfaces/grasp_selector.hpp"
@@ -25,9 +26,11 @@ class ClusterSelector final : public GraspSelector {
   /// outside the aperture (kApertureLimit) are dropped; the rest are clustered, best score
   /// first, and clusters smaller than the minimum dropped (kSmallCluster). Each cluster
   /// proposes its mean grasp, or its best hand where the mean's body or way in meets
-  /// observed points; proposals are ranked by criterion 2 (ties within the tolerance), then
-  /// score, and the first `max_grasps` whose way in is free are the grasps. See
-  /// GraspSelector::select for the layout of the result.
+  /// observed points; proposals are ranked by tilt, criterion 2 and balance (each deciding
+  /// where the ones before tie within their tolerance), then score, those with a lever arm
+  /// beyond `max_torque_arm_m` last (kUnbalanced unless no other grasp is kept), and the
+  /// first `max_grasps` whose way in is free are the grasps. See GraspSelector::select for
+  /// the layout of the result.
   HandSet select(const HandSet& hands) const override;
 
  private:

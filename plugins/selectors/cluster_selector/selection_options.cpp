@@ -35,6 +35,8 @@ SelectionOptions read_selection_options(const Parameters& params) {
   o.cluster_angle_deg = in_range(params, "cluster_angle_deg", o.cluster_angle_deg, 0.0, 180.0);
   o.min_cluster_size =
       std::size_t(in_range(params, "min_cluster_size", double(o.min_cluster_size), 1, 1e6));
+  o.tilt_free_deg = in_range(params, "tilt_free_deg", o.tilt_free_deg, 0.0, 90.0);
+  o.tilt_tolerance_rad2 = in_range(params, "tilt_tolerance_rad2", o.tilt_tolerance_rad2, 0.0, 10.0);
   o.aperture_margin_m = in_range(params, "aperture_margin_m", o.aperture_margin_m, 0.0, 0.1);
   o.balance_free_m = in_range(params, "balance_free_m", o.balance_free_m, 0.0, 1.0);
   o.max_torque_arm_m = in_range(params, "max_torque_arm_m", o.max_torque_arm_m, 0.0, 1.0);

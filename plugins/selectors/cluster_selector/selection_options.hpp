@@ -24,6 +24,11 @@ struct SelectionOptions {
   double cluster_angle_deg = 20.0;
   /// Clusters with fewer hands are dropped (the paper: "a specified minimum number").
   std::size_t min_cluster_size = 3;
+  /// First, the tilt of the closing direction from the support (closing_tilt.hpp): the
+  /// penalty is zero up to this angle and grows quadratically (rad^2) beyond.
+  double tilt_free_deg = 15.0;
+  /// Tilt penalties closer than this (rad^2) tie, and the next criterion decides.
+  double tilt_tolerance_rad2 = 1e-4;
   /// Criterion 2: the penalty of a grasp is zero while the object's width stays this far
   /// from both aperture limits, and grows quadratically closer to them.
   double aperture_margin_m = 0.005;
@@ -31,8 +36,8 @@ struct SelectionOptions {
   /// (from the centroid of the object points within `object_radius_m`) is at most this,
   /// and grows quadratically beyond (grasp_balance.hpp).
   double balance_free_m = 0.02;
-  /// Grasps whose lever arm exceeds this are dropped (kUnbalanced): the object would turn
-  /// out of the fingers.
+  /// Grasps whose lever arm exceeds this are dropped (kUnbalanced), the object would turn
+  /// out of the fingers, unless no other grasp remains: then they are the grasps.
   double max_torque_arm_m = 0.03;
   double object_radius_m = 0.15;
   /// Penalties closer than this (m^2) tie, and the next criterion decides; the last is the
