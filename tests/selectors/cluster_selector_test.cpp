@@ -190,6 +190,31 @@ Hand from_side(double y, double z, double tilt_deg, double score) {
   return hand;
 }
 
+// A plate of points at height z over x in [x0, 0.3], |y| <= 0.3, seen from 1 m above.
+Cloud plate_seen_from_above(float x0, float z) {
+  Cloud cloud;
+  for (float x = x0; x <= 0.3f; x += 0.005f)
+    for (float y = -0.3f; y <= 0.3f; y += 0.005f) cloud.points_m.emplace_back(x, y, z);
+  cloud.view_origins_m = {Eigen::Vector3f(0.0f, 0.0f, 1.0f)};
+  return cloud;
+}
+
+TEST(HandClearance, AWayInUnderAnOverhangIsUnseen) {
+  const HandGeometry g;
+  const Hand hand = from_side(0.0, 0.25, 0.0, 1.0);  // approaching along +x, 5 cm under
+  const Cloud over_the_way_in = plate_seen_from_above(-0.3f, 0.3f);
+  EXPECT_TRUE(selectors::approach_is_free(hand, g, over_the_way_in, 0.1))
+      << "no point lies on the way in";
+  EXPECT_FALSE(
+      selectors::way_in_is_seen(hand, g, OcclusionMap(over_the_way_in, 0.0025f), 0.1, 0.01f));
+  const Cloud over_the_grasp_only = plate_seen_from_above(0.02f, 0.3f);
+  EXPECT_TRUE(
+      selectors::way_in_is_seen(hand, g, OcclusionMap(over_the_grasp_only, 0.0025f), 0.1, 0.01f));
+  EXPECT_TRUE(
+      selectors::way_in_is_seen(hand, g, OcclusionMap(over_the_way_in, 0.0025f), 0.1, 0.06f))
+      << "5 cm behind the plate is within a 6 cm margin";
+}
+
 TEST(ClosingTilt, AngleOfTheClosingDirectionFromTheSupport) {
   const Eigen::Vector3d up = Eigen::Vector3d::UnitZ();
   EXPECT_NEAR(selectors::closing_tilt_rad(from_side(0, 0.1, 0.0, 1), up), 0.0, 1e-12);
@@ -263,6 +288,7 @@ TEST_F(ClusterSelectorTest, RejectsBadParameters) {
   EXPECT_NE(creation_error("cluster_angle_deg: 200").find("cluster_angle_deg"), std::string::npos);
   EXPECT_NE(creation_error("tilt_free_deg: 95").find("'tilt_free_deg' must be in [0, 90]"),
             std::string::npos);
+  EXPECT_NE(creation_error("point_radius_m: 0").find("point_radius_m"), std::string::npos);
   EXPECT_NE(creation_error("max_grasps: 0").find("max_grasps"), std::string::npos);
   const HandSet no_cloud;
   EXPECT_THROW(create("{}")->select(no_cloud), Error);

@@ -109,6 +109,15 @@ HandSet ClusterSelector::select(const HandSet& in) const {
   std::stable_partition(proposals.begin(), proposals.end(),
                         [&](const Proposal& p) { return !unbalanced(p); });
 
+  // Built for the first grasp about to be kept: most proposals never need it.
+  std::optional<OcclusionMap> occlusion;
+  const auto way_in_seen = [&](const Hand& grasp) {
+    if (options_.unseen_is_free) return true;
+    if (!occlusion) occlusion.emplace(*in.cloud, float(options_.point_radius_m));
+    return way_in_is_seen(grasp, g, *occlusion, options_.standoff_m,
+                          float(options_.occlusion_margin_m));
+  };
+
   // The kept grasps first, then the proposals not kept, then the input hands.
   std::vector<Hand> kept, dropped;
   std::vector<std::pair<const Proposal*, bool>> placed;  // proposal, kept?
@@ -121,7 +130,7 @@ HandSet ClusterSelector::select(const HandSet& in) const {
       grasp.rejection = Rejection::kUnbalanced;
     else if (kept.size() >= options_.max_grasps)
       grasp.rejection = Rejection::kNotSelected;
-    else if (!approach_is_free(grasp, g, *in.cloud, options_.standoff_m))
+    else if (!approach_is_free(grasp, g, *in.cloud, options_.standoff_m) || !way_in_seen(grasp))
       grasp.rejection = Rejection::kInCollision;
     placed.emplace_back(&p, grasp.rejection == Rejection::kNone);
     (grasp.rejection == Rejection::kNone ? kept : dropped).push_back(std::move(grasp));

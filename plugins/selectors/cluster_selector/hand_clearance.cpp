@@ -40,4 +40,17 @@ bool approach_is_free(const Hand& hand, const HandGeometry& geometry, const Clou
   return true;
 }
 
+bool way_in_is_seen(const Hand& hand, const HandGeometry& geometry, const OcclusionMap& occlusion,
+                    double standoff_m, float margin_m) {
+  const double step_m = 0.01;
+  const double finger_y = geometry.max_aperture_m / 2 + geometry.finger_width_m / 2;
+  const int steps = int(std::floor((standoff_m + geometry.palm_thickness_m) / step_m + 1e-9));
+  for (int i = 1; i <= steps; ++i)
+    for (const double y : {-finger_y, 0.0, finger_y}) {
+      const Eigen::Vector3d p = hand.X_FrameHand * Eigen::Vector3d(-i * step_m, y, 0.0);
+      if (occlusion.hidden(p.cast<float>(), margin_m)) return false;
+    }
+  return true;
+}
+
 }  // namespace antipode::selectors

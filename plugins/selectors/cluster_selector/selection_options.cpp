@@ -37,6 +37,9 @@ SelectionOptions read_selection_options(const Parameters& params) {
       std::size_t(in_range(params, "min_cluster_size", double(o.min_cluster_size), 1, 1e6));
   o.tilt_free_deg = in_range(params, "tilt_free_deg", o.tilt_free_deg, 0.0, 90.0);
   o.tilt_tolerance_rad2 = in_range(params, "tilt_tolerance_rad2", o.tilt_tolerance_rad2, 0.0, 10.0);
+  o.occlusion_margin_m = in_range(params, "occlusion_margin_m", o.occlusion_margin_m, 0.0, 0.1);
+  o.point_radius_m = in_range(params, "point_radius_m", o.point_radius_m, 0.0005, 0.02);
+  o.unseen_is_free = params.get<bool>("unseen_is_free", o.unseen_is_free);
   o.aperture_margin_m = in_range(params, "aperture_margin_m", o.aperture_margin_m, 0.0, 0.1);
   o.balance_free_m = in_range(params, "balance_free_m", o.balance_free_m, 0.0, 1.0);
   o.max_torque_arm_m = in_range(params, "max_torque_arm_m", o.max_torque_arm_m, 0.0, 1.0);

@@ -29,6 +29,13 @@ struct SelectionOptions {
   double tilt_free_deg = 15.0;
   /// Tilt penalties closer than this (rad^2) tie, and the next criterion decides.
   double tilt_tolerance_rad2 = 1e-4;
+  /// The way in must pass through space a sensor saw (hand_clearance.hpp): a probe more
+  /// than `occlusion_margin_m` behind an observed surface in every view blocks it, with
+  /// each point standing for a disc of `point_radius_m` (the sampler's defaults). With
+  /// `unseen_is_free`, space no sensor saw counts as free.
+  double occlusion_margin_m = 0.01;
+  double point_radius_m = 0.0025;
+  bool unseen_is_free = false;
   /// Criterion 2: the penalty of a grasp is zero while the object's width stays this far
   /// from both aperture limits, and grows quadratically closer to them.
   double aperture_margin_m = 0.005;
