@@ -227,6 +227,7 @@ void print_report(std::ostream& out, const Json& attempts, const Json& summary,
         reasons.push_back(reason);
   for (const auto& reason : reasons) {
     std::vector<std::string> counts;
+    counts.reserve(variants.size());
     for (const auto& variant : variants)
       counts.push_back(std::to_string(summary[variant]["reasons"].value(reason, 0)));
     row(out, reason, counts, label_width, cell_width);
