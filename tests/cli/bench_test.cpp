@@ -69,7 +69,9 @@ TEST_F(BenchTest, YcbObjectsArePickedWhenTheDataIsThere) {
   const auto r =
       report("--objects " + ycb + " --variants svm_2v --attempts 15 --jobs 2", "ycb.json");
   ASSERT_TRUE(r.contains("summary")) << r.dump();
-  EXPECT_GE(r["summary"]["svm_2v"]["groups"]["graspable"]["successes"].get<int>(), 9)
+  // 12 of the 15 attempts are on graspable poses; the bench holds about 96% of those.
+  EXPECT_EQ(r["summary"]["svm_2v"]["groups"]["graspable"]["attempts"].get<int>(), 12);
+  EXPECT_GE(r["summary"]["svm_2v"]["groups"]["graspable"]["successes"].get<int>(), 10)
       << r["summary"].dump(1);
 }
 
