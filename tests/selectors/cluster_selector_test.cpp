@@ -215,6 +215,15 @@ TEST(HandClearance, AWayInUnderAnOverhangIsUnseen) {
       << "5 cm behind the plate is within a 6 cm margin";
 }
 
+TEST_F(ClusterSelectorTest, AGraspWhoseWayInIsUnseenIsDroppedUnlessUnseenIsFree) {
+  HandSet set = on_table({from_side(0.0, 0.25, 0.0, 1.0)});
+  set.cloud = std::make_shared<Cloud>(plate_seen_from_above(-0.3f, 0.3f));
+  const HandSet selection = create("min_cluster_size: 1")->select(set);
+  EXPECT_EQ(grasp_count(selection), 0u);
+  EXPECT_EQ(selection.hands.front().rejection, Rejection::kInCollision);
+  EXPECT_EQ(grasp_count(create("min_cluster_size: 1\nunseen_is_free: true")->select(set)), 1u);
+}
+
 TEST(ClosingTilt, AngleOfTheClosingDirectionFromTheSupport) {
   const Eigen::Vector3d up = Eigen::Vector3d::UnitZ();
   EXPECT_NEAR(selectors::closing_tilt_rad(from_side(0, 0.1, 0.0, 1), up), 0.0, 1e-12);

@@ -121,17 +121,17 @@ HandSet ClusterSelector::select(const HandSet& in) const {
   // The kept grasps first, then the proposals not kept, then the input hands.
   std::vector<Hand> kept, dropped;
   std::vector<std::pair<const Proposal*, bool>> placed;  // proposal, kept?
-  std::optional<bool> last_resort;                       // set at the first unbalanced proposal
+  bool balanced_kept = false;
   for (const Proposal& p : proposals) {
     Hand grasp = p.grasp;
     grasp.rejection = Rejection::kNone;
-    if (unbalanced(p) && !last_resort) last_resort = kept.empty();
-    if (unbalanced(p) && !*last_resort)
+    if (unbalanced(p) && balanced_kept)
       grasp.rejection = Rejection::kUnbalanced;
     else if (kept.size() >= options_.max_grasps)
       grasp.rejection = Rejection::kNotSelected;
     else if (!approach_is_free(grasp, g, *in.cloud, options_.standoff_m) || !way_in_seen(grasp))
       grasp.rejection = Rejection::kInCollision;
+    balanced_kept = balanced_kept || (grasp.rejection == Rejection::kNone && !unbalanced(p));
     placed.emplace_back(&p, grasp.rejection == Rejection::kNone);
     (grasp.rejection == Rejection::kNone ? kept : dropped).push_back(std::move(grasp));
   }

@@ -42,9 +42,11 @@ bool approach_is_free(const Hand& hand, const HandGeometry& geometry, const Clou
 
 bool way_in_is_seen(const Hand& hand, const HandGeometry& geometry, const OcclusionMap& occlusion,
                     double standoff_m, float margin_m) {
+  const HandBody body = make_hand_body(geometry);
   const double step_m = 0.01;
-  const double finger_y = geometry.max_aperture_m / 2 + geometry.finger_width_m / 2;
-  const int steps = int(std::floor((standoff_m + geometry.palm_thickness_m) / step_m + 1e-9));
+  const double finger_y = (body.finger_plus_y.min_m.y() + body.finger_plus_y.max_m.y()) / 2;
+  const double back_m = standoff_m - body.palm.min_m.x();  // the palm's back at the stand-off
+  const int steps = int(std::floor(back_m / step_m + 1e-9));
   for (int i = 1; i <= steps; ++i)
     for (const double y : {-finger_y, 0.0, finger_y}) {
       const Eigen::Vector3d p = hand.X_FrameHand * Eigen::Vector3d(-i * step_m, y, 0.0);
