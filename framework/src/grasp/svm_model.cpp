@@ -256,13 +256,13 @@ constexpr Eigen::Index kSupportChunk = 1024;
 void apply_kernel(const SvmKernel& kernel, const Eigen::VectorXf& z_squared,
                   const Eigen::RowVectorXf& sv_squared, RowMatrixF& k) {
   if (kernel.type == SvmKernelType::kRbf) {
+    // One contiguous row at a time: Eigen vectorizes exp() over plain arrays, not through
+    // replicate(), which would call the C library's scalar expf for every value.
     const auto gamma = static_cast<float>(kernel.gamma);
-    k = ((z_squared.replicate(1, k.cols()) + sv_squared.replicate(k.rows(), 1) - 2.0f * k)
-             .array()
-             .max(0.0f) *
-         -gamma)
-            .exp()
-            .matrix();
+    for (Eigen::Index r = 0; r < k.rows(); ++r) {
+      auto row = k.row(r).array();
+      row = ((sv_squared.array() + z_squared(r) - 2.0f * row).max(0.0f) * -gamma).exp();
+    }
     return;
   }
   const Eigen::ArrayXXf base =
@@ -285,6 +285,7 @@ void score_block(const SvmModel& m, const RowMatrixF& z, std::size_t first, std:
   const Eigen::Map<const Eigen::VectorXd> alpha(m.alpha.data(), nsv);
   Eigen::VectorXd sum = Eigen::VectorXd::Zero(z.rows());
   RowMatrixF values;
+  Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> values_double;
   for (Eigen::Index c = 0; c < nsv; c += kSupportChunk) {
     const Eigen::Index width = std::min(kSupportChunk, nsv - c);
     const ConstRowMapF support(m.support_vectors.data() + c * k, width, k);
@@ -295,7 +296,8 @@ void score_block(const SvmModel& m, const RowMatrixF& z, std::size_t first, std:
     detail::multiply_transposed(z.data(), std::size_t(z.rows()), std::size_t(k), support.data(),
                                 std::size_t(width), values.data());
     apply_kernel(m.kernel, z_squared, sv_squared, values);
-    sum.noalias() += values.cast<double>() * alpha.segment(c, width);
+    values_double = values.cast<double>();  // a plain matrix: the product below vectorizes
+    sum.noalias() += values_double * alpha.segment(c, width);
   }
   for (std::size_t r = 0; r < count; ++r)
     out[first + r] = sum(static_cast<Eigen::Index>(r)) - m.rho;
