@@ -3,8 +3,12 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <fstream>
 #include <functional>
 #include <map>
+
+#include "antipode/core/atomic_file.hpp"
+#include "antipode/core/error.hpp"
 
 namespace antipode::cli {
 namespace {
@@ -247,6 +251,17 @@ void print_report(std::ostream& out, const Json& attempts, const Json& summary,
     }
     row(out, stage, seconds, label_width, cell_width);
   }
+}
+
+void write_report(std::ostream& out, const std::string& path,
+                  const nlohmann::ordered_json& report) {
+  if (path.empty()) return;
+  write_file_atomically(path, [&](const std::string& temporary) {
+    std::ofstream file(temporary);
+    file << report.dump(1) << "\n";
+    if (!file) throw Error("cannot write the report");
+  });
+  out << "report: " << path << "\n";
 }
 
 }  // namespace antipode::cli

@@ -260,12 +260,7 @@ int bench_isolation_command(const IsolationBenchOptions& o) {
                          {"wall_s", wall_s},
                          {"summary", summary},
                          {"attempts", attempts}};
-    write_file_atomically(o.report_path, [&](const std::string& temporary) {
-      std::ofstream out(temporary);
-      out << report.dump(1) << "\n";
-      if (!out) throw Error("cannot write the report");
-    });
-    std::cout << "report: " << o.report_path << "\n";
+    write_report(std::cout, o.report_path, report);
   }
   return kExitSuccess;
 }

@@ -8,6 +8,7 @@
 #include "commands.hpp"
 #include "exit_codes.hpp"
 #include "isolation_bench.hpp"
+#include "reach_bench.hpp"
 
 namespace {
 
@@ -18,6 +19,7 @@ constexpr const char* kExamples = R"(Examples:
   antipode detect ../shared/data/clouds/table_mug.pcd --out grasps.json --image grasps.png
   antipode scene scenes/pile_procedural.yaml --image scene.png
   antipode bench isolation --objects ../shared/data/objects/ycb --jobs 2 --report iso.json
+  antipode bench reach --ik-poses 10000 --report reach.json
   antipode train --out my.model --dataset examples.data
   antipode eval-classifier --model my.model --report eval.json
   antipode plugins
@@ -34,6 +36,7 @@ struct Commands {
   antipode::cli::TrainOptions train;
   antipode::cli::EvalOptions eval;
   antipode::cli::IsolationBenchOptions isolation;
+  antipode::cli::ReachBenchOptions reach;
   std::string validate_path;
   std::string node_type;  ///< `antipode nodes [TYPE]`
 };
@@ -99,6 +102,20 @@ void add_eval(CLI::App& app, Commands& commands) {
   add_tree_run_options(*eval, options.settings);
 }
 
+void add_bench_reach(CLI::App& bench, antipode::cli::ReachBenchOptions& o) {
+  CLI::App* reach =
+      bench.add_subcommand("reach", "Inverse kinematics of the arm (TRAC-IK's protocol)");
+  reach->add_option("--robot", o.robot_path, "URDF file")->capture_default_str();
+  reach->add_option("--base", o.base_link, "Base link of the chain")->capture_default_str();
+  reach->add_option("--tip", o.tip_link, "Tip link of the chain")->capture_default_str();
+  reach->add_option("--ik-poses", o.ik_poses, "Random reachable poses")->capture_default_str();
+  reach->add_option("--seed", o.seed, "Seed of the poses")->capture_default_str();
+  reach->add_option("--solvers", o.solvers, "Any of dls,kdl")->delimiter(',');
+  reach->add_option("--timeout-ms", o.timeout_ms, "Time limit per pose")->capture_default_str();
+  reach->add_option("--tolerance", o.tolerance, "m and rad per component")->capture_default_str();
+  reach->add_option("--report", o.report_path, "Write the report as JSON");
+}
+
 void add_bench(CLI::App& app, Commands& commands) {
   auto& o = commands.isolation;
   CLI::App* bench = app.add_subcommand("bench", "Measure picking end to end in the simulated cell");
@@ -129,6 +146,7 @@ void add_bench(CLI::App& app, Commands& commands) {
   isolation->add_option("--held-out", o.held_out, "Objects reported apart (comma-separated)")
       ->delimiter(',');
   isolation->add_option("--set", o.set, "Override a tree entry or component parameter");
+  add_bench_reach(*bench, commands.reach);
 }
 
 int dispatch(const CLI::App& app, const Commands& commands) {
@@ -143,6 +161,8 @@ int dispatch(const CLI::App& app, const Commands& commands) {
     return antipode::cli::validate_command(commands.validate_path);
   }
   if (app.got_subcommand("bench")) {
+    const CLI::App* bench = app.get_subcommand("bench");
+    if (bench->got_subcommand("reach")) return antipode::cli::bench_reach_command(commands.reach);
     return antipode::cli::bench_isolation_command(commands.isolation);
   }
   if (app.got_subcommand("plugins")) return antipode::cli::plugins_command();

@@ -1,0 +1,104 @@
+#include "antipode/robot/kinematic_chain.hpp"
+
+#include <string>
+#include <utility>
+
+#include <kdl/chainfksolverpos_recursive.hpp>
+#include <kdl/chainjnttojacsolver.hpp>
+#include <kdl/jacobian.hpp>
+#include <kdl/jntarray.hpp>
+
+#include "antipode/core/error.hpp"
+#include "kinematic_chain_impl.hpp"
+
+namespace antipode {
+
+namespace {
+
+KDL::JntArray to_kdl(const Eigen::VectorXd& q) {
+  KDL::JntArray a(static_cast<unsigned>(q.size()));
+  a.data = q;
+  return a;
+}
+
+Eigen::Isometry3d to_eigen(const KDL::Frame& f) {
+  Eigen::Isometry3d x = Eigen::Isometry3d::Identity();
+  for (int r = 0; r < 3; ++r) {
+    x.translation()(r) = f.p(r);
+    for (int c = 0; c < 3; ++c) x.linear()(r, c) = f.M(r, c);
+  }
+  return x;
+}
+
+const KinematicChain::Impl& empty_impl() {
+  static const KinematicChain::Impl impl;
+  return impl;
+}
+
+}  // namespace
+
+void check_joint_values(const KinematicChain& chain, const Eigen::VectorXd& q, const char* what) {
+  if (static_cast<std::size_t>(q.size()) != chain.dof()) {
+    throw Error(std::string(what) + ": " + std::to_string(q.size()) + " joint values for the " +
+                std::to_string(chain.dof()) + " joints from '" + chain.base_link() + "' to '" +
+                chain.tip_link() + "'");
+  }
+  if (!q.allFinite()) throw Error(std::string(what) + ": joint values must be finite");
+}
+
+KinematicChain::KinematicChain() = default;
+KinematicChain::KinematicChain(std::shared_ptr<const Impl> impl) : impl_(std::move(impl)) {}
+
+const std::string& KinematicChain::base_link() const {
+  return (impl_ ? *impl_ : empty_impl()).base_link;
+}
+const std::string& KinematicChain::tip_link() const {
+  return (impl_ ? *impl_ : empty_impl()).tip_link;
+}
+const std::vector<std::string>& KinematicChain::joint_names() const {
+  return (impl_ ? *impl_ : empty_impl()).joint_names;
+}
+const std::vector<JointLimits>& KinematicChain::limits() const {
+  return (impl_ ? *impl_ : empty_impl()).limits;
+}
+std::size_t KinematicChain::dof() const { return limits().size(); }
+
+Eigen::Isometry3d KinematicChain::forward(const Eigen::VectorXd& q) const {
+  check_joint_values(*this, q, "forward kinematics");
+  if (!impl_) return Eigen::Isometry3d::Identity();
+  KDL::ChainFkSolverPos_recursive solver(impl_->chain);
+  KDL::Frame frame;
+  if (solver.JntToCart(to_kdl(q), frame) < 0)
+    throw InternalError("forward kinematics failed for '" + tip_link() + "'");
+  return to_eigen(frame);
+}
+
+Eigen::Matrix<double, 6, Eigen::Dynamic> KinematicChain::jacobian(const Eigen::VectorXd& q) const {
+  check_joint_values(*this, q, "Jacobian");
+  Eigen::Matrix<double, 6, Eigen::Dynamic> j(6, q.size());
+  if (!impl_) return j;
+  KDL::ChainJntToJacSolver solver(impl_->chain);
+  KDL::Jacobian kdl_j(static_cast<unsigned>(q.size()));
+  if (solver.JntToJac(to_kdl(q), kdl_j) < 0)
+    throw InternalError("Jacobian failed for '" + tip_link() + "'");
+  j = kdl_j.data;
+  return j;
+}
+
+bool KinematicChain::within_limits(const Eigen::VectorXd& q, double tolerance) const {
+  check_joint_values(*this, q, "joint limits");
+  for (Eigen::Index i = 0; i < q.size(); ++i) {
+    const JointLimits& l = limits()[static_cast<std::size_t>(i)];
+    if (q(i) < l.lower - tolerance || q(i) > l.upper + tolerance) return false;
+  }
+  return true;
+}
+
+Eigen::VectorXd KinematicChain::mid_range() const {
+  Eigen::VectorXd q(static_cast<Eigen::Index>(dof()));
+  for (std::size_t i = 0; i < dof(); ++i)
+    q(static_cast<Eigen::Index>(i)) = 0.5 * (limits()[i].lower + limits()[i].upper);
+  return q;
+}
+
+}  // namespace antipode

@@ -1,0 +1,31 @@
+#pragma once
+// The shared description behind KinematicChain: an orocos-kdl chain (fixed joints folded
+// into segments) with its names and limits.
+
+#include <string>
+#include <vector>
+
+#include <kdl/chain.hpp>
+
+#include "antipode/robot/kinematic_chain.hpp"
+
+namespace antipode {
+
+struct KinematicChain::Impl {
+  std::string base_link;
+  std::string tip_link;
+  std::vector<std::string> joint_names;
+  std::vector<JointLimits> limits;
+  KDL::Chain chain;
+};
+
+/// The description of a chain, for the kinematics solvers; nullptr for an empty chain.
+struct ChainAccess {
+  static const KinematicChain::Impl* of(const KinematicChain& chain) { return chain.impl_.get(); }
+};
+
+/// Throws antipode::Error unless `q` has `chain.dof()` finite values; `what` names the
+/// caller in the message.
+void check_joint_values(const KinematicChain& chain, const Eigen::VectorXd& q, const char* what);
+
+}  // namespace antipode

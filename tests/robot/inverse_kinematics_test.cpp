@@ -1,0 +1,145 @@
+// Inverse kinematics of Baxter's right arm: round trips from random reachable poses, distinct
+// solutions, joint limits, determinism and input errors.
+
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "antipode/core/error.hpp"
+#include "antipode/core/random.hpp"
+#include "antipode/robot/inverse_kinematics.hpp"
+#include "antipode/robot/robot_model.hpp"
+#include "support/error_of.hpp"
+
+namespace antipode {
+namespace {
+
+using testing::error_of;
+
+KinematicChain right_arm() {
+  static const RobotModel robot =
+      RobotModel::load(std::string(ANTIPODE_TEST_SOURCE_DIR) + "/robots/baxter/baxter.urdf");
+  return robot.chain("base", "right_gripper");
+}
+
+Eigen::VectorXd random_q(const KinematicChain& chain, RandomStream& random) {
+  Eigen::VectorXd q(7);
+  for (int i = 0; i < 7; ++i)
+    q(i) = random.uniform(chain.limits()[i].lower, chain.limits()[i].upper);
+  return q;
+}
+
+TEST(InverseKinematics, PoseErrorIsZeroAtTheTargetAndMeasuresOffsets) {
+  Eigen::Isometry3d a = Eigen::Isometry3d::Identity();
+  a.translate(Eigen::Vector3d(0.1, 0.2, 0.3));
+  EXPECT_LT(pose_error(a, a).norm(), 1e-15);
+  Eigen::Isometry3d b = a;
+  b.translation().x() += 0.01;
+  b.prerotate(Eigen::AngleAxisd(0.2, Eigen::Vector3d::UnitZ()));
+  const auto e = pose_error(a, b);
+  EXPECT_NEAR(e.tail<3>().norm(), 0.2, 1e-12);
+  EXPECT_NEAR(e.tail<3>().z(), -0.2, 1e-12);
+}
+
+TEST(InverseKinematics, RoundTripsOnRandomReachablePoses) {
+  const KinematicChain arm = right_arm();
+  RandomStream random(7);
+  int solved = 0;
+  const int poses = 200;
+  for (int i = 0; i < poses; ++i) {
+    const Eigen::Isometry3d target = arm.forward(random_q(arm, random));
+    IkOptions options;
+    options.seed = static_cast<std::uint64_t>(i);
+    const IkResult r = solve_ik(arm, target, arm.mid_range(), options);
+    if (r.status != IkStatus::kSolved) continue;
+    ++solved;
+    ASSERT_EQ(r.solutions.size(), 1u);
+    EXPECT_TRUE(arm.within_limits(r.solutions[0]));
+    EXPECT_LE(pose_error(target, arm.forward(r.solutions[0])).cwiseAbs().maxCoeff(), 1e-5);
+  }
+  EXPECT_GE(solved, poses * 98 / 100);
+}
+
+// Options that ask for `solutions` solutions with a budget large enough to find them.
+IkOptions several(int solutions, std::uint64_t seed = 0) {
+  IkOptions options;
+  options.max_solutions = solutions;
+  options.max_iterations = 20000;
+  options.seed = seed;
+  return options;
+}
+
+TEST(InverseKinematics, FindsSeveralDistinctSolutionsOnRequest) {
+  const KinematicChain arm = right_arm();
+  RandomStream random(11);
+  const Eigen::Isometry3d target = arm.forward(random_q(arm, random));
+  const IkOptions options = several(4);
+  const IkResult r = solve_ik(arm, target, arm.mid_range(), options);
+  ASSERT_EQ(r.status, IkStatus::kSolved);
+  ASSERT_EQ(r.solutions.size(), 4u);  // a 7-joint arm has a continuum of them
+  for (std::size_t a = 0; a < r.solutions.size(); ++a) {
+    EXPECT_LE(pose_error(target, arm.forward(r.solutions[a])).cwiseAbs().maxCoeff(), 1e-5);
+    for (std::size_t b = 0; b < a; ++b)
+      EXPECT_GE((r.solutions[a] - r.solutions[b]).cwiseAbs().maxCoeff(), options.distinct);
+  }
+}
+
+TEST(InverseKinematics, SameSeedSameSolution) {
+  const KinematicChain arm = right_arm();
+  RandomStream random(3);
+  const Eigen::Isometry3d target = arm.forward(random_q(arm, random));
+  const IkOptions options = several(2, 42);
+  const IkResult a = solve_ik(arm, target, arm.mid_range(), options);
+  const IkResult b = solve_ik(arm, target, arm.mid_range(), options);
+  ASSERT_EQ(a.solutions.size(), b.solutions.size());
+  for (std::size_t i = 0; i < a.solutions.size(); ++i) EXPECT_EQ(a.solutions[i], b.solutions[i]);
+  EXPECT_EQ(a.iterations, b.iterations);
+}
+
+TEST(InverseKinematics, AnUnreachablePoseHasNoSolution) {
+  const KinematicChain arm = right_arm();
+  Eigen::Isometry3d far = Eigen::Isometry3d::Identity();
+  far.translation() = Eigen::Vector3d(3.0, 0.0, 0.0);  // beyond the arm's 1.3 m reach
+  const IkResult r = solve_ik(arm, far, arm.mid_range());
+  EXPECT_EQ(r.status, IkStatus::kNoSolution);
+  EXPECT_TRUE(r.solutions.empty());
+  EXPECT_EQ(r.iterations, IkOptions{}.max_iterations);
+}
+
+TEST(InverseKinematics, KdlBaselineSolvesFromANearbySeed) {
+  const KinematicChain arm = right_arm();
+  const Eigen::VectorXd q = arm.mid_range() + Eigen::VectorXd::Constant(7, 0.05);
+  IkOptions options;
+  options.solver = IkSolver::kKdl;
+  const IkResult r = solve_ik(arm, arm.forward(q), arm.mid_range(), options);
+  ASSERT_EQ(r.status, IkStatus::kSolved);
+  EXPECT_LE(pose_error(arm.forward(q), arm.forward(r.solutions[0])).cwiseAbs().maxCoeff(), 1e-5);
+}
+
+TEST(InverseKinematics, BadInputIsAnError) {
+  const KinematicChain arm = right_arm();
+  const Eigen::Isometry3d target = arm.forward(arm.mid_range());
+  EXPECT_NE(error_of([&] {
+              solve_ik(arm, target, Eigen::VectorXd::Zero(3));
+            }).find("IK seed: 3 joint values for the 7 joints"),
+            std::string::npos);
+  Eigen::VectorXd outside = arm.mid_range();
+  outside(3) = 3.0;  // e1 stops at 2.618
+  EXPECT_NE(error_of([&] { solve_ik(arm, target, outside); }).find("outside the limits"),
+            std::string::npos);
+  Eigen::Isometry3d sheared = target;
+  sheared.linear()(0, 1) += 0.5;
+  EXPECT_NE(error_of([&] { solve_ik(arm, sheared, arm.mid_range()); }).find("rigid transform"),
+            std::string::npos);
+  IkOptions bad;
+  bad.max_solutions = 0;
+  EXPECT_NE(error_of([&] {
+              solve_ik(arm, target, arm.mid_range(), bad);
+            }).find("max_solutions must be at least 1"),
+            std::string::npos);
+  EXPECT_NE(error_of([] { ik_solver("trac"); }).find("unknown IK solver 'trac'"),
+            std::string::npos);
+}
+
+}  // namespace
+}  // namespace antipode
