@@ -169,4 +169,52 @@ KinematicChain RobotModel::chain(const std::string& base, const std::string& tip
   return KinematicChain(std::move(impl));
 }
 
+std::string RobotModel::parent_link(const std::string& link, std::string* joint,
+                                    bool* moving) const {
+  require_link(*impl_->urdf, link, impl_->source);
+  const urdf::LinkConstSharedPtr l = impl_->urdf->getLink(link);
+  const urdf::JointConstSharedPtr j = l->parent_joint;
+  if (joint != nullptr) *joint = j ? j->name : "";
+  if (moving != nullptr) *moving = j && j->type != urdf::Joint::FIXED;
+  return j ? j->parent_link_name : "";
+}
+
+std::vector<CollisionPrimitive> RobotModel::collision_shapes(const std::string& link) const {
+  require_link(*impl_->urdf, link, impl_->source);
+  std::vector<CollisionPrimitive> shapes;
+  for (const urdf::CollisionSharedPtr& c : impl_->urdf->getLink(link)->collision_array) {
+    if (!c || !c->geometry) continue;
+    CollisionPrimitive p;
+    const urdf::Pose& o = c->origin;
+    p.X_LinkShape.linear() =
+        Eigen::Quaterniond(o.rotation.w, o.rotation.x, o.rotation.y, o.rotation.z)
+            .toRotationMatrix();
+    p.X_LinkShape.translation() = Eigen::Vector3d(o.position.x, o.position.y, o.position.z);
+    switch (c->geometry->type) {
+      case urdf::Geometry::BOX: {
+        const auto& box = static_cast<const urdf::Box&>(*c->geometry);
+        p.kind = CollisionPrimitive::Kind::kBox;
+        p.size_m = Eigen::Vector3d(box.dim.x, box.dim.y, box.dim.z);
+        break;
+      }
+      case urdf::Geometry::CYLINDER: {
+        const auto& cylinder = static_cast<const urdf::Cylinder&>(*c->geometry);
+        p.kind = CollisionPrimitive::Kind::kCylinder;
+        p.size_m = Eigen::Vector3d(cylinder.radius, cylinder.length, 0.0);
+        break;
+      }
+      case urdf::Geometry::SPHERE: {
+        p.kind = CollisionPrimitive::Kind::kSphere;
+        p.size_m.x() = static_cast<const urdf::Sphere&>(*c->geometry).radius;
+        break;
+      }
+      default:
+        throw Error(impl_->source + ": link '" + link +
+                    "' has a mesh collision shape; use boxes, cylinders and spheres");
+    }
+    shapes.push_back(p);
+  }
+  return shapes;
+}
+
 }  // namespace antipode

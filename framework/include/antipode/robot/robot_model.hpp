@@ -11,9 +11,21 @@
 #include <string>
 #include <vector>
 
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+
 #include "antipode/robot/kinematic_chain.hpp"
 
 namespace antipode {
+
+/// One primitive collision shape of a link (URDF <collision>), in the link's frame.
+struct CollisionPrimitive {
+  enum class Kind { kBox, kCylinder, kSphere };
+  Kind kind = Kind::kBox;
+  Eigen::Isometry3d X_LinkShape = Eigen::Isometry3d::Identity();  ///< centre; cylinders along z
+  /// Box: the lengths along x, y, z. Cylinder: radius, length, 0. Sphere: radius, 0, 0. (m)
+  Eigen::Vector3d size_m = Eigen::Vector3d::Zero();
+};
 
 class RobotModel {
  public:
@@ -29,6 +41,13 @@ class RobotModel {
   std::vector<std::string> link_names() const;   ///< sorted
   std::vector<std::string> joint_names() const;  ///< sorted, fixed joints included
   bool has_link(const std::string& name) const;
+  /// The parent of `link` ("" for the root); `joint` receives the joint between them and
+  /// `moving` whether it moves (not fixed). Throws antipode::Error for an unknown link.
+  std::string parent_link(const std::string& link, std::string* joint = nullptr,
+                          bool* moving = nullptr) const;
+  /// The link's collision shapes. Throws antipode::Error for an unknown link and for a
+  /// mesh shape (antipode's robot descriptions use primitives only).
+  std::vector<CollisionPrimitive> collision_shapes(const std::string& link) const;
 
   /// The chain from `base` to `tip`, where `base` is an ancestor of `tip` (or the same
   /// link: an empty chain). Throws antipode::Error for an unknown link (suggesting the

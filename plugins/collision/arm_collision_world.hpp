@@ -1,0 +1,75 @@
+#pragma once
+// The collision world of one robot arm: the arm's links (their URDF primitives) against the
+// rest of the robot (self-collision) and against the scene - known boxes (table, box walls)
+// and the observed points as an octree - checked with FCL.
+//
+// Frames and units: everything in the robot's base frame, metres; `q` holds the arm chain's
+// joint values in radians. Links that do not move with the arm keep the poses of the joint
+// values given at construction (every other joint at 0, unless named there).
+//
+// Threads: check() is const and keeps no state between calls; concurrent checks on one world
+// are safe. add_box() and set_points() must not run concurrently with anything else.
+
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+
+#include "antipode/robot/kinematic_chain.hpp"
+#include "antipode/robot/robot_model.hpp"
+
+namespace antipode::collision {
+
+/// What check() found: no contact, or the first pair in contact.
+struct ContactReport {
+  enum class Kind { kFree, kSelf, kEnvironment };
+  Kind kind = Kind::kFree;
+  std::string link;   ///< the arm's link in contact
+  std::string other;  ///< the other robot link, the box's name, or "points"
+
+  bool free() const { return kind == Kind::kFree; }
+  /// "free", "self-collision: A with B" or "collision: A with B".
+  std::string str() const;
+};
+
+class ArmCollisionWorld {
+ public:
+  /// The arm is `arm` (a chain of `robot`); `joint_values` fixes any other joint by name
+  /// (e.g. the other arm, the fingers). Throws antipode::Error for an unknown joint name or
+  /// a link with an unsupported shape.
+  ArmCollisionWorld(const RobotModel& robot, const KinematicChain& arm,
+                    const std::map<std::string, double>& joint_values = {});
+  ~ArmCollisionWorld();
+  ArmCollisionWorld(ArmCollisionWorld&&) noexcept;
+  ArmCollisionWorld& operator=(ArmCollisionWorld&&) noexcept;
+
+  /// An obstacle box of `size_m` (full lengths) centred at X_BaseBox.
+  void add_box(const std::string& name, const Eigen::Isometry3d& X_BaseBox,
+               const Eigen::Vector3d& size_m);
+  /// The observed points (base frame) as an octree of `resolution_m` cells, replacing any
+  /// earlier points; an empty vector removes them. Throws antipode::Error for a resolution
+  /// outside [0.001, 1] m.
+  void set_points(const std::vector<Eigen::Vector3f>& points_m, double resolution_m);
+
+  /// The arm at `q` against itself, the fixed robot and the scene: self-collision first,
+  /// then the boxes, then the points. Throws antipode::Error unless `q` has one finite value
+  /// per arm joint.
+  ContactReport check(const Eigen::VectorXd& q) const;
+
+  /// Link pairs checked for self-collision: an arm link with a robot link three or more
+  /// moving joints away (collision_pairs.hpp) and not in contact at the arm's zero
+  /// configuration.
+  const std::vector<std::pair<std::string, std::string>>& self_pairs() const;
+  /// The links that move with the arm.
+  std::vector<std::string> arm_links() const;
+
+  struct Impl;
+
+ private:
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace antipode::collision

@@ -1,0 +1,33 @@
+#include "collision_pairs.hpp"
+
+#include <vector>
+
+namespace antipode::collision {
+
+namespace {
+
+// `link` and its ancestors up to the root, each with the number of moving joints between it
+// and `link`.
+std::vector<std::pair<std::string, int>> ancestors(const RobotModel& robot,
+                                                   const std::string& link) {
+  std::vector<std::pair<std::string, int>> path{{link, 0}};
+  for (;;) {
+    bool moving = false;
+    const std::string parent = robot.parent_link(path.back().first, nullptr, &moving);
+    if (parent.empty()) return path;
+    path.emplace_back(parent, path.back().second + (moving ? 1 : 0));
+  }
+}
+
+}  // namespace
+
+int moving_joints_between(const RobotModel& robot, const std::string& a, const std::string& b) {
+  const auto up_a = ancestors(robot, a);
+  const auto up_b = ancestors(robot, b);
+  for (const auto& [link_a, joints_a] : up_a)  // the lowest common ancestor comes first
+    for (const auto& [link_b, joints_b] : up_b)
+      if (link_a == link_b) return joints_a + joints_b;
+  return -1;  // not reached: every link hangs from the root
+}
+
+}  // namespace antipode::collision

@@ -1,0 +1,18 @@
+#pragma once
+// Which robot link pairs the self-collision check can skip. Links separated by few moving
+// joints touch at those joints by construction: their primitive shapes (cylinders per link)
+// overlap where the real links are shaped around each other, and the joint limits of the
+// real robot keep them apart. MoveIt's setup assistant disables such pairs for the same
+// reason.
+
+#include <string>
+
+#include "antipode/robot/robot_model.hpp"
+
+namespace antipode::collision {
+
+/// The number of moving joints on the kinematic tree's path from `a` to `b` (0 when they
+/// are rigidly attached through fixed joints).
+int moving_joints_between(const RobotModel& robot, const std::string& a, const std::string& b);
+
+}  // namespace antipode::collision
