@@ -9,6 +9,7 @@
 #include "antipode/core/random.hpp"
 #include "antipode/robot/robot_model.hpp"
 #include "arm_collision_world.hpp"
+#include "support/cell_world.hpp"
 
 namespace {
 
@@ -19,21 +20,10 @@ const antipode::RobotModel& robot() {
   return model;
 }
 
-Eigen::Isometry3d at(double x, double y, double z) {
-  Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
-  pose.translation() = Eigen::Vector3d(x, y, z);
-  return pose;
-}
-
-// The table top at z = -0.295 and a 0.3 x 0.3 m box with 0.15 m walls centred at
-// (0.75, -0.2), the points filling its floor and a pile inside it.
+// The table, the box and points filling its floor and a pile inside it.
 void add_cell(ArmCollisionWorld& world) {
-  world.add_box("table", at(0.8, -0.2, -0.32), Eigen::Vector3d(0.8, 1.2, 0.05));
-  const double cx = 0.75, cy = -0.2, h = 0.15, t = 0.01;
-  world.add_box("wall_x0", at(cx - 0.15, cy, -0.295 + h / 2), Eigen::Vector3d(t, 0.3, h));
-  world.add_box("wall_x1", at(cx + 0.15, cy, -0.295 + h / 2), Eigen::Vector3d(t, 0.3, h));
-  world.add_box("wall_y0", at(cx, cy - 0.15, -0.295 + h / 2), Eigen::Vector3d(0.3, t, h));
-  world.add_box("wall_y1", at(cx, cy + 0.15, -0.295 + h / 2), Eigen::Vector3d(0.3, t, h));
+  antipode::bench::add_table_and_box(world);
+  const double cx = antipode::bench::kBoxX, cy = antipode::bench::kBoxY;
   antipode::RandomStream random(5);
   std::vector<Eigen::Vector3f> points;
   points.reserve(20000);

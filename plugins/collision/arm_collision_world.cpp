@@ -65,17 +65,16 @@ Shape make_shape(const CollisionPrimitive& p) {
 
 // FCL's exact test, after the bounding spheres: most pairs of a robot's links are far apart,
 // and the sphere test costs a few nanoseconds where FCL's costs a few hundred.
-bool collide(const Shape& a, const Eigen::Isometry3d& X_BaseA, const Shape& b,
-             const Eigen::Isometry3d& X_BaseB) {
-  const Eigen::Isometry3d X_BaseShapeA = X_BaseA * a.X_LinkShape;
-  const Eigen::Isometry3d X_BaseShapeB = X_BaseB * b.X_LinkShape;
+// The shapes are placed at X_BaseShapeA and X_BaseShapeB.
+bool collide(const Shape& a, const Eigen::Isometry3d& X_BaseShapeA, const Shape& b,
+             const Eigen::Isometry3d& X_BaseShapeB) {
   const double reach = a.radius_m + b.radius_m;
   if (std::isfinite(reach) &&
       (X_BaseShapeA.translation() - X_BaseShapeB.translation()).squaredNorm() > reach * reach) {
     return false;
   }
-  const fcl::CollisionObjectd oa(a.geometry, X_BaseA * a.X_LinkShape);
-  const fcl::CollisionObjectd ob(b.geometry, X_BaseB * b.X_LinkShape);
+  const fcl::CollisionObjectd oa(a.geometry, X_BaseShapeA);
+  const fcl::CollisionObjectd ob(b.geometry, X_BaseShapeB);
   fcl::CollisionRequestd request;
   fcl::CollisionResultd result;
   fcl::collide(&oa, &ob, request, result);
@@ -107,6 +106,11 @@ struct ArmCollisionWorld::Impl {
     std::vector<Shape> shapes;
     bool moving = false;
     Eigen::Isometry3d X_BaseLink = Eigen::Isometry3d::Identity();  // when not moving
+    // When moving: the link hangs from the arm chain's link `arm_link` (an index into the
+    // chain's link_names()) by the constant X_ArmLinkLink (joints off the arm keep their
+    // values).
+    std::size_t arm_link = 0;
+    Eigen::Isometry3d X_ArmLinkLink = Eigen::Isometry3d::Identity();
   };
   struct Box {
     std::string name;
@@ -120,19 +124,33 @@ struct ArmCollisionWorld::Impl {
   std::vector<Box> boxes;
   Shape points;  // geometry null when there are none
 
-  Eigen::Isometry3d pose(const Link& link, const Eigen::VectorXd& q) const {
-    if (!link.moving) return link.X_BaseLink;
+  // The link's pose at arm joint values `q`, computed from its own chain.
+  static Eigen::Isometry3d chain_pose(const Link& link, const Eigen::VectorXd& q) {
     Eigen::VectorXd ql = link.fixed_q;
     for (Eigen::Index i = 0; i < ql.size(); ++i)
       if (link.arm_index[std::size_t(i)] >= 0) ql(i) = q(link.arm_index[std::size_t(i)]);
     return link.chain.forward(ql);
   }
 
-  bool links_collide(const Link& a, const Eigen::Isometry3d& xa, const Link& b,
-                     const Eigen::Isometry3d& xb) const {
-    for (const Shape& sa : a.shapes)
-      for (const Shape& sb : b.shapes)
-        if (collide(sa, xa, sb, xb)) return true;
+  // The link's pose given the arm chain's link poses at the same q.
+  static Eigen::Isometry3d pose(const Link& link, const std::vector<Eigen::Isometry3d>& arm) {
+    return link.moving ? arm[link.arm_link] * link.X_ArmLinkLink : link.X_BaseLink;
+  }
+
+  // Where the link's shapes are when the link is at X_BaseLink.
+  static std::vector<Eigen::Isometry3d> shape_poses(const Link& link,
+                                                    const Eigen::Isometry3d& X_BaseLink) {
+    std::vector<Eigen::Isometry3d> poses;
+    poses.reserve(link.shapes.size());
+    for (const Shape& shape : link.shapes) poses.push_back(X_BaseLink * shape.X_LinkShape);
+    return poses;
+  }
+
+  static bool links_collide(const Link& a, const std::vector<Eigen::Isometry3d>& xa, const Link& b,
+                            const std::vector<Eigen::Isometry3d>& xb) {
+    for (std::size_t i = 0; i < a.shapes.size(); ++i)
+      for (std::size_t j = 0; j < b.shapes.size(); ++j)
+        if (collide(a.shapes[i], xa[i], b.shapes[j], xb[j])) return true;
     return false;
   }
 };
@@ -151,6 +169,11 @@ ArmCollisionWorld::ArmCollisionWorld(const RobotModel& robot, const KinematicCha
                   did_you_mean(entry.first, joints));
   }
   impl_->arm = arm;
+  Eigen::VectorXd zero = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(arm.dof()));
+  for (std::size_t j = 0; j < arm.dof(); ++j)
+    zero(Eigen::Index(j)) = std::clamp(0.0, arm.limits()[j].lower, arm.limits()[j].upper);
+  const std::vector<std::string> arm_links = arm.link_names();
+  const std::vector<Eigen::Isometry3d> arm_at_zero = arm.link_poses(zero);
   for (const std::string& name : robot.link_names()) {
     const std::vector<CollisionPrimitive> primitives = robot.collision_shapes(name);
     if (primitives.empty()) continue;
@@ -168,22 +191,28 @@ ArmCollisionWorld::ArmCollisionWorld(const RobotModel& robot, const KinematicCha
       if (fixed != joint_values.end()) link.fixed_q(Eigen::Index(j)) = fixed->second;
     }
     for (const CollisionPrimitive& p : primitives) link.shapes.push_back(make_shape(p));
-    if (!link.moving) link.X_BaseLink = link.chain.forward(link.fixed_q);
+    if (link.moving) {
+      // The deepest arm-chain link on this link's path from the base.
+      const std::vector<std::string> path = link.chain.link_names();
+      for (std::size_t k = 0; k < arm_links.size(); ++k)
+        if (std::find(path.begin(), path.end(), arm_links[k]) != path.end()) link.arm_link = k;
+      link.X_ArmLinkLink = arm_at_zero[link.arm_link].inverse() * Impl::chain_pose(link, zero);
+    } else {
+      link.X_BaseLink = link.chain.forward(link.fixed_q);
+    }
     impl_->links.push_back(std::move(link));
   }
   // Self-collision pairs: an arm link with any other link, unless within
   // kMinJointsApart moving joints of it (collision_pairs.hpp) or in contact at the arm's zero
   // configuration (clamped into the limits).
-  Eigen::VectorXd zero = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(arm.dof()));
-  for (std::size_t j = 0; j < arm.dof(); ++j)
-    zero(Eigen::Index(j)) = std::clamp(0.0, arm.limits()[j].lower, arm.limits()[j].upper);
   const auto& links = impl_->links;
   for (std::size_t a = 0; a < links.size(); ++a) {
     for (std::size_t b = a + 1; b < links.size(); ++b) {
       if (!links[a].moving && !links[b].moving) continue;
       if (moving_joints_between(robot, links[a].name, links[b].name) < kMinJointsApart) continue;
-      if (impl_->links_collide(links[a], impl_->pose(links[a], zero), links[b],
-                               impl_->pose(links[b], zero))) {
+      if (Impl::links_collide(
+              links[a], Impl::shape_poses(links[a], Impl::pose(links[a], arm_at_zero)), links[b],
+              Impl::shape_poses(links[b], Impl::pose(links[b], arm_at_zero)))) {
         continue;
       }
       impl_->pairs.emplace_back(a, b);
@@ -226,11 +255,13 @@ ContactReport ArmCollisionWorld::check(const Eigen::VectorXd& q) const {
                 std::to_string(impl_->arm.dof()) + " joints of the arm (all finite)");
   }
   const auto& links = impl_->links;
-  std::vector<Eigen::Isometry3d> poses(links.size());
-  for (std::size_t i = 0; i < links.size(); ++i) poses[i] = impl_->pose(links[i], q);
+  const std::vector<Eigen::Isometry3d> arm = impl_->arm.link_poses(q);
+  std::vector<std::vector<Eigen::Isometry3d>> poses(links.size());  // of each link's shapes
+  for (std::size_t i = 0; i < links.size(); ++i)
+    poses[i] = Impl::shape_poses(links[i], Impl::pose(links[i], arm));
   ContactReport report;
   for (const auto& [a, b] : impl_->pairs) {
-    if (impl_->links_collide(links[a], poses[a], links[b], poses[b])) {
+    if (Impl::links_collide(links[a], poses[a], links[b], poses[b])) {
       const bool a_moves = links[a].moving;
       return {ContactReport::Kind::kSelf, a_moves ? links[a].name : links[b].name,
               a_moves ? links[b].name : links[a].name};
@@ -239,11 +270,12 @@ ContactReport ArmCollisionWorld::check(const Eigen::VectorXd& q) const {
   const Eigen::Isometry3d identity = Eigen::Isometry3d::Identity();
   for (std::size_t i = 0; i < links.size(); ++i) {
     if (!links[i].moving) continue;
-    for (const Shape& s : links[i].shapes) {
+    for (std::size_t k = 0; k < links[i].shapes.size(); ++k) {
+      const Shape& s = links[i].shapes[k];
       for (const Impl::Box& box : impl_->boxes)
-        if (collide(s, poses[i], box.shape, identity))
+        if (collide(s, poses[i][k], box.shape, box.shape.X_LinkShape))
           return {ContactReport::Kind::kEnvironment, links[i].name, box.name};
-      if (impl_->points.geometry && collide(s, poses[i], impl_->points, identity))
+      if (impl_->points.geometry && collide(s, poses[i][k], impl_->points, identity))
         return {ContactReport::Kind::kEnvironment, links[i].name, "points"};
     }
   }

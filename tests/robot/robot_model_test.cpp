@@ -129,6 +129,22 @@ TEST(BaxterModel, JacobianMatchesFiniteDifferencesOfForwardKinematics) {
   }
 }
 
+TEST(BaxterModel, LinkPosesInOnePassMatchEachLinksOwnChain) {
+  const RobotModel robot = baxter();
+  const KinematicChain arm = robot.chain("base", "right_gripper");
+  const Eigen::VectorXd q = q7(0.5, -0.6, 0.3, 1.2, -0.4, 0.9, 0.7);
+  const std::vector<std::string> names = arm.link_names();
+  const std::vector<Eigen::Isometry3d> poses = arm.link_poses(q);
+  ASSERT_EQ(names.size(), poses.size());
+  EXPECT_EQ(names.front(), "torso");
+  EXPECT_EQ(names.back(), "right_gripper");
+  for (std::size_t i = 0; i < names.size(); ++i) {
+    const KinematicChain part = robot.chain("base", names[i]);
+    const Eigen::Isometry3d expected = part.forward(q.head(Eigen::Index(part.dof())));
+    EXPECT_TRUE(poses[i].isApprox(expected, 1e-12)) << names[i];
+  }
+}
+
 TEST(BaxterModel, FingersArePrismaticWithTheStrokeOfTheSetting) {
   const KinematicChain finger = baxter().chain("right_gripper_base", "right_gripper_l_finger");
   ASSERT_EQ(finger.dof(), 1u);

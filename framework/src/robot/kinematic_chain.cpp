@@ -7,6 +7,7 @@
 #include <kdl/chainjnttojacsolver.hpp>
 #include <kdl/jacobian.hpp>
 #include <kdl/jntarray.hpp>
+#include <kdl/segment.hpp>
 
 #include "antipode/core/error.hpp"
 #include "kinematic_chain_impl.hpp"
@@ -71,6 +72,29 @@ Eigen::Isometry3d KinematicChain::forward(const Eigen::VectorXd& q) const {
   if (solver.JntToCart(to_kdl(q), frame) < 0)
     throw InternalError("forward kinematics failed for '" + tip_link() + "'");
   return to_eigen(frame);
+}
+
+std::vector<std::string> KinematicChain::link_names() const {
+  std::vector<std::string> names;
+  if (!impl_) return names;
+  for (unsigned i = 0; i < impl_->chain.getNrOfSegments(); ++i)
+    names.push_back(impl_->chain.getSegment(i).getName());
+  return names;
+}
+
+std::vector<Eigen::Isometry3d> KinematicChain::link_poses(const Eigen::VectorXd& q) const {
+  check_joint_values(*this, q, "forward kinematics");
+  std::vector<Eigen::Isometry3d> poses;
+  if (!impl_) return poses;
+  KDL::Frame frame = KDL::Frame::Identity();
+  Eigen::Index joint = 0;
+  for (unsigned i = 0; i < impl_->chain.getNrOfSegments(); ++i) {
+    const KDL::Segment& segment = impl_->chain.getSegment(i);
+    const bool moves = segment.getJoint().getType() != KDL::Joint::None;
+    frame = frame * segment.pose(moves ? q(joint++) : 0.0);
+    poses.push_back(to_eigen(frame));
+  }
+  return poses;
 }
 
 Eigen::Matrix<double, 6, Eigen::Dynamic> KinematicChain::jacobian(const Eigen::VectorXd& q) const {

@@ -43,6 +43,11 @@ class KinematicChain {
   /// non-finite value; values outside the limits are evaluated as given.
   Eigen::Isometry3d forward(const Eigen::VectorXd& q) const;
 
+  /// The links of the chain after the base, base to tip (the tip last).
+  std::vector<std::string> link_names() const;
+  /// X_BaseLink of every link of link_names() at `q`, in one pass. Throws like forward().
+  std::vector<Eigen::Isometry3d> link_poses(const Eigen::VectorXd& q) const;
+
   /// The 6 x dof() geometric Jacobian at `q`, in the base frame, for the tip frame's origin:
   /// rows 0-2 linear velocity (m/s per unit joint rate), rows 3-5 angular velocity (rad/s).
   /// Throws like forward().

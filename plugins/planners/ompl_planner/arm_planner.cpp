@@ -1,0 +1,172 @@
+#include "arm_planner.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <ompl/base/SpaceInformation.h>
+#include <ompl/base/spaces/RealVectorStateSpace.h>
+#include <ompl/geometric/PathGeometric.h>
+#include <ompl/geometric/SimpleSetup.h>
+#include <ompl/geometric/planners/est/EST.h>
+#include <ompl/geometric/planners/kpiece/KPIECE1.h>
+#include <ompl/geometric/planners/prm/PRM.h>
+#include <ompl/geometric/planners/rrt/RRT.h>
+#include <ompl/geometric/planners/rrt/RRTConnect.h>
+#include <ompl/util/Console.h>
+
+#include "antipode/core/error.hpp"
+#include "path_shortcut.hpp"
+
+namespace antipode::planning {
+
+namespace ob = ompl::base;
+namespace og = ompl::geometric;
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double seconds_since(Clock::time_point start) {
+  return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+// Uniform samples from a stream seeded per problem, so that a plan depends on the problem's
+// seed and not on how many planners the process made before (OMPL's default samplers draw
+// their seeds from one process-wide sequence).
+class SeededSampler : public ob::RealVectorStateSampler {
+ public:
+  SeededSampler(const ob::StateSpace* space, std::uint64_t seed)
+      : ob::RealVectorStateSampler(space) {
+    rng_.setLocalSeed(static_cast<std::uint_fast32_t>(seed ^ (seed >> 32)));
+  }
+};
+
+const std::vector<std::string>& planner_names() {
+  static const std::vector<std::string> names = {"RRTConnect", "RRT", "KPIECE1", "PRM", "EST"};
+  return names;
+}
+
+ob::PlannerPtr make_planner(const std::string& name, const ob::SpaceInformationPtr& si) {
+  if (name == "RRT") return std::make_shared<og::RRT>(si);
+  if (name == "KPIECE1") return std::make_shared<og::KPIECE1>(si);
+  if (name == "PRM") return std::make_shared<og::PRM>(si);
+  if (name == "EST") return std::make_shared<og::EST>(si);
+  return std::make_shared<og::RRTConnect>(si);
+}
+
+void check_problem(const ArmPlanningProblem& p) {
+  if (p.arm == nullptr || p.world == nullptr)
+    throw Error("arm planning: the problem needs an arm and a collision world");
+  const auto dof = static_cast<Eigen::Index>(p.arm->dof());
+  if (p.start.size() != dof || p.goal.size() != dof || !p.start.allFinite() ||
+      !p.goal.allFinite()) {
+    throw Error("arm planning: start and goal need " + std::to_string(dof) +
+                " finite joint values each");
+  }
+  if (!(p.time_limit_s > 0.0)) throw Error("arm planning: time_limit_s must be positive");
+  if (!(p.resolution_rad > 0.0)) throw Error("arm planning: resolution_rad must be positive");
+  const auto& names = planner_names();
+  if (std::find(names.begin(), names.end(), p.planner) == names.end()) {
+    throw Error("arm planning: unknown planner '" + p.planner + "'" +
+                did_you_mean(p.planner, names) + " (use RRTConnect, RRT, KPIECE1, PRM or EST)");
+  }
+}
+
+// The problem's invalid end, if any.
+bool invalid_end(const ArmPlanningProblem& p, ArmPlan& plan) {
+  if (!p.arm->within_limits(p.start)) return plan.status = PlanStatus::kStartOutsideLimits, true;
+  if (!p.arm->within_limits(p.goal)) return plan.status = PlanStatus::kGoalOutsideLimits, true;
+  if (const auto c = p.world->check(p.start); !c.free()) {
+    plan.detail = c.str();
+    return plan.status = PlanStatus::kStartInCollision, true;
+  }
+  if (const auto c = p.world->check(p.goal); !c.free()) {
+    plan.detail = c.str();
+    return plan.status = PlanStatus::kGoalInCollision, true;
+  }
+  return false;
+}
+
+Eigen::VectorXd to_eigen(const ob::State* state, std::size_t dof) {
+  const auto* s = state->as<ob::RealVectorStateSpace::StateType>();
+  Eigen::VectorXd q(static_cast<Eigen::Index>(dof));
+  for (std::size_t i = 0; i < dof; ++i) q(static_cast<Eigen::Index>(i)) = s->values[i];
+  return q;
+}
+
+}  // namespace
+
+const char* to_string(PlanStatus status) {
+  switch (status) {
+    case PlanStatus::kSolved:
+      return "solved";
+    case PlanStatus::kStartOutsideLimits:
+      return "start outside the joint limits";
+    case PlanStatus::kGoalOutsideLimits:
+      return "goal outside the joint limits";
+    case PlanStatus::kStartInCollision:
+      return "start in collision";
+    case PlanStatus::kGoalInCollision:
+      return "goal in collision";
+    case PlanStatus::kTimedOut:
+      return "timed out";
+  }
+  return "?";
+}
+
+bool segment_is_free(const collision::ArmCollisionWorld& world, const Eigen::VectorXd& a,
+                     const Eigen::VectorXd& b, double resolution_rad) {
+  const int steps = std::max(1, static_cast<int>(std::ceil((b - a).norm() / resolution_rad)));
+  for (int i = 0; i <= steps; ++i) {
+    if (!world.check(a + (b - a) * (double(i) / steps)).free()) return false;
+  }
+  return true;
+}
+
+ArmPlan plan_arm_motion(const ArmPlanningProblem& p) {
+  check_problem(p);
+  ompl::msg::setLogLevel(ompl::msg::LOG_NONE);
+  ArmPlan plan;
+  if (invalid_end(p, plan)) return plan;
+  const std::size_t dof = p.arm->dof();
+  auto space = std::make_shared<ob::RealVectorStateSpace>(static_cast<unsigned>(dof));
+  ob::RealVectorBounds bounds(static_cast<unsigned>(dof));
+  for (std::size_t i = 0; i < dof; ++i) {
+    bounds.setLow(static_cast<unsigned>(i), p.arm->limits()[i].lower);
+    bounds.setHigh(static_cast<unsigned>(i), p.arm->limits()[i].upper);
+  }
+  space->setBounds(bounds);
+  const std::uint64_t seed = p.seed;
+  space->setStateSamplerAllocator(
+      [seed](const ob::StateSpace* s) { return std::make_shared<SeededSampler>(s, seed); });
+  og::SimpleSetup setup(space);
+  const collision::ArmCollisionWorld& world = *p.world;
+  setup.setStateValidityChecker(
+      [&world, dof](const ob::State* state) { return world.check(to_eigen(state, dof)).free(); });
+  setup.getSpaceInformation()->setStateValidityCheckingResolution(p.resolution_rad /
+                                                                  space->getMaximumExtent());
+  setup.setPlanner(make_planner(p.planner, setup.getSpaceInformation()));
+  ob::ScopedState<> start(space), goal(space);
+  for (std::size_t i = 0; i < dof; ++i) {
+    start[i] = p.start(static_cast<Eigen::Index>(i));
+    goal[i] = p.goal(static_cast<Eigen::Index>(i));
+  }
+  setup.setStartAndGoalStates(start, goal);
+  const Clock::time_point t0 = Clock::now();
+  const ob::PlannerStatus solved = setup.solve(p.time_limit_s);
+  plan.planning_s = seconds_since(t0);
+  if (solved != ob::PlannerStatus::EXACT_SOLUTION) return plan;
+  for (const ob::State* s : setup.getSolutionPath().getStates())
+    plan.path.push_back(to_eigen(s, dof));
+  const Clock::time_point t1 = Clock::now();
+  if (p.shorten) plan.path = shortcut_path(world, plan.path, p.resolution_rad);
+  plan.shortening_s = seconds_since(t1);
+  plan.status = PlanStatus::kSolved;
+  return plan;
+}
+
+}  // namespace antipode::planning

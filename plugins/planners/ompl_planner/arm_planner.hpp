@@ -1,0 +1,66 @@
+#pragma once
+// Collision-free motions of a robot arm in its joint space, planned with OMPL (RRTConnect by
+// default) against an ArmCollisionWorld, then shortened.
+//
+// Units: radians (metres for prismatic joints). A path is a list of joint vectors from the
+// start to the goal; the straight joint-space segment between two consecutive ones was
+// checked every `resolution_rad` (Euclidean joint-space distance), so no joint moves more
+// than that between two checked states.
+//
+// Threads: plan_arm_motion() may run concurrently with other calls on other worlds, or on
+// one world that nothing modifies meanwhile.
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "antipode/robot/kinematic_chain.hpp"
+#include "arm_collision_world.hpp"
+
+namespace antipode::planning {
+
+/// The planning problem: the arm, its world, the start and goal, and limits.
+struct ArmPlanningProblem {
+  const KinematicChain* arm = nullptr;
+  const collision::ArmCollisionWorld* world = nullptr;
+  Eigen::VectorXd start;
+  Eigen::VectorXd goal;
+  std::string planner = "RRTConnect";  ///< RRTConnect, RRT, KPIECE1, PRM or EST
+  double time_limit_s = 1.0;
+  double resolution_rad = 0.02;  ///< joint-space distance between checked states
+  std::uint64_t seed = 0;        ///< the planner's samples
+  bool shorten = true;           ///< shortcut the path (deterministically)
+};
+
+enum class PlanStatus {
+  kSolved,
+  kStartOutsideLimits,
+  kGoalOutsideLimits,
+  kStartInCollision,
+  kGoalInCollision,
+  kTimedOut,  ///< no path within the time limit
+};
+
+const char* to_string(PlanStatus status);
+
+struct ArmPlan {
+  PlanStatus status = PlanStatus::kTimedOut;
+  std::vector<Eigen::VectorXd> path;  ///< start ... goal, when solved
+  std::string detail;                 ///< the contact that makes the start or goal invalid
+  double planning_s = 0.0;            ///< OMPL's search
+  double shortening_s = 0.0;          ///< the shortcutting after it
+};
+
+/// Plans from `problem.start` to `problem.goal`. Throws antipode::Error for a problem
+/// without arm or world, joint vectors of the wrong size, an unknown planner name, or a
+/// non-positive time limit or resolution.
+ArmPlan plan_arm_motion(const ArmPlanningProblem& problem);
+
+/// True when the straight joint-space segment from `a` to `b`, checked every `resolution_rad`
+/// (both ends included), is free in `world`.
+bool segment_is_free(const collision::ArmCollisionWorld& world, const Eigen::VectorXd& a,
+                     const Eigen::VectorXd& b, double resolution_rad);
+
+}  // namespace antipode::planning
