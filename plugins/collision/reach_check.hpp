@@ -1,0 +1,56 @@
+#pragma once
+// Can the arm take a grasp? Inverse kinematics at the grasp and at the pre-grasp (the grasp
+// moved back along its approach), each solution checked in the arm's collision world - the
+// first filters of the paper's grasp selection (section 5.1) for a hand on an arm.
+//
+// Frames: X_BaseHand is the hand frame of the grasp (docs/pose-convention.md: x the
+// approach) in the robot's base frame; the arm chain's tip must be that hand frame (for
+// Baxter, `right_gripper`). Metres and radians.
+//
+// The world is checked as given: the caller leaves out of it what the hand may touch (the
+// target's points between the fingers and along the final approach).
+
+#include <string>
+
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+
+#include "antipode/robot/inverse_kinematics.hpp"
+#include "arm_collision_world.hpp"
+
+namespace antipode::collision {
+
+enum class ReachStatus {
+  kReachable,
+  kNoIkAtGrasp,            ///< no joint values within the limits put the hand there
+  kInCollisionAtGrasp,     ///< every solution found at the grasp is in collision
+  kNoIkAtPreGrasp,         ///< no solution near a free grasp one reaches the pre-grasp
+  kInCollisionAtPreGrasp,  ///< the pre-grasp solutions are in collision
+};
+
+const char* to_string(ReachStatus status);
+
+struct ReachOptions {
+  double pregrasp_m = 0.10;  ///< how far back along the approach the pre-grasp is
+  int grasp_solutions = 12;  ///< distinct IK solutions tried at the grasp
+  IkOptions ik;              ///< tolerance, budget and seed of each IK call
+};
+
+struct Reach {
+  ReachStatus status = ReachStatus::kNoIkAtGrasp;
+  Eigen::VectorXd q_grasp;     ///< when reachable
+  Eigen::VectorXd q_pregrasp;  ///< when reachable
+  std::string detail;          ///< the contact behind a kInCollision status
+};
+
+/// Tries up to `grasp_solutions` distinct IK solutions at the grasp (from `q_seed`); for each
+/// free one, solves the pre-grasp from it (as many solutions) and takes the free one nearest
+/// to it. Returns the
+/// first pair that is free, else the status of the attempt that came farthest (pre-grasp
+/// statuses before grasp ones). Throws antipode::Error for a seed or target IK refuses, or
+/// invalid options.
+Reach check_reach(const KinematicChain& arm, const ArmCollisionWorld& world,
+                  const Eigen::Isometry3d& X_BaseHand, const Eigen::VectorXd& q_seed,
+                  const ReachOptions& options = {});
+
+}  // namespace antipode::collision

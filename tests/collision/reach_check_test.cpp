@@ -1,0 +1,93 @@
+// Reach checks of Baxter's right arm over a box on the table: a grasp from above is
+// reachable, one whose approach passes through the box's near wall is rejected with the
+// wall named, and the same grasp is reachable once the wall is gone.
+
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "antipode/robot/robot_model.hpp"
+#include "reach_check.hpp"
+
+namespace antipode::collision {
+namespace {
+
+const RobotModel& baxter() {
+  static const RobotModel robot =
+      RobotModel::load(std::string(ANTIPODE_TEST_SOURCE_DIR) + "/robots/baxter/baxter.urdf");
+  return robot;
+}
+
+Eigen::Isometry3d hand_at(const Eigen::Vector3d& position, const Eigen::Vector3d& approach) {
+  Eigen::Isometry3d X = Eigen::Isometry3d::Identity();
+  const Eigen::Vector3d closing = approach.unitOrthogonal();
+  X.linear().col(0) = approach.normalized();
+  X.linear().col(1) = closing;
+  X.linear().col(2) = approach.normalized().cross(closing);
+  X.translation() = position;
+  return X;
+}
+
+Eigen::Isometry3d box_at(double x, double y, double z) {
+  Eigen::Isometry3d X = Eigen::Isometry3d::Identity();
+  X.translation() = Eigen::Vector3d(x, y, z);
+  return X;
+}
+
+// The table top at z = -0.295 and a box's near wall (the one facing the robot) at x = 0.6.
+void add_table_and_near_wall(ArmCollisionWorld& world) {
+  world.add_box("table", box_at(0.8, -0.2, -0.32), Eigen::Vector3d(0.8, 1.2, 0.05));
+  world.add_box("near_wall", box_at(0.6, -0.2, -0.22), Eigen::Vector3d(0.01, 0.3, 0.15));
+}
+
+void expect_at(const KinematicChain& arm, const Eigen::VectorXd& q, const Eigen::Isometry3d& X) {
+  EXPECT_LT((arm.forward(q).translation() - X.translation()).norm(), 1e-4);
+}
+
+TEST(ReachCheck, AGraspFromAboveIsReachableWithItsPreGrasp) {
+  const KinematicChain arm = baxter().chain("base", "right_gripper");
+  ArmCollisionWorld world(baxter(), arm);
+  add_table_and_near_wall(world);
+  const Eigen::Isometry3d X = hand_at({0.72, -0.2, -0.17}, -Eigen::Vector3d::UnitZ());
+  const Reach reach = check_reach(arm, world, X, arm.mid_range());
+  ASSERT_EQ(reach.status, ReachStatus::kReachable)
+      << to_string(reach.status) << " " << reach.detail;
+  expect_at(arm, reach.q_grasp, X);
+  Eigen::Isometry3d pre = X;
+  pre.translation().z() += 0.10;  // 10 cm back along the downward approach
+  expect_at(arm, reach.q_pregrasp, pre);
+  EXPECT_TRUE(world.check(reach.q_grasp).free());
+  EXPECT_TRUE(world.check(reach.q_pregrasp).free());
+}
+
+TEST(ReachCheck, AGraspBehindTheBoxWallIsRejectedWithTheWallNamed) {
+  const KinematicChain arm = baxter().chain("base", "right_gripper");
+  // Just inside the near wall, below its top, the approach horizontal through the wall.
+  const Eigen::Isometry3d X = hand_at({0.64, -0.2, -0.2}, Eigen::Vector3d::UnitX());
+  {
+    ArmCollisionWorld open(baxter(), arm);  // the same grasp without the box is reachable
+    open.add_box("table", box_at(0.8, -0.2, -0.32), Eigen::Vector3d(0.8, 1.2, 0.05));
+    const Reach reach = check_reach(arm, open, X, arm.mid_range());
+    ASSERT_EQ(reach.status, ReachStatus::kReachable)
+        << to_string(reach.status) << " " << reach.detail;
+  }
+  ArmCollisionWorld world(baxter(), arm);
+  add_table_and_near_wall(world);
+  const Reach reach = check_reach(arm, world, X, arm.mid_range());
+  EXPECT_TRUE(reach.status == ReachStatus::kInCollisionAtGrasp ||
+              reach.status == ReachStatus::kInCollisionAtPreGrasp)
+      << to_string(reach.status);
+  EXPECT_NE(reach.detail.find("with near_wall"), std::string::npos) << reach.detail;
+}
+
+TEST(ReachCheck, AGraspBeyondTheArmHasNoIk) {
+  const KinematicChain arm = baxter().chain("base", "right_gripper");
+  const ArmCollisionWorld world(baxter(), arm);
+  const Reach reach =
+      check_reach(arm, world, hand_at({2.0, -0.2, 0.0}, Eigen::Vector3d::UnitX()), arm.mid_range());
+  EXPECT_EQ(reach.status, ReachStatus::kNoIkAtGrasp);
+  EXPECT_STREQ(to_string(reach.status), "no IK at the grasp");
+}
+
+}  // namespace
+}  // namespace antipode::collision
