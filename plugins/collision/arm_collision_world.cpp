@@ -122,7 +122,8 @@ struct ArmCollisionWorld::Impl {
   std::vector<std::pair<std::size_t, std::size_t>> pairs;  // indices into links
   std::vector<std::pair<std::string, std::string>> pair_names;
   std::vector<Box> boxes;
-  Shape points;  // geometry null when there are none
+  Shape points;                        // geometry null when there are none
+  std::vector<char> points_unchecked;  // per link
 
   // The link's pose at arm joint values `q`, computed from its own chain.
   static Eigen::Isometry3d chain_pose(const Link& link, const Eigen::VectorXd& q) {
@@ -236,10 +237,20 @@ void ArmCollisionWorld::add_box(const std::string& name, const Eigen::Isometry3d
 }
 
 void ArmCollisionWorld::set_points(const std::vector<Eigen::Vector3f>& points_m,
-                                   double resolution_m) {
+                                   double resolution_m,
+                                   const std::vector<std::string>& unchecked_links) {
   if (!(resolution_m >= 0.001 && resolution_m <= 1.0))
     throw Error("collision world: octree resolution must be in [0.001, 1] m, got " +
                 std::to_string(resolution_m));
+  std::vector<char> unchecked(impl_->links.size(), 0);
+  for (const std::string& name : unchecked_links) {
+    const auto it = std::find_if(impl_->links.begin(), impl_->links.end(),
+                                 [&](const Impl::Link& l) { return l.name == name; });
+    if (it == impl_->links.end())
+      throw Error("collision world: no link with collision shapes named '" + name + "'");
+    unchecked[std::size_t(it - impl_->links.begin())] = 1;
+  }
+  impl_->points_unchecked = std::move(unchecked);
   impl_->points = {};
   if (points_m.empty()) return;
   auto tree = std::make_shared<octomap::OcTree>(resolution_m);
@@ -275,7 +286,8 @@ ContactReport ArmCollisionWorld::check(const Eigen::VectorXd& q) const {
       for (const Impl::Box& box : impl_->boxes)
         if (collide(s, poses[i][k], box.shape, box.shape.X_LinkShape))
           return {ContactReport::Kind::kEnvironment, links[i].name, box.name};
-      if (impl_->points.geometry && collide(s, poses[i][k], impl_->points, identity))
+      if (impl_->points.geometry && !impl_->points_unchecked[i] &&
+          collide(s, poses[i][k], impl_->points, identity))
         return {ContactReport::Kind::kEnvironment, links[i].name, "points"};
     }
   }

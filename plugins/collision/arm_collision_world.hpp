@@ -50,9 +50,11 @@ class ArmCollisionWorld {
   void add_box(const std::string& name, const Eigen::Isometry3d& X_BaseBox,
                const Eigen::Vector3d& size_m);
   /// The observed points (base frame) as an octree of `resolution_m` cells, replacing any
-  /// earlier points; an empty vector removes them. Throws antipode::Error for a resolution
-  /// outside [0.001, 1] m.
-  void set_points(const std::vector<Eigen::Vector3f>& points_m, double resolution_m);
+  /// earlier points; an empty vector removes them. The links named in `unchecked_links` are
+  /// not checked against them (e.g. a gripper whose own check against the cloud is finer).
+  /// Throws antipode::Error for a resolution outside [0.001, 1] m or an unknown link.
+  void set_points(const std::vector<Eigen::Vector3f>& points_m, double resolution_m,
+                  const std::vector<std::string>& unchecked_links = {});
 
   /// The arm at `q` against itself, the fixed robot and the scene: self-collision first,
   /// then the boxes, then the points. Throws antipode::Error unless `q` has one finite value

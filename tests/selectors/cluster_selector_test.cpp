@@ -303,5 +303,34 @@ TEST_F(ClusterSelectorTest, RejectsBadParameters) {
   EXPECT_THROW(create("{}")->select(no_cloud), Error);
 }
 
+// With Baxter's model, a grasp the right arm cannot reach is dropped for want of inverse
+// kinematics, and the reachable one is kept although the classifier scored it lower.
+TEST_F(ClusterSelectorTest, WithARobotTheArmMustReachTheGrasp) {
+  const std::string robot = std::string(ANTIPODE_TEST_SOURCE_DIR) + "/robots/baxter/baxter.urdf";
+  // The table 30 cm below the base; a hand over it in front of the right arm, and one
+  // 1.5 m out, beyond the arm's reach, scored higher.
+  HandSet set = on_table({top_down(0.72, -0.2, -0.17, 1.0), top_down(1.5, -0.2, -0.17, 5.0)});
+  set.support->offset = 0.295f;
+  auto cloud = std::make_shared<Cloud>();
+  cloud->frame = "base";
+  set.cloud = cloud;
+  const HandSet free_hand = create("min_cluster_size: 1")->select(set);
+  ASSERT_EQ(grasp_count(free_hand), 2u);
+  EXPECT_NEAR(free_hand.hands[0].position_m().x(), 1.5, 1e-9) << "the higher score first";
+
+  const HandSet on_arm = create("min_cluster_size: 1\nrobot: " + robot)->select(set);
+  ASSERT_EQ(grasp_count(on_arm), 1u);
+  EXPECT_NEAR(on_arm.hands[0].position_m().x(), 0.72, 1e-9);
+  EXPECT_EQ(on_arm.hands[1].rejection, Rejection::kNoIk);
+  EXPECT_NEAR(on_arm.hands[1].position_m().x(), 1.5, 1e-9);
+
+  cloud = std::make_shared<Cloud>();
+  cloud->frame = "camera";
+  set.cloud = cloud;
+  EXPECT_THROW(create("min_cluster_size: 1\nrobot: " + robot)->select(set), Error);
+  EXPECT_NE(creation_error("robot: /nonexistent.urdf").find("parameter 'robot'"),
+            std::string::npos);
+}
+
 }  // namespace
 }  // namespace antipode

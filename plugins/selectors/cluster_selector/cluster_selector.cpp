@@ -42,8 +42,19 @@ double aperture_penalty(double width_m, const HandGeometry& geometry, double mar
   return distance >= margin_m ? 0.0 : (margin_m - distance) * (margin_m - distance);
 }
 
+ClusterSelector::ClusterSelector(const SelectionOptions& options) : options_(options) {
+  if (!options_.arm.robot_file.empty()) arm_ = std::make_shared<const ArmReach>(options_.arm);
+}
+
 ClusterSelector::ClusterSelector(const Parameters& params)
-    : options_(read_selection_options(params)) {}
+    : options_(read_selection_options(params)) {
+  if (options_.arm.robot_file.empty()) return;
+  try {
+    arm_ = std::make_shared<const ArmReach>(options_.arm);
+  } catch (const Error& e) {
+    params.fail("robot", std::string("parameter 'robot': ") + e.what());
+  }
+}
 
 HandSet ClusterSelector::select(const HandSet& in) const {
   if (!in.cloud) throw Error("cluster_selector: the hand set has no cloud");
@@ -118,6 +129,14 @@ HandSet ClusterSelector::select(const HandSet& in) const {
                           float(options_.occlusion_margin_m));
   };
 
+  // Built for the first grasp about to be kept, with a robot only.
+  std::optional<collision::ArmCollisionWorld> arm_world;
+  const auto arm_rejection = [&](const Hand& grasp) {
+    if (!arm_) return Rejection::kNone;
+    if (!arm_world) arm_world.emplace(arm_->world_for(*in.cloud));
+    return arm_->check(*arm_world, grasp, options_.standoff_m);
+  };
+
   // The kept grasps first, then the proposals not kept, then the input hands.
   std::vector<Hand> kept, dropped;
   std::vector<std::pair<const Proposal*, bool>> placed;  // proposal, kept?
@@ -131,6 +150,8 @@ HandSet ClusterSelector::select(const HandSet& in) const {
       grasp.rejection = Rejection::kNotSelected;
     else if (!approach_is_free(grasp, g, *in.cloud, options_.standoff_m) || !way_in_seen(grasp))
       grasp.rejection = Rejection::kInCollision;
+    else
+      grasp.rejection = arm_rejection(grasp);
     balanced_kept = balanced_kept || (grasp.rejection == Rejection::kNone && !unbalanced(p));
     placed.emplace_back(&p, grasp.rejection == Rejection::kNone);
     (grasp.rejection == Rejection::kNone ? kept : dropped).push_back(std::move(grasp));

@@ -6,6 +6,8 @@
 // score. The arm's criteria (joint limits, travel) extend this ranking when
 // a robot is in the tree.
 
+#include <memory>
+
 #include "antipode/interfaces/grasp_selector.hpp"
 #include "selection_options.hpp"
 
@@ -19,7 +21,7 @@ class ClusterSelector final : public GraspSelector {
  public:
   /// Parameters as in docs/selection.md; throws antipode::Error for unknown or invalid ones.
   explicit ClusterSelector(const Parameters& params);
-  explicit ClusterSelector(const SelectionOptions& options) : options_(options) {}
+  explicit ClusterSelector(const SelectionOptions& options);
 
   /// In order: hands already rejected or labelled otherwise than positive (or unknown) stay
   /// out; hands reaching below the support on their way in (kBelowSupport) or whose width is
@@ -29,12 +31,14 @@ class ClusterSelector final : public GraspSelector {
   /// observed points; proposals are ranked by tilt, criterion 2 and balance (each deciding
   /// where the ones before tie within their tolerance), then score, those with a lever arm
   /// beyond `max_torque_arm_m` last (kUnbalanced unless no other grasp is kept), and the
-  /// first `max_grasps` whose way in is free are the grasps. See GraspSelector::select for
+  /// first `max_grasps` whose way in is free (and, with a robot, that the arm reaches) are
+  /// the grasps. See GraspSelector::select for
   /// the layout of the result.
   HandSet select(const HandSet& hands) const override;
 
  private:
   SelectionOptions options_;
+  std::shared_ptr<const ArmReach> arm_;  // null for a free-floating hand
 };
 
 }  // namespace antipode::selectors

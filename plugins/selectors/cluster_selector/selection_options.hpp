@@ -5,6 +5,7 @@
 #include <optional>
 
 #include "antipode/core/parameters.hpp"
+#include "arm_reach.hpp"
 
 namespace antipode::selectors {
 
@@ -52,6 +53,9 @@ struct SelectionOptions {
   double penalty_tolerance_m2 = 1e-6;
   /// How many grasps to return.
   std::size_t max_grasps = 10;
+  /// The arm (arm_reach.hpp): with a robot file, a grasp is kept only when the arm reaches
+  /// it and its stand-off free of collisions (kNoIk, kInCollision otherwise).
+  ArmReachOptions arm;
 };
 
 /// Reads the component's parameters; throws antipode::Error located at the bad key.
