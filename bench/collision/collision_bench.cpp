@@ -38,11 +38,7 @@ void add_cell(ArmCollisionWorld& world) {
 std::vector<Eigen::VectorXd> random_configurations(const antipode::KinematicChain& arm, int n) {
   antipode::RandomStream random(1);
   std::vector<Eigen::VectorXd> qs;
-  for (int i = 0; i < n; ++i) {
-    Eigen::VectorXd q(7);
-    for (int j = 0; j < 7; ++j) q(j) = random.uniform(arm.limits()[j].lower, arm.limits()[j].upper);
-    qs.push_back(q);
-  }
+  for (int i = 0; i < n; ++i) qs.push_back(arm.random_configuration(random));
   return qs;
 }
 
@@ -59,6 +55,7 @@ void check_random(benchmark::State& state, bool with_cell) {
   }
   state.counters["checks_per_s"] = benchmark::Counter(double(checks), benchmark::Counter::kIsRate);
   state.counters["free_share"] = double(free) / double(checks);
+  state.counters["self_pairs"] = double(world.self_pairs().size());
 }
 
 void BM_CheckRobotOnly(benchmark::State& state) { check_random(state, false); }

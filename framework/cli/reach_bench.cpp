@@ -41,13 +41,9 @@ std::vector<Eigen::Isometry3d> random_targets(const KinematicChain& chain, int c
                                               std::uint64_t seed) {
   RandomStream random(seed);
   std::vector<Eigen::Isometry3d> targets;
-  Eigen::VectorXd q(static_cast<Eigen::Index>(chain.dof()));
-  for (int i = 0; i < count; ++i) {
-    for (std::size_t j = 0; j < chain.dof(); ++j)
-      q(static_cast<Eigen::Index>(j)) =
-          random.uniform(chain.limits()[j].lower, chain.limits()[j].upper);
-    targets.push_back(chain.forward(q));
-  }
+  targets.reserve(static_cast<std::size_t>(count));
+  for (int i = 0; i < count; ++i)
+    targets.push_back(chain.forward(chain.random_configuration(random)));
   return targets;
 }
 

@@ -96,21 +96,16 @@ std::string ContactReport::str() const {
 }
 
 struct ArmCollisionWorld::Impl {
-  // A robot link with shapes: its chain from the base and where each chain joint's value
-  // comes from (an index into the arm's q, or -1 for its fixed value).
+  // A robot link with shapes. A moving link hangs from the arm chain's link `arm_link` (an
+  // index into the chain's link_names()) by the constant X_ParentLink (joints off the arm
+  // keep their values); a fixed one stands at X_ParentLink in the base frame.
   struct Link {
     std::string name;
-    KinematicChain chain;
-    std::vector<int> arm_index;
-    Eigen::VectorXd fixed_q;
     std::vector<Shape> shapes;
+    std::size_t first_shape = 0;  // where its shapes' poses start in check()'s array
     bool moving = false;
-    Eigen::Isometry3d X_BaseLink = Eigen::Isometry3d::Identity();  // when not moving
-    // When moving: the link hangs from the arm chain's link `arm_link` (an index into the
-    // chain's link_names()) by the constant X_ArmLinkLink (joints off the arm keep their
-    // values).
     std::size_t arm_link = 0;
-    Eigen::Isometry3d X_ArmLinkLink = Eigen::Isometry3d::Identity();
+    Eigen::Isometry3d X_ParentLink = Eigen::Isometry3d::Identity();
   };
   struct Box {
     std::string name;
@@ -119,42 +114,78 @@ struct ArmCollisionWorld::Impl {
 
   KinematicChain arm;
   std::vector<Link> links;
+  std::size_t shape_count = 0;
   std::vector<std::pair<std::size_t, std::size_t>> pairs;  // indices into links
-  std::vector<std::pair<std::string, std::string>> pair_names;
   std::vector<Box> boxes;
   Shape points;                        // geometry null when there are none
   std::vector<char> points_unchecked;  // per link
 
-  // The link's pose at arm joint values `q`, computed from its own chain.
-  static Eigen::Isometry3d chain_pose(const Link& link, const Eigen::VectorXd& q) {
-    Eigen::VectorXd ql = link.fixed_q;
-    for (Eigen::Index i = 0; i < ql.size(); ++i)
-      if (link.arm_index[std::size_t(i)] >= 0) ql(i) = q(link.arm_index[std::size_t(i)]);
-    return link.chain.forward(ql);
-  }
-
-  // The link's pose given the arm chain's link poses at the same q.
-  static Eigen::Isometry3d pose(const Link& link, const std::vector<Eigen::Isometry3d>& arm) {
-    return link.moving ? arm[link.arm_link] * link.X_ArmLinkLink : link.X_BaseLink;
-  }
-
-  // Where the link's shapes are when the link is at X_BaseLink.
-  static std::vector<Eigen::Isometry3d> shape_poses(const Link& link,
-                                                    const Eigen::Isometry3d& X_BaseLink) {
+  // Every shape's pose with the arm's links at `arm` (KinematicChain::link_poses), link by
+  // link from each link's first_shape.
+  std::vector<Eigen::Isometry3d> shape_poses(const std::vector<Eigen::Isometry3d>& arm) const {
     std::vector<Eigen::Isometry3d> poses;
-    poses.reserve(link.shapes.size());
-    for (const Shape& shape : link.shapes) poses.push_back(X_BaseLink * shape.X_LinkShape);
+    poses.reserve(shape_count);
+    for (const Link& link : links) {
+      const Eigen::Isometry3d X_BaseLink =
+          link.moving ? arm[link.arm_link] * link.X_ParentLink : link.X_ParentLink;
+      for (const Shape& shape : link.shapes) poses.push_back(X_BaseLink * shape.X_LinkShape);
+    }
     return poses;
   }
 
-  static bool links_collide(const Link& a, const std::vector<Eigen::Isometry3d>& xa, const Link& b,
-                            const std::vector<Eigen::Isometry3d>& xb) {
-    for (std::size_t i = 0; i < a.shapes.size(); ++i)
-      for (std::size_t j = 0; j < b.shapes.size(); ++j)
-        if (collide(a.shapes[i], xa[i], b.shapes[j], xb[j])) return true;
+  bool links_collide(std::size_t a, std::size_t b,
+                     const std::vector<Eigen::Isometry3d>& poses) const {
+    const Link& la = links[a];
+    const Link& lb = links[b];
+    for (std::size_t i = 0; i < la.shapes.size(); ++i)
+      for (std::size_t j = 0; j < lb.shapes.size(); ++j)
+        if (collide(la.shapes[i], poses[la.first_shape + i], lb.shapes[j],
+                    poses[lb.first_shape + j]))
+          return true;
     return false;
   }
 };
+
+namespace {
+
+// The link `name` of `robot` for the world of `arm`: whether it moves with the arm, and its
+// pose relative to the arm link it hangs from (or to the base), from its own chain with the
+// arm at `q_arm` and every other joint at its value in `joint_values` (0 if absent).
+ArmCollisionWorld::Impl::Link make_link(const RobotModel& robot, const KinematicChain& arm,
+                                        const std::string& name,
+                                        const std::map<std::string, double>& joint_values,
+                                        const Eigen::VectorXd& q_arm,
+                                        const std::vector<Eigen::Isometry3d>& arm_poses) {
+  ArmCollisionWorld::Impl::Link link;
+  link.name = name;
+  const KinematicChain chain = robot.chain(arm.base_link(), name);
+  Eigen::VectorXd q = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(chain.dof()));
+  for (std::size_t j = 0; j < chain.dof(); ++j) {
+    const std::string& joint = chain.joint_names()[j];
+    const auto& arm_joints = arm.joint_names();
+    const auto in_arm = std::find(arm_joints.begin(), arm_joints.end(), joint);
+    if (in_arm != arm_joints.end()) {
+      link.moving = true;
+      q(Eigen::Index(j)) = q_arm(in_arm - arm_joints.begin());
+    } else if (const auto fixed = joint_values.find(joint); fixed != joint_values.end()) {
+      q(Eigen::Index(j)) = fixed->second;
+    }
+  }
+  link.X_ParentLink = chain.forward(q);
+  if (link.moving) {
+    // The deepest arm-chain link on this link's path from the base.
+    const std::vector<std::string> path = chain.link_names();
+    const std::vector<std::string> arm_links = arm.link_names();
+    for (std::size_t k = 0; k < arm_links.size(); ++k)
+      if (std::find(path.begin(), path.end(), arm_links[k]) != path.end()) link.arm_link = k;
+    link.X_ParentLink = arm_poses[link.arm_link].inverse() * link.X_ParentLink;
+  }
+  for (const CollisionPrimitive& p : robot.collision_shapes(name))
+    link.shapes.push_back(make_shape(p));
+  return link;
+}
+
+}  // namespace
 
 ArmCollisionWorld::ArmCollisionWorld(const RobotModel& robot, const KinematicChain& arm,
                                      const std::map<std::string, double>& joint_values)
@@ -173,51 +204,23 @@ ArmCollisionWorld::ArmCollisionWorld(const RobotModel& robot, const KinematicCha
   Eigen::VectorXd zero = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(arm.dof()));
   for (std::size_t j = 0; j < arm.dof(); ++j)
     zero(Eigen::Index(j)) = std::clamp(0.0, arm.limits()[j].lower, arm.limits()[j].upper);
-  const std::vector<std::string> arm_links = arm.link_names();
   const std::vector<Eigen::Isometry3d> arm_at_zero = arm.link_poses(zero);
   for (const std::string& name : robot.link_names()) {
-    const std::vector<CollisionPrimitive> primitives = robot.collision_shapes(name);
-    if (primitives.empty()) continue;
-    Impl::Link link;
-    link.name = name;
-    link.chain = robot.chain(arm.base_link(), name);
-    link.fixed_q = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(link.chain.dof()));
-    for (std::size_t j = 0; j < link.chain.dof(); ++j) {
-      const std::string& joint = link.chain.joint_names()[j];
-      const auto in_arm = std::find(arm.joint_names().begin(), arm.joint_names().end(), joint);
-      const bool moves = in_arm != arm.joint_names().end();
-      link.arm_index.push_back(moves ? int(in_arm - arm.joint_names().begin()) : -1);
-      link.moving = link.moving || moves;
-      const auto fixed = joint_values.find(joint);
-      if (fixed != joint_values.end()) link.fixed_q(Eigen::Index(j)) = fixed->second;
-    }
-    for (const CollisionPrimitive& p : primitives) link.shapes.push_back(make_shape(p));
-    if (link.moving) {
-      // The deepest arm-chain link on this link's path from the base.
-      const std::vector<std::string> path = link.chain.link_names();
-      for (std::size_t k = 0; k < arm_links.size(); ++k)
-        if (std::find(path.begin(), path.end(), arm_links[k]) != path.end()) link.arm_link = k;
-      link.X_ArmLinkLink = arm_at_zero[link.arm_link].inverse() * Impl::chain_pose(link, zero);
-    } else {
-      link.X_BaseLink = link.chain.forward(link.fixed_q);
-    }
-    impl_->links.push_back(std::move(link));
+    if (robot.collision_shapes(name).empty()) continue;
+    impl_->links.push_back(make_link(robot, arm, name, joint_values, zero, arm_at_zero));
+    impl_->links.back().first_shape = impl_->shape_count;
+    impl_->shape_count += impl_->links.back().shapes.size();
   }
   // Self-collision pairs: an arm link with any other link, unless within
   // kMinJointsApart moving joints of it (collision_pairs.hpp) or in contact at the arm's zero
   // configuration (clamped into the limits).
   const auto& links = impl_->links;
+  const std::vector<Eigen::Isometry3d> at_zero = impl_->shape_poses(arm_at_zero);
   for (std::size_t a = 0; a < links.size(); ++a) {
     for (std::size_t b = a + 1; b < links.size(); ++b) {
       if (!links[a].moving && !links[b].moving) continue;
       if (moving_joints_between(robot, links[a].name, links[b].name) < kMinJointsApart) continue;
-      if (Impl::links_collide(
-              links[a], Impl::shape_poses(links[a], Impl::pose(links[a], arm_at_zero)), links[b],
-              Impl::shape_poses(links[b], Impl::pose(links[b], arm_at_zero)))) {
-        continue;
-      }
-      impl_->pairs.emplace_back(a, b);
-      impl_->pair_names.emplace_back(links[a].name, links[b].name);
+      if (!impl_->links_collide(a, b, at_zero)) impl_->pairs.emplace_back(a, b);
     }
   }
 }
@@ -266,13 +269,9 @@ ContactReport ArmCollisionWorld::check(const Eigen::VectorXd& q) const {
                 std::to_string(impl_->arm.dof()) + " joints of the arm (all finite)");
   }
   const auto& links = impl_->links;
-  const std::vector<Eigen::Isometry3d> arm = impl_->arm.link_poses(q);
-  std::vector<std::vector<Eigen::Isometry3d>> poses(links.size());  // of each link's shapes
-  for (std::size_t i = 0; i < links.size(); ++i)
-    poses[i] = Impl::shape_poses(links[i], Impl::pose(links[i], arm));
-  ContactReport report;
+  const std::vector<Eigen::Isometry3d> poses = impl_->shape_poses(impl_->arm.link_poses(q));
   for (const auto& [a, b] : impl_->pairs) {
-    if (Impl::links_collide(links[a], poses[a], links[b], poses[b])) {
+    if (impl_->links_collide(a, b, poses)) {
       const bool a_moves = links[a].moving;
       return {ContactReport::Kind::kSelf, a_moves ? links[a].name : links[b].name,
               a_moves ? links[b].name : links[a].name};
@@ -281,23 +280,26 @@ ContactReport ArmCollisionWorld::check(const Eigen::VectorXd& q) const {
   const Eigen::Isometry3d identity = Eigen::Isometry3d::Identity();
   for (std::size_t i = 0; i < links.size(); ++i) {
     if (!links[i].moving) continue;
+    const bool check_points = impl_->points.geometry && !impl_->points_unchecked[i];
     for (std::size_t k = 0; k < links[i].shapes.size(); ++k) {
       const Shape& s = links[i].shapes[k];
+      const Eigen::Isometry3d& X_BaseShape = poses[links[i].first_shape + k];
       for (const Impl::Box& box : impl_->boxes)
-        if (collide(s, poses[i][k], box.shape, box.shape.X_LinkShape))
+        if (collide(s, X_BaseShape, box.shape, box.shape.X_LinkShape))
           return {ContactReport::Kind::kEnvironment, links[i].name, box.name};
-      if (impl_->points.geometry && !impl_->points_unchecked[i] &&
-          collide(s, poses[i][k], impl_->points, identity))
+      if (check_points && collide(s, X_BaseShape, impl_->points, identity))
         return {ContactReport::Kind::kEnvironment, links[i].name, "points"};
     }
   }
-  return report;
+  return {};
 }
 
-const std::vector<std::pair<std::string, std::string>>& ArmCollisionWorld::self_pairs() const {
-  return impl_->pair_names;
+std::vector<std::pair<std::string, std::string>> ArmCollisionWorld::self_pairs() const {
+  std::vector<std::pair<std::string, std::string>> names;
+  for (const auto& [a, b] : impl_->pairs)
+    names.emplace_back(impl_->links[a].name, impl_->links[b].name);
+  return names;
 }
-
 std::vector<std::string> ArmCollisionWorld::arm_links() const {
   std::vector<std::string> names;
   for (const auto& link : impl_->links)

@@ -64,7 +64,7 @@ class ArmCollisionWorld {
   /// Link pairs checked for self-collision: an arm link with a robot link three or more
   /// moving joints away (collision_pairs.hpp) and not in contact at the arm's zero
   /// configuration.
-  const std::vector<std::pair<std::string, std::string>>& self_pairs() const;
+  std::vector<std::pair<std::string, std::string>> self_pairs() const;
   /// The links that move with the arm.
   std::vector<std::string> arm_links() const;
 

@@ -22,13 +22,6 @@ KinematicChain right_arm() {
   return robot.chain("base", "right_gripper");
 }
 
-Eigen::VectorXd random_q(const KinematicChain& chain, RandomStream& random) {
-  Eigen::VectorXd q(7);
-  for (int i = 0; i < 7; ++i)
-    q(i) = random.uniform(chain.limits()[i].lower, chain.limits()[i].upper);
-  return q;
-}
-
 TEST(InverseKinematics, PoseErrorIsZeroAtTheTargetAndMeasuresOffsets) {
   Eigen::Isometry3d a = Eigen::Isometry3d::Identity();
   a.translate(Eigen::Vector3d(0.1, 0.2, 0.3));
@@ -47,7 +40,7 @@ TEST(InverseKinematics, RoundTripsOnRandomReachablePoses) {
   int solved = 0;
   const int poses = 200;
   for (int i = 0; i < poses; ++i) {
-    const Eigen::Isometry3d target = arm.forward(random_q(arm, random));
+    const Eigen::Isometry3d target = arm.forward(arm.random_configuration(random));
     IkOptions options;
     options.seed = static_cast<std::uint64_t>(i);
     const IkResult r = solve_ik(arm, target, arm.mid_range(), options);
@@ -72,7 +65,7 @@ IkOptions several(int solutions, std::uint64_t seed = 0) {
 TEST(InverseKinematics, FindsSeveralDistinctSolutionsOnRequest) {
   const KinematicChain arm = right_arm();
   RandomStream random(11);
-  const Eigen::Isometry3d target = arm.forward(random_q(arm, random));
+  const Eigen::Isometry3d target = arm.forward(arm.random_configuration(random));
   const IkOptions options = several(4);
   const IkResult r = solve_ik(arm, target, arm.mid_range(), options);
   ASSERT_EQ(r.status, IkStatus::kSolved);
@@ -87,7 +80,7 @@ TEST(InverseKinematics, FindsSeveralDistinctSolutionsOnRequest) {
 TEST(InverseKinematics, SameSeedSameSolution) {
   const KinematicChain arm = right_arm();
   RandomStream random(3);
-  const Eigen::Isometry3d target = arm.forward(random_q(arm, random));
+  const Eigen::Isometry3d target = arm.forward(arm.random_configuration(random));
   const IkOptions options = several(2, 42);
   const IkResult a = solve_ik(arm, target, arm.mid_range(), options);
   const IkResult b = solve_ik(arm, target, arm.mid_range(), options);

@@ -105,12 +105,7 @@ class Kinematics {
     q_.data = q;
     KDL::Frame f;
     fk_.JntToCart(q_, f);
-    Eigen::Isometry3d x = Eigen::Isometry3d::Identity();
-    for (int r = 0; r < 3; ++r) {
-      x.translation()(r) = f.p(r);
-      for (int c = 0; c < 3; ++c) x.linear()(r, c) = f.M(r, c);
-    }
-    return pose_error(target, x);
+    return pose_error(target, to_eigen(f));
   }
 
   const Eigen::Matrix<double, 6, Eigen::Dynamic>& jacobian(const Eigen::VectorXd& q) {
@@ -130,17 +125,6 @@ Eigen::VectorXd clamp(const KinematicChain& chain, Eigen::VectorXd q) {
   for (std::size_t i = 0; i < chain.dof(); ++i) {
     const auto k = static_cast<Eigen::Index>(i);
     q(k) = std::clamp(q(k), chain.limits()[i].lower, chain.limits()[i].upper);
-  }
-  return q;
-}
-
-Eigen::VectorXd random_within_limits(const KinematicChain& chain, RandomStream& random) {
-  Eigen::VectorXd q(static_cast<Eigen::Index>(chain.dof()));
-  for (std::size_t i = 0; i < chain.dof(); ++i) {
-    const JointLimits& l = chain.limits()[i];
-    const double lo = std::isfinite(l.lower) ? l.lower : -M_PI;
-    const double hi = std::isfinite(l.upper) ? l.upper : M_PI;
-    q(static_cast<Eigen::Index>(i)) = random.uniform(lo, hi);
   }
   return q;
 }
@@ -199,7 +183,7 @@ IkResult solve_damped(const KinematicChain& chain, const Eigen::Isometry3d& targ
       result.solutions.push_back(q);
     }
     if (budget.left <= 0 || budget.timed_out) break;
-    q = random_within_limits(chain, random);
+    q = chain.random_configuration(random);
   }
   return result;
 }
@@ -218,11 +202,7 @@ IkResult solve_kdl(const KinematicChain& chain, const Eigen::Isometry3d& target,
   KDL::ChainFkSolverPos_recursive fk(kdl_chain);
   KDL::ChainIkSolverVel_pinv velocity(kdl_chain);
   KDL::ChainIkSolverPos_NR_JL solver(kdl_chain, lower, upper, fk, velocity, 1, options.tolerance);
-  KDL::Frame frame;
-  frame.p =
-      KDL::Vector(target.translation().x(), target.translation().y(), target.translation().z());
-  const Eigen::Quaterniond r(target.linear());
-  frame.M = KDL::Rotation::Quaternion(r.x(), r.y(), r.z(), r.w());
+  const KDL::Frame frame = to_kdl(target);
   IkResult result;
   result.descents = 1;
   out.data = q_seed;

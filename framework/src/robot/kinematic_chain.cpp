@@ -1,15 +1,16 @@
 #include "antipode/robot/kinematic_chain.hpp"
 
+#include <cmath>
 #include <string>
 #include <utility>
 
-#include <kdl/chainfksolverpos_recursive.hpp>
 #include <kdl/chainjnttojacsolver.hpp>
 #include <kdl/jacobian.hpp>
 #include <kdl/jntarray.hpp>
 #include <kdl/segment.hpp>
 
 #include "antipode/core/error.hpp"
+#include "antipode/core/random.hpp"
 #include "kinematic_chain_impl.hpp"
 
 namespace antipode {
@@ -22,21 +23,28 @@ KDL::JntArray to_kdl(const Eigen::VectorXd& q) {
   return a;
 }
 
-Eigen::Isometry3d to_eigen(const KDL::Frame& f) {
-  Eigen::Isometry3d x = Eigen::Isometry3d::Identity();
-  for (int r = 0; r < 3; ++r) {
-    x.translation()(r) = f.p(r);
-    for (int c = 0; c < 3; ++c) x.linear()(r, c) = f.M(r, c);
-  }
-  return x;
-}
-
 const KinematicChain::Impl& empty_impl() {
   static const KinematicChain::Impl impl;
   return impl;
 }
 
 }  // namespace
+
+Eigen::Isometry3d to_eigen(const KDL::Frame& frame) {
+  Eigen::Isometry3d x = Eigen::Isometry3d::Identity();
+  for (int r = 0; r < 3; ++r) {
+    x.translation()(r) = frame.p(r);
+    for (int c = 0; c < 3; ++c) x.linear()(r, c) = frame.M(r, c);
+  }
+  return x;
+}
+
+KDL::Frame to_kdl(const Eigen::Isometry3d& pose) {
+  const Eigen::Quaterniond r(pose.linear());
+  const Eigen::Vector3d& t = pose.translation();
+  return KDL::Frame(KDL::Rotation::Quaternion(r.x(), r.y(), r.z(), r.w()),
+                    KDL::Vector(t.x(), t.y(), t.z()));
+}
 
 void check_joint_values(const KinematicChain& chain, const Eigen::VectorXd& q, const char* what) {
   if (static_cast<std::size_t>(q.size()) != chain.dof()) {
@@ -65,13 +73,8 @@ const std::vector<JointLimits>& KinematicChain::limits() const {
 std::size_t KinematicChain::dof() const { return limits().size(); }
 
 Eigen::Isometry3d KinematicChain::forward(const Eigen::VectorXd& q) const {
-  check_joint_values(*this, q, "forward kinematics");
-  if (!impl_) return Eigen::Isometry3d::Identity();
-  KDL::ChainFkSolverPos_recursive solver(impl_->chain);
-  KDL::Frame frame;
-  if (solver.JntToCart(to_kdl(q), frame) < 0)
-    throw InternalError("forward kinematics failed for '" + tip_link() + "'");
-  return to_eigen(frame);
+  const std::vector<Eigen::Isometry3d> poses = link_poses(q);
+  return poses.empty() ? Eigen::Isometry3d::Identity() : poses.back();
 }
 
 std::vector<std::string> KinematicChain::link_names() const {
@@ -122,6 +125,17 @@ Eigen::VectorXd KinematicChain::mid_range() const {
   Eigen::VectorXd q(static_cast<Eigen::Index>(dof()));
   for (std::size_t i = 0; i < dof(); ++i)
     q(static_cast<Eigen::Index>(i)) = 0.5 * (limits()[i].lower + limits()[i].upper);
+  return q;
+}
+
+Eigen::VectorXd KinematicChain::random_configuration(RandomStream& random) const {
+  Eigen::VectorXd q(static_cast<Eigen::Index>(dof()));
+  for (std::size_t i = 0; i < dof(); ++i) {
+    const JointLimits& l = limits()[i];
+    const double lo = std::isfinite(l.lower) ? l.lower : -M_PI;
+    const double hi = std::isfinite(l.upper) ? l.upper : M_PI;
+    q(static_cast<Eigen::Index>(i)) = random.uniform(lo, hi);
+  }
   return q;
 }
 

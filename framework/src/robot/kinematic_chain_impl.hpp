@@ -6,6 +6,7 @@
 #include <vector>
 
 #include <kdl/chain.hpp>
+#include <kdl/frames.hpp>
 
 #include "antipode/robot/kinematic_chain.hpp"
 
@@ -23,6 +24,10 @@ struct KinematicChain::Impl {
 struct ChainAccess {
   static const KinematicChain::Impl* of(const KinematicChain& chain) { return chain.impl_.get(); }
 };
+
+/// The same rigid transform in Eigen's and in KDL's types.
+Eigen::Isometry3d to_eigen(const KDL::Frame& frame);
+KDL::Frame to_kdl(const Eigen::Isometry3d& pose);
 
 /// Throws antipode::Error unless `q` has `chain.dof()` finite values; `what` names the
 /// caller in the message.

@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cmath>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -76,19 +77,24 @@ void check_problem(const ArmPlanningProblem& p) {
   }
 }
 
-// The problem's invalid end, if any.
-bool invalid_end(const ArmPlanningProblem& p, ArmPlan& plan) {
-  if (!p.arm->within_limits(p.start)) return plan.status = PlanStatus::kStartOutsideLimits, true;
-  if (!p.arm->within_limits(p.goal)) return plan.status = PlanStatus::kGoalOutsideLimits, true;
-  if (const auto c = p.world->check(p.start); !c.free()) {
+// A plan that ends before the search when the start or the goal is invalid: outside the
+// joint limits, or in collision (with the contact as detail); nullopt when both are valid.
+std::optional<ArmPlan> invalid_end(const ArmPlanningProblem& p) {
+  ArmPlan plan;
+  if (!p.arm->within_limits(p.start)) {
+    plan.status = PlanStatus::kStartOutsideLimits;
+  } else if (!p.arm->within_limits(p.goal)) {
+    plan.status = PlanStatus::kGoalOutsideLimits;
+  } else if (const auto c = p.world->check(p.start); !c.free()) {
+    plan.status = PlanStatus::kStartInCollision;
     plan.detail = c.str();
-    return plan.status = PlanStatus::kStartInCollision, true;
+  } else if (const auto g = p.world->check(p.goal); !g.free()) {
+    plan.status = PlanStatus::kGoalInCollision;
+    plan.detail = g.str();
+  } else {
+    return std::nullopt;
   }
-  if (const auto c = p.world->check(p.goal); !c.free()) {
-    plan.detail = c.str();
-    return plan.status = PlanStatus::kGoalInCollision, true;
-  }
-  return false;
+  return plan;
 }
 
 Eigen::VectorXd to_eigen(const ob::State* state, std::size_t dof) {
@@ -130,8 +136,8 @@ bool segment_is_free(const collision::ArmCollisionWorld& world, const Eigen::Vec
 ArmPlan plan_arm_motion(const ArmPlanningProblem& p) {
   check_problem(p);
   ompl::msg::setLogLevel(ompl::msg::LOG_NONE);
+  if (std::optional<ArmPlan> invalid = invalid_end(p)) return *invalid;
   ArmPlan plan;
-  if (invalid_end(p, plan)) return plan;
   const std::size_t dof = p.arm->dof();
   auto space = std::make_shared<ob::RealVectorStateSpace>(static_cast<unsigned>(dof));
   ob::RealVectorBounds bounds(static_cast<unsigned>(dof));

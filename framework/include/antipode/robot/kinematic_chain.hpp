@@ -20,6 +20,8 @@
 
 namespace antipode {
 
+class RandomStream;
+
 /// The range of one moving joint, from the URDF's <limit>.
 struct JointLimits {
   double lower = 0.0;     ///< rad (m for prismatic joints)
@@ -57,6 +59,9 @@ class KinematicChain {
   bool within_limits(const Eigen::VectorXd& q, double tolerance = 0.0) const;
   /// The middle of every joint's range.
   Eigen::VectorXd mid_range() const;
+  /// Joint values drawn uniformly within the limits from `random` (an unbounded joint in
+  /// [-pi, pi)).
+  Eigen::VectorXd random_configuration(RandomStream& random) const;
 
   struct Impl;  ///< the kinematic description (orocos-kdl), shared between copies
 
