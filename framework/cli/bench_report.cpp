@@ -88,6 +88,15 @@ Json variant_summary(const std::vector<const Json*>& attempts) {
     reasons[reason] = reasons.value(reason, 0) + 1;
   }
   s["no_grasp"] = no_grasp;
+  // The arm's failures (trees with an arm): no IK, no motion plan, an arm link in contact.
+  const auto count = [&](const std::string& key, const std::string& value) {
+    int n = 0;
+    for (const Json* a : attempts) n += (*a)[key] == value ? 1 : 0;
+    return n;
+  };
+  s["arm"] = {{"no_ik", count("outcome", "no IK")},
+              {"no_motion_plan", count("outcome", "no motion plan")},
+              {"arm_collision", count("reason", "arm collision")}};
   s["found_grasp"] =
       tally(attempts, [](const Json& a) { return a["outcome"] != "no grasp found"; });
   s["outcomes"] = outcomes;
@@ -125,6 +134,13 @@ void row(std::ostream& out, const std::string& label, const std::vector<std::str
 }
 
 }  // namespace
+
+double percentile(std::vector<double> v, double p) {
+  if (v.empty()) return 0.0;
+  const auto k = static_cast<std::size_t>(std::lround(p * double(v.size() - 1)));
+  std::nth_element(v.begin(), v.begin() + static_cast<std::ptrdiff_t>(k), v.end());
+  return v[k];
+}
 
 std::pair<double, double> wilson_interval(int successes, int trials) {
   if (trials <= 0) return {0.0, 1.0};

@@ -10,6 +10,9 @@
 
 namespace antipode::cli {
 
+/// The value at fraction `p` (0..1) of `values` sorted, the nearest rank; 0 for none.
+double percentile(std::vector<double> values, double p);
+
 /// The Wilson score interval (95%) of `successes` in `trials`: {lower, upper}, {0, 1} for
 /// no trials.
 std::pair<double, double> wilson_interval(int successes, int trials);

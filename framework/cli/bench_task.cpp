@@ -122,6 +122,8 @@ std::string failure_class(const GraspAttempt& r) {
       return "success";
     case GraspOutcome::kCollisionOnApproach:
       return "collision at the stand-off pose";
+    case GraspOutcome::kArmCollision:
+      return "arm collision";
     case GraspOutcome::kNotExecuted:
       return "not executed";
     default:
@@ -182,7 +184,8 @@ nlohmann::ordered_json run_task(const Session& session, const TaskSettings& sett
       out["hand"] = hand_json(board.get_ref<Hand>("grasp"));
       out["record"] = record_json(record);
     } else {
-      out["reason"] = "no grasp found";
+      // "no grasp found", or the tree's reason such as "no motion plan".
+      out["reason"] = out["outcome"];
       out["detail"] = timer.first_failure();
     }
     out["funnel"] = funnel(board);

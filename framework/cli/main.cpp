@@ -19,7 +19,7 @@ constexpr const char* kExamples = R"(Examples:
   antipode detect ../shared/data/clouds/table_mug.pcd --out grasps.json --image grasps.png
   antipode scene scenes/pile_procedural.yaml --image scene.png
   antipode bench isolation --objects ../shared/data/objects/ycb --jobs 2 --report iso.json
-  antipode bench reach --ik-poses 10000 --report reach.json
+  antipode bench reach --ik-poses 10000 --scenes 100 --report reach.json
   antipode train --out my.model --dataset examples.data
   antipode eval-classifier --model my.model --report eval.json
   antipode plugins
@@ -113,6 +113,14 @@ void add_bench_reach(CLI::App& bench, antipode::cli::ReachBenchOptions& o) {
   reach->add_option("--solvers", o.solvers, "Any of dls,kdl")->delimiter(',');
   reach->add_option("--timeout-ms", o.timeout_ms, "Time limit per pose")->capture_default_str();
   reach->add_option("--tolerance", o.tolerance, "m and rad per component")->capture_default_str();
+  reach->add_option("--scenes", o.scenes, "Clutter scenes to plan in (0: none)")
+      ->capture_default_str();
+  reach->add_option("--scene", o.scene_file, "Scene file of the clutter scenes")
+      ->capture_default_str();
+  reach->add_option("--views", o.views, "The cell's views to capture")->delimiter(',');
+  reach->add_option("--tree", o.scene_tree, "Tree whose components detect and plan")
+      ->capture_default_str();
+  reach->add_option("--set", o.set, "component.key=value for the scene tree (repeatable)");
   reach->add_option("--report", o.report_path, "Write the report as JSON");
 }
 

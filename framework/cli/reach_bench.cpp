@@ -30,13 +30,6 @@ struct SolverFigures {
   double p90_ms = 0.0;
 };
 
-double percentile(std::vector<double> v, double p) {
-  if (v.empty()) return 0.0;
-  const auto k = static_cast<std::size_t>(std::lround(p * double(v.size() - 1)));
-  std::nth_element(v.begin(), v.begin() + static_cast<std::ptrdiff_t>(k), v.end());
-  return v[k];
-}
-
 std::vector<Eigen::Isometry3d> random_targets(const KinematicChain& chain, int count,
                                               std::uint64_t seed) {
   RandomStream random(seed);
@@ -86,6 +79,7 @@ void check(const ReachBenchOptions& o) {
   if (!(o.tolerance > 0.0 && o.tolerance < 1.0))
     throw Error("bench reach: --tolerance must be in (0, 1)");
   if (o.solvers.empty()) throw Error("bench reach: --solvers names no solver (use dls, kdl)");
+  if (o.scenes < 0) throw Error("bench reach: --scenes must be at least 0");
   for (const std::string& s : o.solvers) ik_solver(s);  // throws for an unknown name
 }
 
@@ -117,6 +111,7 @@ int bench_reach_command(const ReachBenchOptions& o) {
     // "ik" is the project's solver; the others are reported beside it by name.
     report[solver == IkSolver::kDampedLeastSquares ? "ik" : std::string("ik_") + name] = to_json(f);
   }
+  if (o.scenes > 0) report["planning"] = bench_planning_scenes(o);
   write_report(std::cout, o.report_path, report);
   return kExitSuccess;
 }

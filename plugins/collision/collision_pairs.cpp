@@ -2,6 +2,8 @@
 
 #include <vector>
 
+#include "antipode/core/error.hpp"
+
 namespace antipode::collision {
 
 namespace {
@@ -28,6 +30,23 @@ int moving_joints_between(const RobotModel& robot, const std::string& a, const s
     for (const auto& [link_b, joints_b] : up_b)
       if (link_a == link_b) return joints_a + joints_b;
   return -1;  // not reached: every link hangs from the root
+}
+
+std::vector<std::string> shaped_links_below(const RobotModel& robot, const std::string& link) {
+  if (!robot.has_link(link))
+    throw Error(robot.source() + ": no link '" + link + "'" +
+                did_you_mean(link, robot.link_names()));
+  std::vector<std::string> names;
+  for (const std::string& name : robot.link_names()) {
+    if (robot.collision_shapes(name).empty()) continue;
+    for (std::string up = name; !up.empty(); up = robot.parent_link(up)) {
+      if (up == link) {
+        names.push_back(name);
+        break;
+      }
+    }
+  }
+  return names;
 }
 
 }  // namespace antipode::collision

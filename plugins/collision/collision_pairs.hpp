@@ -6,6 +6,7 @@
 // reason.
 
 #include <string>
+#include <vector>
 
 #include "antipode/robot/robot_model.hpp"
 
@@ -14,5 +15,10 @@ namespace antipode::collision {
 /// The number of moving joints on the kinematic tree's path from `a` to `b` (0 when they
 /// are rigidly attached through fixed joints).
 int moving_joints_between(const RobotModel& robot, const std::string& a, const std::string& b);
+
+/// `link` and every link below it that has collision shapes (e.g. a gripper below its
+/// flange: the links a caller may leave unchecked against observed points). Throws
+/// antipode::Error for an unknown link, suggesting the nearest name.
+std::vector<std::string> shaped_links_below(const RobotModel& robot, const std::string& link);
 
 }  // namespace antipode::collision

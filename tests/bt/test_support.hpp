@@ -124,7 +124,7 @@ class FailWithReason : public SyncActionNode {
 class FakeSampler : public Sampler {
  public:
   explicit FakeSampler(int samples) : samples(samples) {}
-  HandSet sample(const Cloud&, const RandomStream&) const override { return {}; }
+  HandSet sample(const Cloud&, const RandomStream&, const StopToken&) const override { return {}; }
   int samples;
 };
 

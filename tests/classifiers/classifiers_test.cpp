@@ -71,7 +71,7 @@ TEST_F(ClassifiersTest, PassthroughLabelsEveryHandPositiveAndKeepsScores) {
   const HandSet sampled = sampled_can(100);
   ASSERT_FALSE(sampled.hands.empty());
   HandSet set = sampled;
-  create("passthrough_classifier", "")->classify(set);
+  create("passthrough_classifier", "")->classify(set, {});
   ASSERT_EQ(set.hands.size(), sampled.hands.size());
   for (std::size_t i = 0; i < set.hands.size(); ++i) {
     EXPECT_EQ(set.hands[i].label, HandLabel::kPositive);
@@ -88,7 +88,7 @@ TEST_F(ClassifiersTest, AntipodalLabelsLikeTheFrameworkCheckForAnyThreadCount) {
   std::vector<HandSet> results;
   for (const char* threads : {"1", "2"}) {
     HandSet set = sampled;
-    create("antipodal_classifier", std::string("threads: ") + threads)->classify(set);
+    create("antipodal_classifier", std::string("threads: ") + threads)->classify(set, {});
     results.push_back(std::move(set));
   }
   int by_label[4] = {0, 0, 0, 0};
@@ -113,7 +113,7 @@ TEST_F(ClassifiersTest, AntipodalParametersChangeTheLabels) {
   const HandSet sampled = sampled_can(200);
   auto positives = [&](const std::string& yaml) {
     HandSet set = sampled;
-    create("antipodal_classifier", yaml)->classify(set);
+    create("antipodal_classifier", yaml)->classify(set, {});
     return std::count_if(set.hands.begin(), set.hands.end(),
                          [](const Hand& h) { return h.label == HandLabel::kPositive; });
   };
@@ -128,9 +128,9 @@ TEST_F(ClassifiersTest, AntipodalParametersChangeTheLabels) {
 TEST_F(ClassifiersTest, AntipodalRejectsASetWithoutCloud) {
   HandSet set;
   set.hands.emplace_back();
-  EXPECT_THROW(create("antipodal_classifier", "")->classify(set), Error);
+  EXPECT_THROW(create("antipodal_classifier", "")->classify(set, {}), Error);
   set.hands.clear();
-  EXPECT_NO_THROW(create("antipodal_classifier", "")->classify(set));
+  EXPECT_NO_THROW(create("antipodal_classifier", "")->classify(set, {}));
 }
 
 TEST_F(ClassifiersTest, BadParametersAreLocatedErrors) {
@@ -171,7 +171,7 @@ TEST_F(ClassifiersTest, AntipodalOnTableMugIsFast) {
     HandSet set = sample_hands(raw, options, RandomStream(1));
     ASSERT_GT(set.hands.size(), 1000u);
     const auto start = std::chrono::steady_clock::now();
-    classifier->classify(set);
+    classifier->classify(set, {});
     const double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     int positive = 0, indeterminate = 0;
@@ -179,9 +179,10 @@ TEST_F(ClassifiersTest, AntipodalOnTableMugIsFast) {
       positive += hand.label == HandLabel::kPositive;
       indeterminate += hand.label == HandLabel::kIndeterminate;
     }
-    std::printf("antipodal_classifier: %zu hands of %zu points in %.1f ms: %d positive, %d "
-                "indeterminate\n",
-                set.hands.size(), set.cloud->size(), 1e3 * seconds, positive, indeterminate);
+    std::printf(
+        "antipodal_classifier: %zu hands of %zu points in %.1f ms: %d positive, %d "
+        "indeterminate\n",
+        set.hands.size(), set.cloud->size(), 1e3 * seconds, positive, indeterminate);
     EXPECT_LT(seconds, 2.0);
   }
 }
@@ -196,7 +197,7 @@ TEST_F(ClassifiersTest, AntipodalFindsGraspsOnACanSeenFromAllAround) {
   options.search.threads = 2;
   HandSet set = sample_hands(load_cloud(path), options, RandomStream(1));
   ASSERT_TRUE(set.cloud->view_origins_m.empty());
-  create("antipodal_classifier", "threads: 2")->classify(set);
+  create("antipodal_classifier", "threads: 2")->classify(set, {});
   int count[4] = {0, 0, 0, 0};
   for (const Hand& hand : set.hands) ++count[static_cast<int>(hand.label)];
   std::printf("krylon: %zu hands: %d positive, %d indeterminate, %d negative\n", set.hands.size(),

@@ -81,7 +81,7 @@ TEST_F(HogSvmTest, ScoresAreTheModelsDecisionValuesAndLabelsFollowTheThreshold) 
   ASSERT_EQ(host_.kind_of("hog_svm_classifier"), ComponentKind::kClassifier);
   const ToyHands toy = toy_hands(60, 2);
   HandSet set = toy.set;
-  create(model_yaml())->classify(set);
+  create(model_yaml())->classify(set, {});
   const auto expected =
       toy_model().decision_values(hand_descriptors(toy.set, HandGeometry{}, {}, 1), 1);
   ASSERT_EQ(set.hands.size(), toy.set.hands.size());
@@ -96,20 +96,20 @@ TEST_F(HogSvmTest, ScoresAreTheModelsDecisionValuesAndLabelsFollowTheThreshold) 
   }
   EXPECT_GE(right, 58);  // held-out hands at new poses
   HandSet strict = toy.set;
-  create(model_yaml() + "\nthreshold: 1e9\nthreads: 1")->classify(strict);
+  create(model_yaml() + "\nthreshold: 1e9\nthreads: 1")->classify(strict, {});
   for (std::size_t i = 0; i < strict.hands.size(); ++i) {
     EXPECT_EQ(strict.hands[i].label, HandLabel::kNegative);
     EXPECT_EQ(strict.hands[i].score, set.hands[i].score);  // any thread count
   }
   HandSet empty;
-  EXPECT_NO_THROW(create(model_yaml())->classify(empty));
+  EXPECT_NO_THROW(create(model_yaml())->classify(empty, {}));
 }
 
 TEST_F(HogSvmTest, RelativeModelPathsAreFoundBesideTheTreeFile) {
   const ToyHands toy = toy_hands(4, 3);
   for (const std::string tree : {"/trees/x.yaml", "/models/x.yaml", "/x.yaml"}) {
     HandSet set = toy.set;
-    create("model: models/toy.model", model_dir() + tree)->classify(set);
+    create("model: models/toy.model", model_dir() + tree)->classify(set, {});
     EXPECT_NE(set.hands[0].label, HandLabel::kUnknown) << tree;
   }
 }
@@ -146,7 +146,7 @@ TEST_F(HogSvmTest, BadModelsAndParametersAreErrorsAtTheirKeys) {
 TEST_F(HogSvmTest, AHandSetOfAnotherGeometryIsRefused) {
   HandSet set = toy_hands(3, 4).set;
   set.geometry.depth_m = 0.05;
-  const std::string error = error_of([&] { create(model_yaml())->classify(set); });
+  const std::string error = error_of([&] { create(model_yaml())->classify(set, {}); });
   EXPECT_NE(error.find("toy.model was trained for a 0.06 m deep"), std::string::npos) << error;
   EXPECT_NE(error.find("this hand set has a 0.05 m deep"), std::string::npos) << error;
 }

@@ -98,6 +98,20 @@ TEST(ArmPlanner, AnInvalidStartOrGoalIsAStatusWithTheContact) {
   EXPECT_EQ(plan_arm_motion(p).status, PlanStatus::kGoalOutsideLimits);
 }
 
+TEST(ArmPlanner, AStopRequestEndsTheSearch) {
+  Baxter b;
+  block_the_straight_motion(b);
+  ArmPlanningProblem p = problem(b);
+  p.time_limit_s = 60.0;
+  StopSource source;
+  p.stop = source.token();
+  source.request_stop();  // as a Timeout node's deadline would, during the search
+  const ArmPlan stopped = plan_arm_motion(p);
+  EXPECT_EQ(stopped.status, PlanStatus::kCancelled);
+  EXPECT_TRUE(stopped.path.empty());
+  EXPECT_LT(stopped.planning_s, 60.0);
+}
+
 TEST(ArmPlanner, BadProblemsAreErrors) {
   Baxter b;
   ArmPlanningProblem p = problem(b);

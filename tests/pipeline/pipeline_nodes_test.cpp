@@ -54,10 +54,10 @@ trees:
       - SampleHands: { sampler: sampler, cloud: "{cloud}", hands: "{hands}" }
       - ClassifyHands: { classifier: classifier, hands: "{hands}", classified: "{scored}" }
       - SelectGrasps: { selector: selector, hands: "{scored}", grasps: "{grasps}", best: "{best}" }
-      - PlanReach: { planner: planner, grasp: "{best}", start_rad: [0, 1], trajectory: "{path}" }
+      - PlanReach: { planner: planner, cell: cell, grasps: "{grasps}", trajectory: "{path}", planned: "{planned}" }
       - ExecuteGrasp:
           cell: cell
-          grasps: "{grasps}"
+          grasps: "{planned}"
           trajectory: "{path}"
           outcome: "{outcome}"
           attempt: "{attempt}"
@@ -106,6 +106,42 @@ trees:
   ASSERT_EQ(lines.size(), 3u);
   EXPECT_EQ(lines[0], "scene 5: success - 1 of 1 succeeded (100%)");
   EXPECT_EQ(lines[2], "scene 7: success - 3 of 3 succeeded (100%)");
+}
+
+TEST_F(PipelineNodesTest, ATimeoutStopsAPlannerCall) {
+  // The endless planner searches for a minute unless its stop token asks it to stop: the
+  // Timeout's deadline reaches it through PlanReach, which fails as cancelled.
+  bt::Tree tree = load(R"(
+components:
+  cell: { plugin: line_cell, points: 5 }
+  sampler: { plugin: point_sampler }
+  selector: { plugin: best_first }
+  planner: { plugin: endless_planner }
+main: pick
+trees:
+  pick:
+    Sequence:
+      - CaptureCloud: { cell: cell, cloud: "{cloud}" }
+      - SampleHands: { sampler: sampler, cloud: "{cloud}", hands: "{hands}" }
+      - SelectGrasps: { selector: selector, hands: "{hands}", grasps: "{grasps}" }
+      - Timeout:
+          msec: 50
+          child:
+            PlanReach: { name: reach, planner: planner, cell: cell, grasps: "{grasps}" }
+)");
+  std::string reason;
+  struct Failures : bt::TreeObserver {
+    std::string* reason;
+    void on_status_change(const bt::Node& node, bt::Status, bt::Status now,
+                          std::chrono::steady_clock::time_point) override {
+      if (node.name() == "reach" && now == bt::Status::kFailure) *reason = node.failure_reason();
+    }
+  } failures;
+  failures.reason = &reason;
+  tree.add_observer(&failures);
+  EXPECT_EQ(tree.tick_while_running(), bt::Status::kFailure);
+  EXPECT_EQ(reason, "planning cancelled");
+  tree.remove_observer(&failures);
 }
 
 TEST_F(PipelineNodesTest, GraspsWrittenAndReadBackKeepTheirPoses) {

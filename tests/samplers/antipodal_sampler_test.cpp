@@ -44,7 +44,7 @@ TEST_F(AntipodalSamplerTest, LoadsAsASampler) {
 TEST_F(AntipodalSamplerTest, SamplesHandsOnAPreprocessedCloud) {
   const auto sampler = create("samples: 300\nvoxel_size_m: 0.004\nthreads: 2");
   const Cloud raw = cylinder();
-  const HandSet set = sampler->sample(raw, RandomStream(5));
+  const HandSet set = sampler->sample(raw, RandomStream(5), {});
   ASSERT_NE(set.cloud, nullptr);
   EXPECT_LT(set.cloud->size(), raw.size());
   ASSERT_GT(set.hands.size(), 20u);
@@ -63,7 +63,7 @@ TEST_F(AntipodalSamplerTest, SameResultAsTheFrameworkFunctionForAnyThreadCount) 
   const HandSet direct = sample_hands(raw, options, RandomStream(9));
   for (const char* threads : {"1", "2"}) {
     const HandSet via_plugin =
-        create(std::string("samples: 200\nthreads: ") + threads)->sample(raw, RandomStream(9));
+        create(std::string("samples: 200\nthreads: ") + threads)->sample(raw, RandomStream(9), {});
     ASSERT_EQ(via_plugin.hands.size(), direct.hands.size()) << threads << " threads";
     for (std::size_t i = 0; i < direct.hands.size(); ++i) {
       EXPECT_EQ(via_plugin.hands[i].X_FrameHand.matrix(), direct.hands[i].X_FrameHand.matrix());
@@ -98,7 +98,7 @@ support_distance_m: 0.008
 )";
   const auto sampler = create(yaml);
   ASSERT_NE(sampler, nullptr);
-  EXPECT_FALSE(sampler->sample(cylinder(), RandomStream(1)).hands.empty());
+  EXPECT_FALSE(sampler->sample(cylinder(), RandomStream(1), {}).hands.empty());
 }
 
 TEST_F(AntipodalSamplerTest, BadParametersAreLocatedErrors) {
@@ -141,8 +141,9 @@ TEST_F(AntipodalSamplerTest, SupportPlaneModes) {
     }
     return count;
   };
-  const HandSet automatic = create("samples: 600")->sample(cloud, RandomStream(1));
-  const HandSet none = create("samples: 600\nsupport_plane: none")->sample(cloud, RandomStream(1));
+  const HandSet automatic = create("samples: 600")->sample(cloud, RandomStream(1), {});
+  const HandSet none =
+      create("samples: 600\nsupport_plane: none")->sample(cloud, RandomStream(1), {});
   ASSERT_FALSE(automatic.hands.empty());
   EXPECT_EQ(on_the_table(automatic), 0u);
   EXPECT_GT(on_the_table(none), 0u);  // the table's cut border looks like a plate's edge
@@ -150,19 +151,19 @@ TEST_F(AntipodalSamplerTest, SupportPlaneModes) {
 
 TEST_F(AntipodalSamplerTest, UnusableCloudsAreErrors) {
   const auto sampler = create("workspace: {min: [5, 5, 5], max: [6, 6, 6]}");
-  EXPECT_THROW(sampler->sample(cylinder(), RandomStream(1)), Error);
-  EXPECT_THROW(create("")->sample(Cloud{}, RandomStream(1)), Error);
+  EXPECT_THROW(sampler->sample(cylinder(), RandomStream(1), {}), Error);
+  EXPECT_THROW(create("")->sample(Cloud{}, RandomStream(1), {}), Error);
 }
 
 TEST_F(AntipodalSamplerTest, CloudsWithoutViewsUseTheConfiguredOrigin) {
   Cloud raw = cylinder();
   raw.view_origins_m.clear();
   raw.view_masks.clear();
-  const HandSet seen_from_origin = create("samples: 200")->sample(raw, RandomStream(4));
+  const HandSet seen_from_origin = create("samples: 200")->sample(raw, RandomStream(4), {});
   EXPECT_FALSE(seen_from_origin.hands.empty());
   ASSERT_EQ(seen_from_origin.cloud->view_origins_m.size(), 1u);
   const HandSet seen_from_elsewhere =
-      create("samples: 200\nview_origin: [0, 0, 2]")->sample(raw, RandomStream(4));
+      create("samples: 200\nview_origin: [0, 0, 2]")->sample(raw, RandomStream(4), {});
   EXPECT_TRUE(seen_from_elsewhere.cloud->view_origins_m[0].isApprox(Eigen::Vector3f(0, 0, 2)));
 }
 

@@ -141,7 +141,7 @@ TEST_F(ClusterSelectorTest, ClustersHandsIntoOneMeanGraspAndKeepsEveryReason) {
   std::vector<Hand> hands = {top_down(0.0, 0.0, 0.1, 1.0), top_down(0.005, 0.0, 0.1, 2.0),
                              top_down(0.3, 0.0, 0.1, 3.0), top_down(0.0, 0.2, 0.1, 1.0)};
   hands[3].rejection = Rejection::kNotAntipodal;
-  const HandSet selection = selector->select(on_table(hands));
+  const HandSet selection = selector->select(on_table(hands), {});
   ASSERT_EQ(grasp_count(selection), 1u);
   EXPECT_NEAR(selection.hands[0].position_m().x(), 0.0025, 1e-12);
   EXPECT_DOUBLE_EQ(selection.hands[0].score, 3.0);
@@ -158,7 +158,8 @@ TEST_F(ClusterSelectorTest, DropsHandsBelowTheSupportOrOutsideTheAperture) {
   const auto selector = create("min_cluster_size: 1");
   const HandSet selection =
       selector->select(on_table({top_down(0, 0, 0.05), top_down(0.2, 0, 0.1, 1.0, 0.08),
-                                 top_down(0.4, 0, 0.1, 1.0, 0.02), top_down(0.6, 0, 0.1)}));
+                                 top_down(0.4, 0, 0.1, 1.0, 0.02), top_down(0.6, 0, 0.1)}),
+                       {});
   ASSERT_EQ(grasp_count(selection), 1u);
   EXPECT_NEAR(selection.hands[0].position_m().x(), 0.6, 1e-12);
   EXPECT_EQ(selection.hands[1].rejection, Rejection::kBelowSupport) << "fingertips at -1 cm";
@@ -168,9 +169,10 @@ TEST_F(ClusterSelectorTest, DropsHandsBelowTheSupportOrOutsideTheAperture) {
 
 TEST_F(ClusterSelectorTest, TheApertureCriterionRanksBeforeTheScore) {
   const auto selector = create("min_cluster_size: 1\nmax_grasps: 3");
-  const HandSet selection = selector->select(
-      on_table({top_down(0, 0, 0.1, 9.0, 0.071), top_down(0.2, 0, 0.1, 1.0, 0.05),
-                top_down(0.4, 0, 0.1, 2.0, 0.066)}));  // 6.6 cm: 6 mm from the limit, no penalty
+  const HandSet selection =
+      selector->select(on_table({top_down(0, 0, 0.1, 9.0, 0.071), top_down(0.2, 0, 0.1, 1.0, 0.05),
+                                 top_down(0.4, 0, 0.1, 2.0, 0.066)}),
+                       {});  // 6.6 cm: 6 mm from the limit, no penalty
   ASSERT_EQ(grasp_count(selection), 3u);
   EXPECT_DOUBLE_EQ(selection.hands[0].score, 2.0);
   EXPECT_DOUBLE_EQ(selection.hands[1].score, 1.0);
@@ -218,10 +220,10 @@ TEST(HandClearance, AWayInUnderAnOverhangIsUnseen) {
 TEST_F(ClusterSelectorTest, AGraspWhoseWayInIsUnseenIsDroppedUnlessUnseenIsFree) {
   HandSet set = on_table({from_side(0.0, 0.25, 0.0, 1.0)});
   set.cloud = std::make_shared<Cloud>(plate_seen_from_above(-0.3f, 0.3f));
-  const HandSet selection = create("min_cluster_size: 1")->select(set);
+  const HandSet selection = create("min_cluster_size: 1")->select(set, {});
   EXPECT_EQ(grasp_count(selection), 0u);
   EXPECT_EQ(selection.hands.front().rejection, Rejection::kInCollision);
-  EXPECT_EQ(grasp_count(create("min_cluster_size: 1\nunseen_is_free: true")->select(set)), 1u);
+  EXPECT_EQ(grasp_count(create("min_cluster_size: 1\nunseen_is_free: true")->select(set, {})), 1u);
 }
 
 TEST(ClosingTilt, AngleOfTheClosingDirectionFromTheSupport) {
@@ -239,14 +241,15 @@ TEST_F(ClusterSelectorTest, ATiltedClosingRanksBelowAFlatterOne) {
   const auto selector = create("min_cluster_size: 1\nmax_grasps: 3");
   const HandSet selection =
       selector->select(on_table({from_side(0.0, 0.1, 45.0, 9.0), from_side(0.2, 0.1, 10.0, 1.0),
-                                 from_side(0.4, 0.1, 25.0, 5.0)}));
+                                 from_side(0.4, 0.1, 25.0, 5.0)}),
+                       {});
   ASSERT_EQ(grasp_count(selection), 3u);
   EXPECT_DOUBLE_EQ(selection.hands[0].score, 1.0) << "10 degrees: within the free 15";
   EXPECT_DOUBLE_EQ(selection.hands[1].score, 5.0);
   EXPECT_DOUBLE_EQ(selection.hands[2].score, 9.0) << "45 degrees ranks last";
   const HandSet untilted =
       create("min_cluster_size: 1\nmax_grasps: 3\ntilt_free_deg: 90")
-          ->select(on_table({from_side(0.0, 0.1, 45.0, 9.0), from_side(0.2, 0.1, 10.0, 1.0)}));
+          ->select(on_table({from_side(0.0, 0.1, 45.0, 9.0), from_side(0.2, 0.1, 10.0, 1.0)}), {});
   EXPECT_DOUBLE_EQ(untilted.hands[0].score, 9.0) << "with every tilt free the score decides";
 }
 
@@ -256,12 +259,12 @@ TEST_F(ClusterSelectorTest, AGraspFarFromTheCentreOfMassIsTriedOnlyWhenNoOtherRe
   auto cloud = std::make_shared<Cloud>();
   for (int i = 0; i < 10; ++i) cloud->points_m.emplace_back(0.1f, 0.001f * float(i), 0.05f);
   set.cloud = cloud;
-  HandSet selection = selector->select(set);
+  HandSet selection = selector->select(set, {});
   ASSERT_EQ(grasp_count(selection), 1u) << "the last resort";
   EXPECT_DOUBLE_EQ(selection.hands[0].score, 9.0);
 
   set.hands.push_back(top_down(0.1, 0, 0.1, 1.0));  // right above the mass
-  selection = selector->select(set);
+  selection = selector->select(set, {});
   ASSERT_EQ(grasp_count(selection), 1u);
   EXPECT_DOUBLE_EQ(selection.hands[0].score, 1.0);
   EXPECT_EQ(selection.hands[1].rejection, Rejection::kUnbalanced);
@@ -274,7 +277,7 @@ TEST_F(ClusterSelectorTest, AGraspWhoseWayInIsBlockedIsDroppedWithItsReason) {
   auto cloud = std::make_shared<Cloud>();
   cloud->points_m = {Eigen::Vector3f(0, 0, 0.16)};  // above the best hand's palm
   set.cloud = cloud;
-  const HandSet selection = selector->select(set);
+  const HandSet selection = selector->select(set, {});
   ASSERT_EQ(grasp_count(selection), 1u);
   EXPECT_DOUBLE_EQ(selection.hands[0].score, 1.0);
   EXPECT_EQ(selection.hands[1].rejection, Rejection::kInCollision);
@@ -286,9 +289,9 @@ TEST_F(ClusterSelectorTest, UsesAFixedSupportHeightWhenTheSetHasNone) {
   const auto selector = create("min_cluster_size: 1\nsupport_z_m: 0.02");
   HandSet set = on_table({top_down(0, 0, 0.085)});  // fingertips at 2.5 cm
   set.support.reset();
-  EXPECT_EQ(grasp_count(selector->select(set)), 1u);
+  EXPECT_EQ(grasp_count(selector->select(set, {})), 1u);
   set.hands[0].X_FrameHand.translation().z() = 0.075;  // fingertips at 1.5 cm
-  EXPECT_EQ(selector->select(set).hands.back().rejection, Rejection::kBelowSupport);
+  EXPECT_EQ(selector->select(set, {}).hands.back().rejection, Rejection::kBelowSupport);
 }
 
 TEST_F(ClusterSelectorTest, RejectsBadParameters) {
@@ -300,7 +303,7 @@ TEST_F(ClusterSelectorTest, RejectsBadParameters) {
   EXPECT_NE(creation_error("point_radius_m: 0").find("point_radius_m"), std::string::npos);
   EXPECT_NE(creation_error("max_grasps: 0").find("max_grasps"), std::string::npos);
   const HandSet no_cloud;
-  EXPECT_THROW(create("{}")->select(no_cloud), Error);
+  EXPECT_THROW(create("{}")->select(no_cloud, {}), Error);
 }
 
 // With Baxter's model, a grasp the right arm cannot reach is dropped for want of inverse
@@ -314,11 +317,11 @@ TEST_F(ClusterSelectorTest, WithARobotTheArmMustReachTheGrasp) {
   auto cloud = std::make_shared<Cloud>();
   cloud->frame = "base";
   set.cloud = cloud;
-  const HandSet free_hand = create("min_cluster_size: 1")->select(set);
+  const HandSet free_hand = create("min_cluster_size: 1")->select(set, {});
   ASSERT_EQ(grasp_count(free_hand), 2u);
   EXPECT_NEAR(free_hand.hands[0].position_m().x(), 1.5, 1e-9) << "the higher score first";
 
-  const HandSet on_arm = create("min_cluster_size: 1\nrobot: " + robot)->select(set);
+  const HandSet on_arm = create("min_cluster_size: 1\nrobot: " + robot)->select(set, {});
   ASSERT_EQ(grasp_count(on_arm), 1u);
   EXPECT_NEAR(on_arm.hands[0].position_m().x(), 0.72, 1e-9);
   EXPECT_EQ(on_arm.hands[1].rejection, Rejection::kNoIk);
@@ -327,7 +330,7 @@ TEST_F(ClusterSelectorTest, WithARobotTheArmMustReachTheGrasp) {
   cloud = std::make_shared<Cloud>();
   cloud->frame = "camera";
   set.cloud = cloud;
-  EXPECT_THROW(create("min_cluster_size: 1\nrobot: " + robot)->select(set), Error);
+  EXPECT_THROW(create("min_cluster_size: 1\nrobot: " + robot)->select(set, {}), Error);
   EXPECT_NE(creation_error("robot: /nonexistent.urdf").find("parameter 'robot'"),
             std::string::npos);
 }

@@ -1,5 +1,7 @@
 #include "decorator_nodes.hpp"
 
+#include "tree_context.hpp"
+
 namespace antipode::bt::builtin {
 namespace {
 
@@ -145,12 +147,26 @@ Status Timeout::tick() {
     deadline_ = now + limit_;
   }
   if (now >= deadline_) return expire();
-  const Status status = child().execute_tick();
+  const Status status = tick_child_with_deadline();
   if (status != Status::kRunning) {
     halt_child(0);
     return status;
   }
   return std::chrono::steady_clock::now() >= deadline_ ? expire() : Status::kRunning;
+}
+
+// The child's calls see the deadline through Node::stop_token(), so a long plugin call
+// (a plan, a classification) inside one tick returns once it passes.
+Status Timeout::tick_child_with_deadline() {
+  detail::TreeContext* context = detail::NodeAccess::context(*this);
+  if (context == nullptr) return child().execute_tick();
+  struct Restore {
+    detail::TreeContext& context;
+    StopToken saved;
+    ~Restore() { context.stop = std::move(saved); }
+  } restore{*context, context->stop};
+  context->stop = restore.saved.with_deadline(deadline_);
+  return child().execute_tick();
 }
 
 Status Timeout::expire() {

@@ -83,6 +83,7 @@ class Timeout : public DecoratorNode {
 
  private:
   Status expire();
+  Status tick_child_with_deadline();
 
   std::chrono::steady_clock::time_point deadline_;
   std::chrono::milliseconds limit_{0};

@@ -47,6 +47,11 @@ Status Node::execute_tick() {
     if (result == Status::kRunning && !may_return_running()) {
       throw Error(describe() + " is synchronous but returned RUNNING", where());
     }
+  } catch (const Cancelled& e) {
+    // A call stopped by stop_token() is a failure of this node, not an error of the run.
+    abandon(previous);
+    failure_reason_ = e.message();
+    result = Status::kFailure;
   } catch (...) {
     abandon(previous);
     rethrow_located();
@@ -234,6 +239,8 @@ RandomStream Node::random() const {
   const std::uint64_t seed = config_.context ? config_.context->seed : 0;
   return RandomStream(seed).derive(hash_path(config_.path)).derive(run_count_);
 }
+
+StopToken Node::stop_token() const { return config_.context ? config_.context->stop : StopToken(); }
 
 void Node::progress(std::size_t done, std::size_t total, const std::string& what) const {
   if (config_.context && config_.context->progress_sink) {

@@ -75,6 +75,8 @@ Status Tree::tick_while_running(std::chrono::milliseconds sleep) {
 
 void Tree::halt() { root_->halt_node(); }
 
+void Tree::request_stop() { context_->stop_source.request_stop(); }
+
 void Tree::add_observer(TreeObserver* observer) {
   if (observer != nullptr) context_->observers.push_back(observer);
 }

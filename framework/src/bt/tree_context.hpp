@@ -11,6 +11,7 @@
 
 #include "antipode/bt/node.hpp"
 #include "antipode/bt/observer.hpp"
+#include "antipode/core/stop_token.hpp"
 #include "antipode/interfaces/component.hpp"
 
 namespace antipode::bt::detail {
@@ -22,6 +23,11 @@ struct TreeContext {
   std::vector<std::shared_ptr<TreeObserver>> owned_observers;
   LogSink log_sink;
   ProgressSink progress_sink;
+  /// Stops every call made with `stop` (Tree::request_stop()).
+  StopSource stop_source;
+  /// The token nodes pass to their calls now: the source's, with the deadline of every
+  /// Timeout being ticked (each sets it around its child's tick).
+  StopToken stop = stop_source.token();
   /// The plugin libraries whose code the tree's nodes run; released after the nodes and
   /// blackboards (every node holds this context, and the Tree drops it last).
   std::vector<std::shared_ptr<const void>> libraries;
@@ -40,6 +46,7 @@ struct NodeAccess {
   static void add_child(Node& parent, std::unique_ptr<Node> child) {
     parent.children_.push_back(std::move(child));
   }
+  static TreeContext* context(const Node& node) { return node.config_.context.get(); }
 };
 
 }  // namespace antipode::bt::detail

@@ -2,6 +2,7 @@
 #include "antipode/core/hand.hpp"
 #include "antipode/interfaces/component.hpp"
 #include "antipode/interfaces/grasp_attempt.hpp"
+#include "antipode/interfaces/motion_planner.hpp"
 
 namespace antipode {
 
@@ -51,6 +52,8 @@ const char* to_string(Rejection reason) {
       return "not selected";
     case Rejection::kUnbalanced:
       return "too far from the centre of mass";
+    case Rejection::kNoIkAtPreGrasp:
+      return "no inverse kinematics solution at the pre-grasp";
   }
   return "?";
 }
@@ -75,6 +78,8 @@ const char* to_string(GraspOutcome outcome) {
   switch (outcome) {
     case GraspOutcome::kSuccess:
       return "success";
+    case GraspOutcome::kArmCollision:
+      return "collision with the environment";
     case GraspOutcome::kCollisionOnApproach:
       return "collision on approach";
     case GraspOutcome::kEmptyGrasp:
@@ -85,6 +90,30 @@ const char* to_string(GraspOutcome outcome) {
       return "object knocked out";
     case GraspOutcome::kNotExecuted:
       return "not executed";
+  }
+  return "?";
+}
+
+const char* to_string(PlanningStatus status) {
+  switch (status) {
+    case PlanningStatus::kSolved:
+      return "solved";
+    case PlanningStatus::kStartInCollision:
+      return "start in collision";
+    case PlanningStatus::kStartInvalid:
+      return "invalid start";
+    case PlanningStatus::kNoIkAtGrasp:
+      return "no IK at the grasp";
+    case PlanningStatus::kNoIkAtPreGrasp:
+      return "no IK at the pre-grasp";
+    case PlanningStatus::kNoApproach:
+      return "no straight approach";
+    case PlanningStatus::kGoalInCollision:
+      return "goal in collision";
+    case PlanningStatus::kTimedOut:
+      return "timed out";
+    case PlanningStatus::kCancelled:
+      return "cancelled";
   }
   return "?";
 }

@@ -1,9 +1,11 @@
 #include "antipode/core/parameters.hpp"
 
+#include <filesystem>
+
 namespace antipode {
 
-Parameters::Parameters(YAML::Node node, std::string owner, std::string file)
-    : node_(std::move(node)), owner_(std::move(owner)), file_(std::move(file)) {
+Parameters::Parameters(const YAML::Node& node, std::string owner, std::string file)
+    : node_(node), owner_(std::move(owner)), file_(std::move(file)) {
   if (node_.IsDefined() && !node_.IsNull() && !node_.IsMap()) {
     throw Error("parameters of " + owner_ + " must be a mapping of key: value", location(""));
   }
@@ -55,6 +57,16 @@ std::string Parameters::scalar_text(const std::string& key) const {
   if (value.IsSequence()) return "a list";
   if (value.IsMap()) return "a mapping";
   return "nothing";
+}
+
+std::string resolve_path(const std::string& path, const std::string& yaml_file) {
+  namespace fs = std::filesystem;
+  if (path.empty() || fs::path(path).is_absolute() || fs::exists(path) || yaml_file.empty())
+    return path;
+  const fs::path dir = fs::path(yaml_file).parent_path();
+  for (const fs::path& base : {dir, dir.parent_path()})
+    if (fs::exists(base / path)) return (base / path).string();
+  return path;
 }
 
 }  // namespace antipode

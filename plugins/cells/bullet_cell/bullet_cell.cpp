@@ -87,19 +87,38 @@ CellOptions read_cell_options(const Parameters& p, const SceneSpec& scene) {
   a.gripper.finger_force_n = in_range(p, "finger_force_n", a.gripper.finger_force_n, 0.1, 500.0);
   a.gripper.friction = in_range(p, "gripper_friction", a.gripper.friction, 0.05, 1.0);
   a.gripper.hand_force_n = in_range(p, "hand_force_n", a.gripper.hand_force_n, 1.0, 5000.0);
+  if (p.has("robot")) {
+    CellArmOptions arm;
+    arm.robot_file = resolve_path(p.require<std::string>("robot"), p.file());
+    arm.tip = p.get<std::string>("arm_tip", arm.tip);
+    arm.last_checked = p.get<std::string>("arm_last_checked", arm.last_checked);
+    arm.home_rad = p.get<std::vector<double>>("home_rad", arm.home_rad);
+    o.arm = arm;
+  } else {
+    for (const char* key : {"arm_tip", "arm_last_checked", "home_rad"})
+      if (p.has(key)) p.fail(key, std::string("'") + key + "' needs 'robot' (the arm's URDF)");
+  }
   return o;
 }
 
 BulletCell::BulletCell(const Parameters& params) : scene_(scene_of(params)) {
   options_ = read_cell_options(params, scene_);
   params.reject_unknown();
+  try {
+    if (options_.arm) arm_ = std::make_shared<const CellArm>(*options_.arm);
+  } catch (const Error& e) {
+    params.fail("robot", std::string("robot: ") + e.what());
+  }
   reset(options_.seed);
 }
 
 BulletCell::BulletCell(SceneSpec scene, const CellOptions& options)
     : scene_(std::move(scene)), options_(options) {
+  if (options_.arm) arm_ = std::make_shared<const CellArm>(*options_.arm);
   reset(options_.seed);
 }
+
+JointState BulletCell::arm_state() const { return arm_ ? arm_->home() : JointState{}; }
 
 std::vector<std::string> BulletCell::view_names() const {
   std::vector<std::string> names;
@@ -142,6 +161,16 @@ GraspAttempt BulletCell::execute(const GraspRequest& request) {
     refused.reason = error.message();
     return refused;
   }
+  if (!request.trajectory.empty()) {
+    GraspOutcome outcome = GraspOutcome::kNotExecuted;
+    const std::string why = follow_trajectory(request, &outcome);
+    if (!why.empty()) {
+      refused.outcome = outcome;
+      refused.reason = why;
+      if (outcome != GraspOutcome::kNotExecuted) ++attempts_;
+      return refused;
+    }
+  }
   ++attempts_;
   AttemptOptions attempt = options_.attempt;
   attempt.gripper.geometry = request.gripper;
@@ -160,6 +189,34 @@ GraspAttempt BulletCell::execute(const GraspRequest& request) {
     record.reason += "; knocked off the table: " + names;
   }
   return record;
+}
+
+std::string BulletCell::follow_trajectory(const GraspRequest& request,
+                                          GraspOutcome* outcome) const {
+  *outcome = GraspOutcome::kNotExecuted;
+  if (!arm_) return "the cell has no arm to follow a trajectory (set the cell's 'robot')";
+  const Trajectory& t = request.trajectory;
+  if (std::string why = arm_->check_trajectory(t); !why.empty()) return why;
+  const std::vector<double>& start = t.positions_rad.front();
+  const std::vector<double> home = arm_->home().positions_rad;
+  for (std::size_t j = 0; j < home.size(); ++j)
+    if (std::abs(start[j] - home[j]) > 1e-3)
+      return "the trajectory starts away from the arm's state (" + arm_->joint_names()[j] + ")";
+  const Eigen::Isometry3d X_BaseTip = arm_->tip_pose(t.positions_rad.back());
+  const double off_m = (X_BaseTip.translation() - request.grasp.X_FrameHand.translation()).norm();
+  const double off_rad =
+      Eigen::AngleAxisd(X_BaseTip.linear().transpose() * request.grasp.X_FrameHand.linear())
+          .angle();
+  if (off_m > 0.005 || off_rad > 0.05)
+    return "the trajectory ends " + std::to_string(int(std::round(off_m * 1000))) + " mm and " +
+           std::to_string(int(std::round(off_rad * 180 / M_PI))) + " deg from the grasp";
+  if (const auto contact = arm_->first_contact(t, *world_)) {
+    *outcome = GraspOutcome::kArmCollision;
+    return "the arm's " + contact->link + " touched " + contact->body + " on segment " +
+           std::to_string(contact->segment + 1) + " of " +
+           std::to_string(t.positions_rad.size() - 1) + " of its motion";
+  }
+  return "";
 }
 
 std::vector<std::string> BulletCell::remove_fallen_objects() {

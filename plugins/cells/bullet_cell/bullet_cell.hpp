@@ -2,9 +2,11 @@
 // The bullet_cell component: a simulated table-top cell (Bullet physics, Embree depth views).
 
 #include <memory>
+#include <optional>
 
 #include "antipode/core/parameters.hpp"
 #include "antipode/interfaces/cell.hpp"
+#include "cell_arm.hpp"
 #include "depth_renderer.hpp"
 #include "grasp_attempt.hpp"
 #include "scene_builder.hpp"
@@ -16,7 +18,8 @@ struct CellOptions {
   AttemptOptions attempt;
   SensorModel sensor;
   std::uint64_t seed = 0;
-  int render_threads = 2;  ///< threads sharing a view's rows (same cloud for any number)
+  int render_threads = 2;             ///< threads sharing a view's rows (same cloud for any number)
+  std::optional<CellArmOptions> arm;  ///< the robot arm; none: a free-floating hand
 };
 
 /// Reads the cell's parameters (docs/cell.md); throws antipode::Error located in the file.
@@ -30,6 +33,7 @@ class BulletCell final : public Cell {
 
   std::vector<std::string> view_names() const override;
   Cloud capture(const std::vector<std::string>& views) override;
+  JointState arm_state() const override;
   GraspAttempt execute(const GraspRequest& request) override;
   void reset(std::uint64_t seed) override;
 
@@ -42,11 +46,15 @@ class BulletCell final : public Cell {
  private:
   /// Removes the objects below the table top; returns their names.
   std::vector<std::string> remove_fallen_objects();
+  /// Follows the request's trajectory with the arm: "" when it reached the grasp without
+  /// touching the scene, else the refusal (outcome kNotExecuted) or contact (kArmCollision).
+  std::string follow_trajectory(const GraspRequest& request, GraspOutcome* outcome) const;
 
   SceneSpec scene_;
   CellOptions options_;
   MeshCache meshes_;
   std::unique_ptr<PhysicsWorld> world_;
+  std::shared_ptr<const CellArm> arm_;
   DepthRenderer renderer_;
   std::uint64_t seed_ = 0;
   int captures_ = 0;

@@ -216,8 +216,13 @@ std::set<int> PhysicsWorld::overlapping(const Eigen::Isometry3d& pose,
                                         const Eigen::Vector3d& half_extents_m) const {
   btBoxShape box(to_bullet(half_extents_m));
   box.setMargin(0.0f);
+  return overlapping(pose, box);
+}
+
+std::set<int> PhysicsWorld::overlapping(const Eigen::Isometry3d& pose,
+                                        btCollisionShape& shape) const {
   btCollisionObject probe;
-  probe.setCollisionShape(&box);
+  probe.setCollisionShape(&shape);
   probe.setWorldTransform(to_bullet(pose));
   probe.setUserIndex(-1);
   ContactCollector collector(0.0);

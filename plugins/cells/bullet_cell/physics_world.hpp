@@ -76,6 +76,8 @@ class PhysicsWorld {
   /// fresh collision query; the box is not part of the world).
   std::set<int> overlapping(const Eigen::Isometry3d& pose,
                             const Eigen::Vector3d& half_extents_m) const;
+  /// The same for any Bullet shape (not part of the world) at `pose`.
+  std::set<int> overlapping(const Eigen::Isometry3d& pose, btCollisionShape& shape) const;
   /// The deepest interpenetration (m, >= 0) between any two bodies after the last step.
   double deepest_penetration() const;
 

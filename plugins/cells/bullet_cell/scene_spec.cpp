@@ -151,14 +151,6 @@ ObjectEntry parse_object(const Parameters& p, const std::string& scene_file) {
   return e;
 }
 
-std::string resolve_path(const std::string& path, const std::string& scene_file) {
-  if (fs::path(path).is_absolute() || fs::exists(path) || scene_file.empty()) return path;
-  const fs::path dir = fs::path(scene_file).parent_path();
-  for (const fs::path& base : {dir, dir.parent_path()})
-    if (fs::exists(base / path)) return (base / path).string();
-  return path;
-}
-
 std::vector<CameraSpec> default_cameras(const TableSpec& table) {
   const Eigen::Vector3d centre(table.center_m.x(), table.center_m.y(), table.top_z_m);
   auto camera = [&](const char* name, const Eigen::Vector3d& offset) {

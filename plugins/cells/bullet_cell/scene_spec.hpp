@@ -87,7 +87,5 @@ ObjectEntry parse_object(const Parameters& params, const std::string& scene_file
 /// The default cameras: left and right of the table like the paper's two sensors, plus a
 /// top and a front view.
 std::vector<CameraSpec> default_cameras(const TableSpec& table);
-/// `path` as written, or relative to the scene file's folder or its parent when that exists.
-std::string resolve_path(const std::string& path, const std::string& scene_file);
 
 }  // namespace antipode::cells

@@ -62,8 +62,10 @@ class AntipodalClassifier final : public Classifier {
  public:
   explicit AntipodalClassifier(const Parameters& params) : options_(read_options(params)) {}
 
-  void classify(HandSet& set) const override {
+  void classify(HandSet& set, const StopToken& stop) const override {
+    stop.throw_if_stop_requested("antipodal_classifier");
     const std::vector<AntipodalCount> counts = count_antipodal_normals(set, options_);
+    stop.throw_if_stop_requested("antipodal_classifier");
     const int k = options_.antipodal.min_points;
     for (std::size_t i = 0; i < set.hands.size(); ++i) {
       Hand& hand = set.hands[i];

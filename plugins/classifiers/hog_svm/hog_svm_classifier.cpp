@@ -19,17 +19,6 @@ namespace {
 using namespace antipode;
 namespace fs = std::filesystem;
 
-// `path` as given when it is absolute or exists from the working directory; otherwise from
-// the folder of the YAML file the parameters came from, then from that folder's parent.
-std::string resolve_path(const std::string& path, const std::string& yaml_file) {
-  if (fs::path(path).is_absolute() || fs::exists(path) || yaml_file.empty()) return path;
-  const fs::path dir = fs::path(yaml_file).parent_path();
-  for (const fs::path& base : {dir, dir.parent_path()}) {
-    if (fs::exists(base / path)) return (base / path).string();
-  }
-  return path;
-}
-
 SvmModel load_model(const Parameters& params, const std::string& path) {
   try {
     return SvmModel::load(path);
@@ -56,11 +45,14 @@ class HogSvmClassifier final : public Classifier {
     params.reject_unknown();
   }
 
-  void classify(HandSet& set) const override {
+  void classify(HandSet& set, const StopToken& stop) const override {
     if (set.hands.empty()) return;
     model_.check_compatible(model_.descriptor.image, set.geometry, "model " + path_);
-    const std::vector<double> values = model_.decision_values(
-        hand_descriptors(set, set.geometry, model_.descriptor.image, threads_), threads_);
+    stop.throw_if_stop_requested("hog_svm_classifier");
+    const auto descriptors = hand_descriptors(set, set.geometry, model_.descriptor.image, threads_);
+    stop.throw_if_stop_requested("hog_svm_classifier");
+    const std::vector<double> values = model_.decision_values(descriptors, threads_);
+    stop.throw_if_stop_requested("hog_svm_classifier");
     for (std::size_t i = 0; i < set.hands.size(); ++i) {
       Hand& hand = set.hands[i];
       hand.score = values[i];

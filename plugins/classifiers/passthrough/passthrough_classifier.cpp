@@ -12,12 +12,15 @@ class PassthroughClassifier final : public Classifier {
  public:
   explicit PassthroughClassifier(const Parameters& params) { params.reject_unknown(); }
 
-  void classify(HandSet& set) const override {
+  void classify(HandSet& set, const StopToken& stop) const override {
+    stop.throw_if_stop_requested("passthrough_classifier");
     for (Hand& hand : set.hands) hand.label = HandLabel::kPositive;
   }
 };
 
-Component* create_passthrough(const Parameters& params) { return new PassthroughClassifier(params); }
+Component* create_passthrough(const Parameters& params) {
+  return new PassthroughClassifier(params);
+}
 
 const PluginFactory kFactories[] = {
     {"classifier", "passthrough_classifier",

@@ -24,7 +24,7 @@ class WidthPreference final : public Classifier {
     if (tolerance_m_ <= 0.0) params.fail("tolerance_m", "tolerance_m must be > 0");
   }
 
-  void classify(HandSet& set) const override {
+  void classify(HandSet& set, const StopToken&) const override {
     for (Hand& hand : set.hands) {
       const double distance_m = std::abs(hand.width_m - preferred_m_);
       hand.score = 1.0 - distance_m / tolerance_m_;

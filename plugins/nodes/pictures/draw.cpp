@@ -15,6 +15,8 @@ namespace {
 
 cv::Point2d pixel(const ProjectedPoint& p) { return {p.u_px, p.v_px}; }
 
+}  // namespace
+
 void draw_box(cv::Mat& image, const OrthoView& view, const HandBox& box,
               const Eigen::Isometry3d& X_FrameHand, const cv::Scalar& colour, int thickness) {
   std::array<cv::Point2d, 8> corners;
@@ -32,8 +34,6 @@ void draw_box(cv::Mat& image, const OrthoView& view, const HandBox& box,
     }
   }
 }
-
-}  // namespace
 
 void draw_cloud(cv::Mat& image, const OrthoView& view, const Cloud& cloud) {
   std::vector<ProjectedPoint> projected(cloud.size());

@@ -16,6 +16,10 @@ namespace antipode::pictures {
 /// Draws the points far to near (so nearer ones cover farther ones), shaded by depth.
 void draw_cloud(cv::Mat& image, const OrthoView& view, const Cloud& cloud);
 
+/// Draws the outline of `box` (in the frame X_FrameHand places).
+void draw_box(cv::Mat& image, const OrthoView& view, const HandBox& box,
+              const Eigen::Isometry3d& X_FrameHand, const cv::Scalar& colour, int thickness);
+
 /// Draws the hand's fingers and palm as box outlines.
 void draw_hand(cv::Mat& image, const OrthoView& view, const HandBody& body, const Hand& hand,
                const cv::Scalar& colour, int thickness);

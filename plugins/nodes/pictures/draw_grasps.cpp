@@ -130,6 +130,8 @@ const PluginFactory kFactories[] = {
     {"node", "DrawGrasps", "draws a cloud and hands into a PNG", nullptr, &register_draw_grasps},
     {"node", "DrawAttempt", "draws a grasp attempt: the planned hand and the hand at closing",
      nullptr, &register_draw_attempt},
+    {"node", "DrawArmPath", "draws a planned arm motion over the scene", nullptr,
+     &register_draw_arm_path},
 };
 
 }  // namespace

@@ -26,6 +26,7 @@ class OrthoView {
   OrthoView side_view() const;
 
   int size_px() const { return size_px_; }
+  double px_per_m() const { return px_per_m_; }
 
  private:
   Eigen::Vector3d forward_, right_, down_, up_hint_, centre_m_;

@@ -26,7 +26,7 @@ class ClassifyHands final : public bt::SyncActionNode {
  protected:
   bt::Status tick() override {
     auto classified = std::make_shared<HandSet>(*get_input<HandSetPtr>("hands"));
-    component<Classifier>("classifier").classify(*classified);
+    component<Classifier>("classifier").classify(*classified, stop_token());
     const auto grasps =
         std::count_if(classified->hands.begin(), classified->hands.end(),
                       [](const Hand& hand) { return hand.label == HandLabel::kPositive; });

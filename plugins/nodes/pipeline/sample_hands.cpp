@@ -24,7 +24,8 @@ class SampleHands final : public bt::SyncActionNode {
  protected:
   bt::Status tick() override {
     const CloudPtr cloud = get_input<CloudPtr>("cloud");
-    auto hands = std::make_shared<HandSet>(component<Sampler>("sampler").sample(*cloud, random()));
+    auto hands = std::make_shared<HandSet>(
+        component<Sampler>("sampler").sample(*cloud, random(), stop_token()));
     log(std::to_string(hands->hands.size()) + " hand hypotheses from " +
         std::to_string(cloud->size()) + " points");
     if (hands->hands.empty()) {

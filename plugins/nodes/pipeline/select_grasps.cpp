@@ -28,7 +28,7 @@ class SelectGrasps final : public bt::SyncActionNode {
  protected:
   bt::Status tick() override {
     auto selection = std::make_shared<const HandSet>(
-        component<GraspSelector>("selector").select(*get_input<HandSetPtr>("hands")));
+        component<GraspSelector>("selector").select(*get_input<HandSetPtr>("hands"), stop_token()));
     std::size_t chosen = 0;
     while (chosen < selection->hands.size() &&
            selection->hands[chosen].rejection == Rejection::kNone)

@@ -1,6 +1,7 @@
 #include "arm_planner.hpp"
 
 #include <algorithm>
+#include <atomic>
 #include <chrono>
 #include <cmath>
 #include <memory>
@@ -120,6 +121,8 @@ const char* to_string(PlanStatus status) {
       return "goal in collision";
     case PlanStatus::kTimedOut:
       return "timed out";
+    case PlanStatus::kCancelled:
+      return "cancelled";
   }
   return "?";
 }
@@ -151,8 +154,11 @@ ArmPlan plan_arm_motion(const ArmPlanningProblem& p) {
       [seed](const ob::StateSpace* s) { return std::make_shared<SeededSampler>(s, seed); });
   og::SimpleSetup setup(space);
   const collision::ArmCollisionWorld& world = *p.world;
-  setup.setStateValidityChecker(
-      [&world, dof](const ob::State* state) { return world.check(to_eigen(state, dof)).free(); });
+  std::atomic<long> checks{0};
+  setup.setStateValidityChecker([&world, &checks, dof](const ob::State* state) {
+    ++checks;
+    return world.check(to_eigen(state, dof)).free();
+  });
   setup.getSpaceInformation()->setStateValidityCheckingResolution(p.resolution_rad /
                                                                   space->getMaximumExtent());
   setup.setPlanner(make_planner(p.planner, setup.getSpaceInformation()));
@@ -163,9 +169,17 @@ ArmPlan plan_arm_motion(const ArmPlanningProblem& p) {
   }
   setup.setStartAndGoalStates(start, goal);
   const Clock::time_point t0 = Clock::now();
-  const ob::PlannerStatus solved = setup.solve(p.time_limit_s);
+  const StopToken& stop = p.stop;
+  const ob::PlannerTerminationCondition end = ob::plannerOrTerminationCondition(
+      ob::timedPlannerTerminationCondition(p.time_limit_s),
+      ob::PlannerTerminationCondition([&stop] { return stop.stop_requested(); }));
+  const ob::PlannerStatus solved = setup.solve(end);
   plan.planning_s = seconds_since(t0);
-  if (solved != ob::PlannerStatus::EXACT_SOLUTION) return plan;
+  plan.collision_checks = checks.load();
+  if (solved != ob::PlannerStatus::EXACT_SOLUTION) {
+    if (stop.stop_requested()) plan.status = PlanStatus::kCancelled;
+    return plan;
+  }
   for (const ob::State* s : setup.getSolutionPath().getStates())
     plan.path.push_back(to_eigen(s, dof));
   const Clock::time_point t1 = Clock::now();

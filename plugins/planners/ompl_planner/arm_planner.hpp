@@ -16,6 +16,7 @@
 
 #include <Eigen/Core>
 
+#include "antipode/core/stop_token.hpp"
 #include "antipode/robot/kinematic_chain.hpp"
 #include "arm_collision_world.hpp"
 
@@ -32,6 +33,7 @@ struct ArmPlanningProblem {
   double resolution_rad = 0.02;  ///< joint-space distance between checked states
   std::uint64_t seed = 0;        ///< the planner's samples
   bool shorten = true;           ///< shortcut the path (deterministically)
+  StopToken stop;                ///< ends the search early (status kCancelled)
 };
 
 enum class PlanStatus {
@@ -40,7 +42,8 @@ enum class PlanStatus {
   kGoalOutsideLimits,
   kStartInCollision,
   kGoalInCollision,
-  kTimedOut,  ///< no path within the time limit
+  kTimedOut,   ///< no path within the time limit
+  kCancelled,  ///< the stop token asked to stop before a path was found
 };
 
 const char* to_string(PlanStatus status);
@@ -50,6 +53,7 @@ struct ArmPlan {
   std::vector<Eigen::VectorXd> path;  ///< start ... goal, when solved
   std::string detail;                 ///< the contact that makes the start or goal invalid
   double planning_s = 0.0;            ///< OMPL's search
+  long collision_checks = 0;          ///< states checked during the search
   double shortening_s = 0.0;          ///< the shortcutting after it
 };
 

@@ -15,7 +15,8 @@ class AntipodalSampler final : public Sampler {
   /// Throws antipode::Error (located in the YAML file) for unknown or invalid parameters.
   explicit AntipodalSampler(const Parameters& params);
 
-  HandSet sample(const Cloud& cloud, const RandomStream& random) const override;
+  HandSet sample(const Cloud& cloud, const RandomStream& random,
+                 const StopToken& stop) const override;
 
   const HandSamplingOptions& options() const { return options_; }
 

@@ -1,37 +1,15 @@
 #include "arm_reach.hpp"
 
 #include "antipode/core/error.hpp"
+#include "collision_pairs.hpp"
 
 namespace antipode::selectors {
-
-namespace {
-
-// `link` and every link below it.
-std::vector<std::string> subtree(const RobotModel& robot, const std::string& link) {
-  std::vector<std::string> names;
-  for (const std::string& name : robot.link_names()) {
-    for (std::string up = name; !up.empty(); up = robot.parent_link(up)) {
-      if (up == link) {
-        names.push_back(name);
-        break;
-      }
-    }
-  }
-  return names;
-}
-
-}  // namespace
 
 ArmReach::ArmReach(const ArmReachOptions& options)
     : options_(options),
       robot_(RobotModel::load(options.robot_file)),
       arm_(robot_.chain(robot_.root_link(), options.arm_tip)) {
-  if (!robot_.has_link(options.points_unchecked_from)) {
-    throw Error(options.robot_file + ": no link '" + options.points_unchecked_from + "'" +
-                did_you_mean(options.points_unchecked_from, robot_.link_names()));
-  }
-  for (const std::string& name : subtree(robot_, options.points_unchecked_from))
-    if (!robot_.collision_shapes(name).empty()) gripper_links_.push_back(name);
+  gripper_links_ = collision::shaped_links_below(robot_, options.points_unchecked_from);
 }
 
 collision::ArmCollisionWorld ArmReach::world_for(const Cloud& cloud) const {
@@ -66,8 +44,9 @@ Rejection ArmReach::check(const collision::ArmCollisionWorld& world, const Hand&
     case collision::ReachStatus::kReachable:
       return Rejection::kNone;
     case collision::ReachStatus::kNoIkAtGrasp:
-    case collision::ReachStatus::kNoIkAtPreGrasp:
       return Rejection::kNoIk;
+    case collision::ReachStatus::kNoIkAtPreGrasp:
+      return Rejection::kNoIkAtPreGrasp;
     default:
       return Rejection::kInCollision;
   }

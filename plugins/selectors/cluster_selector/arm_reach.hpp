@@ -38,8 +38,8 @@ class ArmReach {
   collision::ArmCollisionWorld world_for(const Cloud& cloud) const;
 
   /// kNone when the arm reaches `grasp` (as it is or turned half a turn about its approach:
-  /// the same grasp for a parallel gripper) and its pre-grasp `standoff_m` back, else kNoIk
-  /// or kInCollision (the status of the grasp as it is).
+  /// the same grasp for a parallel gripper) and its pre-grasp `standoff_m` back, else kNoIk,
+  /// kNoIkAtPreGrasp or kInCollision (the status of the grasp as it is).
   Rejection check(const collision::ArmCollisionWorld& world, const Hand& grasp,
                   double standoff_m) const;
 

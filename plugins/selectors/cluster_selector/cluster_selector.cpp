@@ -56,7 +56,7 @@ ClusterSelector::ClusterSelector(const Parameters& params)
   }
 }
 
-HandSet ClusterSelector::select(const HandSet& in) const {
+HandSet ClusterSelector::select(const HandSet& in, const StopToken& stop) const {
   if (!in.cloud) throw Error("cluster_selector: the hand set has no cloud");
   const HandGeometry& g = in.geometry;
   std::optional<SupportPlane> support = in.support;
@@ -142,6 +142,7 @@ HandSet ClusterSelector::select(const HandSet& in) const {
   std::vector<std::pair<const Proposal*, bool>> placed;  // proposal, kept?
   bool balanced_kept = false;
   for (const Proposal& p : proposals) {
+    stop.throw_if_stop_requested("cluster_selector");
     Hand grasp = p.grasp;
     grasp.rejection = Rejection::kNone;
     if (unbalanced(p) && balanced_kept)

@@ -47,7 +47,8 @@ SelectionOptions read_selection_options(const Parameters& params) {
   o.penalty_tolerance_m2 =
       in_range(params, "penalty_tolerance_m2", o.penalty_tolerance_m2, 0.0, 1.0);
   o.max_grasps = std::size_t(in_range(params, "max_grasps", double(o.max_grasps), 1, 1e6));
-  o.arm.robot_file = params.get<std::string>("robot", o.arm.robot_file);
+  o.arm.robot_file =
+      resolve_path(params.get<std::string>("robot", o.arm.robot_file), params.file());
   o.arm.arm_tip = params.get<std::string>("arm_tip", o.arm.arm_tip);
   o.arm.points_unchecked_from =
       params.get<std::string>("points_unchecked_from", o.arm.points_unchecked_from);

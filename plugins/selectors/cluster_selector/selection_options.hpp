@@ -54,7 +54,7 @@ struct SelectionOptions {
   /// How many grasps to return.
   std::size_t max_grasps = 10;
   /// The arm (arm_reach.hpp): with a robot file, a grasp is kept only when the arm reaches
-  /// it and its stand-off free of collisions (kNoIk, kInCollision otherwise).
+  /// it and its stand-off free of collisions (kNoIk, kNoIkAtPreGrasp, kInCollision otherwise).
   ArmReachOptions arm;
 };
 

@@ -35,6 +35,7 @@
 #include "antipode/bt/status.hpp"
 #include "antipode/core/error.hpp"
 #include "antipode/core/random.hpp"
+#include "antipode/core/stop_token.hpp"
 
 namespace antipode::bt {
 
@@ -163,6 +164,11 @@ class Node {
   /// A random stream determined by the tree's seed, this node's path and run_count(): the
   /// same on every tick of one run, different for each run and each node.
   RandomStream random() const;
+
+  /// The cancellation token for calls this tick makes (plugin calls): it asks to stop once
+  /// the deadline of an enclosing Timeout has passed or Tree::request_stop() was called. A
+  /// Cancelled exception thrown by tick() makes the node fail with its message as reason.
+  StopToken stop_token() const;
 
   /// Records why the node fails; shown by tracers. Cleared when the node starts again.
   void set_failure_reason(std::string reason) { failure_reason_ = std::move(reason); }

@@ -39,6 +39,10 @@ class Tree {
   /// Halts every RUNNING node.
   void halt();
 
+  /// Asks every call the tree's nodes make to stop (cooperatively, see stop_token.hpp);
+  /// safe from another thread. The calls fail with "cancelled"; it cannot be undone.
+  void request_stop();
+
   Node& root() { return *root_; }
   const Node& root() const { return *root_; }
 

@@ -21,7 +21,7 @@ class Parameters {
   Parameters() = default;
   /// `node` must be a map or null. `owner` names the thing configured, for messages, e.g.
   /// "component 'sampler'"; `file` is the YAML file the node came from ("" if none).
-  Parameters(YAML::Node node, std::string owner, std::string file);
+  Parameters(const YAML::Node& node, std::string owner, std::string file);
 
   bool has(const std::string& key) const;
 
@@ -77,6 +77,11 @@ class Parameters {
   std::string file_;
   mutable std::set<std::string> asked_;
 };
+
+/// A file named in a YAML file: `path` as given when it is absolute or exists from the
+/// working directory; otherwise from the folder of `yaml_file`, then from that folder's
+/// parent (where a tree's `models/`, `scenes/` and `robots/` lie); else as given.
+std::string resolve_path(const std::string& path, const std::string& yaml_file);
 
 template <typename T>
 const char* Parameters::type_name() {

@@ -8,6 +8,7 @@
 
 #include "antipode/core/cloud.hpp"
 #include "antipode/core/hand.hpp"
+#include "antipode/core/trajectory.hpp"
 #include "antipode/interfaces/component.hpp"
 #include "antipode/interfaces/grasp_attempt.hpp"
 
@@ -24,11 +25,15 @@ class Cell : public Component {
   /// `views[v]`. Throws antipode::Error for an unknown view name.
   virtual Cloud capture(const std::vector<std::string>& views) = 0;
 
+  /// The arm's joint state now; empty for a cell without an arm (a free-floating hand).
+  virtual JointState arm_state() const = 0;
+
   /// Executes `request.grasp` with a gripper of `request.gripper` (following the request's
   /// trajectory when it is not empty) and reports the attempt. A request the cell cannot
   /// execute (another frame than "base", a pose that is not a rigid motion, a gripper it
   /// cannot be) gives outcome kNotExecuted with the reason; it never throws for a bad
-  /// request.
+  /// request. With a trajectory, the arm follows it first; an arm link touching the
+  /// environment on the way ends the attempt with kArmCollision, naming link and object.
   virtual GraspAttempt execute(const GraspRequest& request) = 0;
 
   /// Restores the cell's initial state for `seed`.

@@ -16,13 +16,14 @@
 
 #include "antipode/core/hand.hpp"
 #include "antipode/core/hand_geometry.hpp"
-#include "antipode/interfaces/motion_planner.hpp"
+#include "antipode/core/trajectory.hpp"
 
 namespace antipode {
 
 /// How a grasp attempt ended, judged by the cell (ground truth in simulation).
 enum class GraspOutcome : std::uint8_t {
   kSuccess,
+  kArmCollision,  ///< an arm link touched the environment on the way to the pre-grasp
   kCollisionOnApproach,
   kEmptyGrasp,
   kSlipped,
@@ -34,9 +35,11 @@ const char* to_string(GraspOutcome outcome);
 
 /// One grasp to execute.
 struct GraspRequest {
-  Hand grasp;             ///< pose in frame "base", fingers fully open
-  HandGeometry gripper;   ///< the gripper the grasp was planned for (the hand set's geometry)
-  Trajectory trajectory;  ///< the arm's motion to the pre-grasp; empty = free-floating hand
+  Hand grasp;            ///< pose in frame "base", fingers fully open
+  HandGeometry gripper;  ///< the gripper the grasp was planned for (the hand set's geometry)
+  /// The arm's motion to the grasp (start -> pre-grasp -> grasp, as MotionPlanner plans it);
+  /// empty = a free-floating hand.
+  Trajectory trajectory;
 };
 
 /// The record of one attempt: enough to tell why it failed without running it again.

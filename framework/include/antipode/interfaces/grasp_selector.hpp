@@ -3,6 +3,7 @@
 /// GraspSelector: chooses and ranks the grasps to try from classified hands (paper
 /// section 5.1), keeping the reason for every hand it drops.
 
+#include "antipode/core/stop_token.hpp"
 #include "antipode/interfaces/component.hpp"
 #include "antipode/interfaces/hand_set.hpp"
 
@@ -21,8 +22,9 @@ class GraspSelector : public Component {
   /// kBelowSupport, kApertureLimit, kClustered with `merged_into` naming its grasp, ...).
   /// No grasp at the front means none was found (not an error). Hands with a rejection or
   /// a label other than kPositive or kUnknown are never chosen. Deterministic; may be called
-  /// concurrently. Throws antipode::Error only for unusable input (a set without a cloud).
-  virtual HandSet select(const HandSet& hands) const = 0;
+  /// concurrently. Throws antipode::Error only for unusable input (a set without a cloud),
+  /// and Cancelled when `stop` asks to stop.
+  virtual HandSet select(const HandSet& hands, const StopToken& stop) const = 0;
 };
 
 }  // namespace antipode

@@ -1,39 +1,79 @@
 #pragma once
 /// @file
-/// MotionPlanner: a collision-free arm motion to a grasp.
+/// MotionPlanner: a collision-free arm motion to a grasp (paper section 5.1's reaching).
+///
+/// Frames and units: the grasp and the scene's points are in the robot's base frame (the
+/// cell's base frame); the grasp is X_BaseHand, the hand frame of hand_geometry.hpp (x the
+/// approach, y the closing direction, origin the centre of the palm face). Metres, radians,
+/// seconds. The planner knows its robot (its parameters name the URDF and the arm).
 
+#include <cstdint>
+#include <memory>
 #include <string>
-#include <vector>
 
+#include <Eigen/Geometry>
+
+#include "antipode/core/cloud.hpp"
 #include "antipode/core/hand.hpp"
+#include "antipode/core/stop_token.hpp"
+#include "antipode/core/trajectory.hpp"
 #include "antipode/interfaces/component.hpp"
 
 namespace antipode {
 
-/// Joint-space waypoints, each with one position per joint (radians), and their times.
-struct Trajectory {
-  std::vector<std::string> joint_names;
-  std::vector<std::vector<double>> positions_rad;
-  std::vector<double> times_s;
-
-  bool empty() const { return positions_rad.empty(); }
+/// What to plan: from `start` to the grasp, through the pre-grasp `standoff_m` back along
+/// the approach.
+struct PlanningProblem {
+  Hand grasp;                          ///< frame "base"
+  JointState start;                    ///< the arm's joints now (Cell::arm_state())
+  std::shared_ptr<const Cloud> scene;  ///< observed points (base frame); null = none known
+  double standoff_m = 0.10;            ///< where the straight approach starts
+  double time_limit_s = 1.0;           ///< for the search; <= 0: the planner's default
+  std::uint64_t seed = 0;              ///< the same problem and seed give the same motion
+  StopToken stop;                      ///< cancellation (a Timeout node's deadline)
 };
 
-/// What to plan: from `start_rad` (one value per joint of the planner's arm) to a pose from
-/// which `grasp` can be approached.
-struct PlanningRequest {
-  std::vector<double> start_rad;
-  Hand grasp;
-  double time_limit_s = 1.0;
+/// How a planning call ended.
+enum class PlanningStatus : std::uint8_t {
+  kSolved,
+  kStartInCollision,  ///< the arm's start state collides (detail: the contact)
+  kStartInvalid,      ///< the start state names other joints or lies outside the limits
+  kNoIkAtGrasp,       ///< no collision-free joint values put the hand at the grasp
+  kNoIkAtPreGrasp,    ///< ... at the pre-grasp
+  kNoApproach,        ///< no continuous, collision-free straight approach
+  kGoalInCollision,   ///< every goal found collides (detail: the contact)
+  kTimedOut,          ///< no path within the time limit
+  kCancelled,         ///< the stop token asked to stop
+};
+
+const char* to_string(PlanningStatus status);
+
+struct PlanningResult {
+  PlanningStatus status = PlanningStatus::kTimedOut;
+  std::string detail;  ///< one line for a person, e.g. "self-collision: A with B"
+  /// start -> pre-grasp -> grasp when solved (the last segment the straight approach);
+  /// empty otherwise.
+  Trajectory trajectory;
+  /// The grasp pose the trajectory ends at: the problem's, or the same grasp turned half a
+  /// turn about its approach (a parallel gripper takes it either way). Execute this one.
+  Eigen::Isometry3d X_BaseHand = Eigen::Isometry3d::Identity();
+  double goal_s = 0.0;        ///< seconds finding the goal (IK, the straight approach)
+  double search_s = 0.0;      ///< seconds of the path search to the pre-grasp
+  double simplify_s = 0.0;    ///< seconds spent shortening the path
+  long collision_checks = 0;  ///< arm states checked during the path search
+
+  bool solved() const { return status == PlanningStatus::kSolved; }
 };
 
 class MotionPlanner : public Component {
  public:
   ComponentKind kind() const final { return ComponentKind::kMotionPlanner; }
 
-  /// Returns a trajectory, or an empty one when none was found within the time limit
-  /// (`why` then says why). Throws antipode::Error only for malformed requests.
-  virtual Trajectory plan(const PlanningRequest& request, std::string* why) const = 0;
+  /// Plans the arm's motion for `problem`. Failures are statuses; throws antipode::Error
+  /// only for a malformed problem (a grasp not in frame "base"). Deterministic for a given
+  /// problem and seed when the search ends within its time limit; may be called
+  /// concurrently.
+  virtual PlanningResult plan(const PlanningProblem& problem) const = 0;
 };
 
 }  // namespace antipode

@@ -3,6 +3,7 @@
 /// Sampler: cloud in, hand hypotheses out (paper section 3).
 
 #include "antipode/core/random.hpp"
+#include "antipode/core/stop_token.hpp"
 #include "antipode/interfaces/component.hpp"
 #include "antipode/interfaces/hand_set.hpp"
 
@@ -18,8 +19,10 @@ class Sampler : public Component {
   /// refer to (the sampler may preprocess it) and every hand's `frame` equals its frame.
   /// The result depends only on `cloud`, the sampler's parameters and `random`'s seed - not
   /// on the number of threads. Throws antipode::Error for unusable input (no finite point,
-  /// nothing in the workspace). May be called concurrently from several trees.
-  virtual HandSet sample(const Cloud& cloud, const RandomStream& random) const = 0;
+  /// nothing in the workspace) and Cancelled when `stop` asks to stop. May be called
+  /// concurrently from several trees.
+  virtual HandSet sample(const Cloud& cloud, const RandomStream& random,
+                         const StopToken& stop) const = 0;
 };
 
 }  // namespace antipode

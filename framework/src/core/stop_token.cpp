@@ -1,0 +1,25 @@
+#include "antipode/core/stop_token.hpp"
+
+#include <limits>
+
+namespace antipode {
+
+void StopToken::throw_if_stop_requested(const std::string& where) const {
+  if (!stop_requested()) return;
+  const bool by_source = flag_ && flag_->load(std::memory_order_relaxed);
+  throw Cancelled(where + ": cancelled (" +
+                  (by_source ? "a stop was requested" : "the time limit ran out") + ")");
+}
+
+StopToken StopToken::with_deadline(Clock::time_point deadline) const {
+  StopToken t = *this;
+  if (!t.deadline_ || deadline < *t.deadline_) t.deadline_ = deadline;
+  return t;
+}
+
+double StopToken::seconds_left() const {
+  if (!deadline_) return std::numeric_limits<double>::infinity();
+  return std::chrono::duration<double>(*deadline_ - Clock::now()).count();
+}
+
+}  // namespace antipode

@@ -1,0 +1,131 @@
+#include "cell_arm.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include <btBulletCollisionCommon.h>
+
+#include "antipode/core/error.hpp"
+#include "bullet_convert.hpp"
+
+namespace antipode::cells {
+
+struct CellArm::Impl {
+  CellArmOptions options;
+  KinematicChain chain;
+  struct Shape {
+    std::size_t link = 0;  // index into the chain's links
+    std::string name;
+    Eigen::Isometry3d X_LinkShape;
+    std::unique_ptr<btCollisionShape> shape;
+  };
+  std::vector<Shape> shapes;
+};
+
+namespace {
+
+std::unique_ptr<btCollisionShape> bullet_shape(const CollisionPrimitive& p) {
+  std::unique_ptr<btCollisionShape> shape;
+  switch (p.kind) {
+    case CollisionPrimitive::Kind::kBox:
+      shape = std::make_unique<btBoxShape>(to_bullet(Eigen::Vector3d(p.size_m / 2.0)));
+      break;
+    case CollisionPrimitive::Kind::kCylinder:
+      shape = std::make_unique<btCylinderShapeZ>(
+          to_bullet(Eigen::Vector3d(p.size_m.x(), p.size_m.x(), p.size_m.y() / 2.0)));
+      break;
+    case CollisionPrimitive::Kind::kSphere:
+      shape = std::make_unique<btSphereShape>(btScalar(p.size_m.x()));
+      break;
+  }
+  shape->setMargin(0.0f);
+  return shape;
+}
+
+Eigen::VectorXd to_vector(const std::vector<double>& q) {
+  return Eigen::Map<const Eigen::VectorXd>(q.data(), Eigen::Index(q.size()));
+}
+
+}  // namespace
+
+CellArm::CellArm(const CellArmOptions& options) : impl_(std::make_unique<Impl>()) {
+  impl_->options = options;
+  const RobotModel robot = RobotModel::load(options.robot_file);
+  impl_->chain = robot.chain(robot.root_link(), options.tip);
+  const std::vector<std::string> links = impl_->chain.link_names();
+  const auto last = std::find(links.begin(), links.end(), options.last_checked);
+  if (last == links.end())
+    throw Error("arm: link '" + options.last_checked + "' is not on the chain to '" + options.tip +
+                "'");
+  // Links from the first moving joint to `last_checked` move with the arm.
+  bool moving = false;
+  for (std::size_t i = 0; i <= std::size_t(last - links.begin()); ++i) {
+    bool joint_moves = false;
+    robot.parent_link(links[i], nullptr, &joint_moves);
+    moving = moving || joint_moves;
+    if (!moving) continue;
+    for (const CollisionPrimitive& p : robot.collision_shapes(links[i]))
+      impl_->shapes.push_back({i, links[i], p.X_LinkShape, bullet_shape(p)});
+  }
+  const std::string why = check_trajectory({impl_->chain.joint_names(), {options.home_rad}, {0}});
+  if (!why.empty()) throw Error("arm: home_rad: " + why);
+}
+
+CellArm::~CellArm() = default;
+CellArm::CellArm(CellArm&&) noexcept = default;
+CellArm& CellArm::operator=(CellArm&&) noexcept = default;
+
+const std::vector<std::string>& CellArm::joint_names() const { return impl_->chain.joint_names(); }
+
+JointState CellArm::home() const { return {joint_names(), impl_->options.home_rad}; }
+
+std::string CellArm::check_trajectory(const Trajectory& t) const {
+  if (t.joint_names != joint_names()) return "the trajectory's joints are not the arm's";
+  if (t.times_s.size() != t.positions_rad.size())
+    return "the trajectory has " + std::to_string(t.times_s.size()) + " times for " +
+           std::to_string(t.positions_rad.size()) + " waypoints";
+  const auto& limits = impl_->chain.limits();
+  for (std::size_t w = 0; w < t.positions_rad.size(); ++w) {
+    const std::vector<double>& q = t.positions_rad[w];
+    if (q.size() != joint_names().size())
+      return "waypoint " + std::to_string(w) + " has " + std::to_string(q.size()) + " values for " +
+             std::to_string(joint_names().size()) + " joints";
+    for (std::size_t j = 0; j < q.size(); ++j)
+      if (!std::isfinite(q[j]) || q[j] < limits[j].lower - 1e-6 || q[j] > limits[j].upper + 1e-6)
+        return "waypoint " + std::to_string(w) + ": " + joint_names()[j] + " is outside its limits";
+  }
+  return "";
+}
+
+std::optional<ArmContact> CellArm::first_contact(const Trajectory& t,
+                                                 const PhysicsWorld& world) const {
+  const auto touched = [&](const Eigen::VectorXd& q) -> std::optional<ArmContact> {
+    const std::vector<Eigen::Isometry3d> X_BaseLink = impl_->chain.link_poses(q);
+    for (const Impl::Shape& s : impl_->shapes) {
+      for (int id : world.overlapping(X_BaseLink[s.link] * s.X_LinkShape, *s.shape)) {
+        if (world.role(id) == BodyRole::kGripper) continue;
+        return ArmContact{s.name, world.name(id), 0};
+      }
+    }
+    return std::nullopt;
+  };
+  for (std::size_t w = 0; w < t.positions_rad.size(); ++w) {
+    const Eigen::VectorXd to = to_vector(t.positions_rad[w]);
+    const Eigen::VectorXd from = w == 0 ? to : to_vector(t.positions_rad[w - 1]);
+    const double largest = (to - from).cwiseAbs().maxCoeff();
+    const int steps = std::max(1, int(std::ceil(largest / impl_->options.check_step_rad)));
+    for (int k = w == 0 ? steps : 1; k <= steps; ++k) {
+      if (auto contact = touched(from + (to - from) * (double(k) / steps))) {
+        contact->segment = w == 0 ? 0 : w - 1;
+        return contact;
+      }
+    }
+  }
+  return std::nullopt;
+}
+
+Eigen::Isometry3d CellArm::tip_pose(const std::vector<double>& q_rad) const {
+  return impl_->chain.forward(to_vector(q_rad));
+}
+
+}  // namespace antipode::cells

@@ -1,0 +1,192 @@
+#include "ompl_planner.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+
+#include "antipode/core/error.hpp"
+#include "arm_planner.hpp"
+#include "collision_pairs.hpp"
+#include "reach_check.hpp"
+
+namespace antipode::planning {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+OmplPlannerOptions read_options(const Parameters& p) {
+  OmplPlannerOptions o;
+  o.robot_file = resolve_path(p.require<std::string>("robot"), p.file());
+  o.arm_tip = p.get<std::string>("arm_tip", o.arm_tip);
+  o.points_unchecked_from = p.get<std::string>("points_unchecked_from", o.points_unchecked_from);
+  o.points_resolution_m = p.get<double>("points_resolution_m", o.points_resolution_m);
+  o.planner = p.get<std::string>("planner", o.planner);
+  o.time_limit_s = p.get<double>("time_limit_s", o.time_limit_s);
+  o.resolution_rad = p.get<double>("resolution_rad", o.resolution_rad);
+  o.ik_solutions = p.get<int>("ik_solutions", o.ik_solutions);
+  o.speed_fraction = p.get<double>("speed_fraction", o.speed_fraction);
+  o.approach.step_m = p.get<double>("approach_step_m", o.approach.step_m);
+  const auto positive = [&p](const char* key, double value) {
+    if (!(value > 0.0)) p.fail(key, std::string("'") + key + "' must be positive");
+  };
+  positive("points_resolution_m", o.points_resolution_m);
+  positive("time_limit_s", o.time_limit_s);
+  positive("resolution_rad", o.resolution_rad);
+  positive("ik_solutions", o.ik_solutions);
+  positive("approach_step_m", o.approach.step_m);
+  if (!(o.speed_fraction > 0.0 && o.speed_fraction <= 1.0))
+    p.fail("speed_fraction", "'speed_fraction' must be in (0, 1]");
+  p.reject_unknown();
+  return o;
+}
+
+RobotModel load_robot(const OmplPlannerOptions& o, const Parameters* p) {
+  try {
+    return RobotModel::load(o.robot_file);
+  } catch (const Error& e) {
+    if (p) p->fail("robot", std::string("robot: ") + e.what());
+    throw;
+  }
+}
+
+Eigen::VectorXd to_vector(const std::vector<double>& q) {
+  return Eigen::Map<const Eigen::VectorXd>(q.data(), Eigen::Index(q.size()));
+}
+
+double seconds_since(Clock::time_point t0) {
+  return std::chrono::duration<double>(Clock::now() - t0).count();
+}
+
+// A parallel gripper turned half a turn about its approach takes the same grasp.
+Eigen::Isometry3d half_turned(const Eigen::Isometry3d& X_BaseHand) {
+  Eigen::Isometry3d turned = X_BaseHand;
+  turned.linear().col(1) *= -1.0;
+  turned.linear().col(2) *= -1.0;
+  return turned;
+}
+
+PlanningStatus reach_failure(collision::ReachStatus status) {
+  switch (status) {
+    case collision::ReachStatus::kNoIkAtGrasp:
+      return PlanningStatus::kNoIkAtGrasp;
+    case collision::ReachStatus::kNoIkAtPreGrasp:
+      return PlanningStatus::kNoIkAtPreGrasp;
+    default:
+      return PlanningStatus::kGoalInCollision;
+  }
+}
+
+}  // namespace
+
+OmplPlanner::OmplPlanner(const Parameters& params) : OmplPlanner(read_options(params)) {}
+
+OmplPlanner::OmplPlanner(const OmplPlannerOptions& options)
+    : options_(options),
+      robot_(load_robot(options, nullptr)),
+      arm_(robot_.chain(robot_.root_link(), options.arm_tip)),
+      gripper_links_(collision::shaped_links_below(robot_, options.points_unchecked_from)) {}
+
+PlanningResult OmplPlanner::plan(const PlanningProblem& problem) const {
+  if (problem.grasp.frame != robot_.root_link())
+    throw Error("ompl_planner: the grasp is in frame '" + problem.grasp.frame +
+                "', the robot's base is '" + robot_.root_link() + "'");
+  PlanningResult result;
+  const Clock::time_point t0 = Clock::now();
+  if (problem.start.names != arm_.joint_names() ||
+      problem.start.positions_rad.size() != arm_.dof()) {
+    result.status = PlanningStatus::kStartInvalid;
+    result.detail = "the start state does not name the arm's joints in order";
+    return result;
+  }
+  const Eigen::VectorXd start = to_vector(problem.start.positions_rad);
+  collision::ArmCollisionWorld world(robot_, arm_);
+  if (problem.scene)
+    world.set_points(problem.scene->points_m, options_.points_resolution_m, gripper_links_);
+  if (const collision::ContactReport contact = world.check(start); !contact.free()) {
+    result.status = PlanningStatus::kStartInCollision;
+    result.detail = contact.str();
+    return result;
+  }
+
+  // The goal: collision-free IK at the grasp and pre-grasp, as given or half-turned, with a
+  // straight approach between them.
+  collision::ReachOptions reach_options;
+  reach_options.pregrasp_m = problem.standoff_m;
+  reach_options.grasp_solutions = options_.ik_solutions;
+  std::vector<Eigen::VectorXd> approach;
+  result.status = PlanningStatus::kNoIkAtGrasp;
+  for (const Eigen::Isometry3d& X :
+       {problem.grasp.X_FrameHand, half_turned(problem.grasp.X_FrameHand)}) {
+    if (problem.stop.stop_requested()) break;
+    const collision::Reach reach = collision::check_reach(arm_, world, X, start, reach_options);
+    if (reach.status != collision::ReachStatus::kReachable) {
+      if (result.status == PlanningStatus::kNoIkAtGrasp) {
+        result.status = reach_failure(reach.status);
+        result.detail = reach.detail;
+      }
+      continue;
+    }
+    if (auto states = straight_approach(arm_, world, X, problem.standoff_m, reach.q_pregrasp,
+                                        options_.approach)) {
+      approach = std::move(*states);
+      result.X_BaseHand = X;
+      break;
+    }
+    result.status = PlanningStatus::kNoApproach;
+  }
+  if (problem.stop.stop_requested()) result.status = PlanningStatus::kCancelled;
+  result.goal_s = seconds_since(t0);
+  if (approach.empty()) return result;
+
+  ArmPlanningProblem search;
+  search.arm = &arm_;
+  search.world = &world;
+  search.start = start;
+  search.goal = approach.front();
+  search.planner = options_.planner;
+  search.time_limit_s = problem.time_limit_s > 0.0 ? problem.time_limit_s : options_.time_limit_s;
+  search.resolution_rad = options_.resolution_rad;
+  search.seed = problem.seed;
+  search.stop = problem.stop;
+  const ArmPlan path = plan_arm_motion(search);
+  result.search_s = path.planning_s;
+  result.collision_checks = path.collision_checks;
+  result.simplify_s = path.shortening_s;
+  switch (path.status) {
+    case PlanStatus::kSolved:
+      break;
+    case PlanStatus::kCancelled:
+      result.status = PlanningStatus::kCancelled;
+      return result;
+    default:
+      result.status = PlanningStatus::kTimedOut;
+      result.detail = to_string(path.status);
+      return result;
+  }
+
+  // Waypoints: the path to the pre-grasp, then the approach; times at `speed_fraction` of
+  // the slowest joint's velocity limit on each segment.
+  Trajectory& t = result.trajectory;
+  t.joint_names = arm_.joint_names();
+  std::vector<Eigen::VectorXd> waypoints = path.path;
+  waypoints.insert(waypoints.end(), approach.begin() + 1, approach.end());
+  double time_s = 0.0;
+  for (std::size_t w = 0; w < waypoints.size(); ++w) {
+    if (w > 0) {
+      double slowest = 0.0;
+      for (std::size_t j = 0; j < arm_.dof(); ++j) {
+        const double speed = std::max(1e-3, arm_.limits()[j].velocity * options_.speed_fraction);
+        slowest = std::max(
+            slowest,
+            std::abs(waypoints[w][Eigen::Index(j)] - waypoints[w - 1][Eigen::Index(j)]) / speed);
+      }
+      time_s += slowest;
+    }
+    t.positions_rad.emplace_back(waypoints[w].data(), waypoints[w].data() + waypoints[w].size());
+    t.times_s.push_back(time_s);
+  }
+  result.status = PlanningStatus::kSolved;
+  return result;
+}
+
+}  // namespace antipode::planning

@@ -1,0 +1,48 @@
+#pragma once
+// The ompl_planner component (MotionPlanner): plans Baxter's (or any URDF arm's) motion to a
+// grasp - collision-free IK at the grasp and the pre-grasp (reach_check.hpp), an OMPL path
+// from the start state to the pre-grasp (arm_planner.hpp), then the straight approach
+// (straight_approach.hpp). See docs/robot.md#the-ompl_planner-plugin for the parameters.
+//
+// Threads: plan() is const and builds its collision world per call; concurrent calls are
+// safe.
+
+#include <string>
+
+#include "antipode/core/parameters.hpp"
+#include "antipode/interfaces/motion_planner.hpp"
+#include "antipode/robot/robot_model.hpp"
+#include "straight_approach.hpp"
+
+namespace antipode::planning {
+
+struct OmplPlannerOptions {
+  std::string robot_file;
+  std::string arm_tip = "right_gripper";
+  std::string points_unchecked_from = "right_hand";
+  double points_resolution_m = 0.01;
+  std::string planner = "RRTConnect";
+  double time_limit_s = 1.0;
+  double resolution_rad = 0.02;
+  int ik_solutions = 12;
+  double speed_fraction = 0.5;  ///< of each joint's velocity limit, for the waypoint times
+  ApproachOptions approach;
+};
+
+class OmplPlanner final : public MotionPlanner {
+ public:
+  explicit OmplPlanner(const Parameters& params);
+  explicit OmplPlanner(const OmplPlannerOptions& options);
+
+  PlanningResult plan(const PlanningProblem& problem) const override;
+
+  const KinematicChain& arm() const { return arm_; }
+
+ private:
+  OmplPlannerOptions options_;
+  RobotModel robot_;
+  KinematicChain arm_;
+  std::vector<std::string> gripper_links_;
+};
+
+}  // namespace antipode::planning
