@@ -72,6 +72,21 @@ TEST_F(BulletCellPluginTest, RejectsBadParameters) {
             std::string::npos);
 }
 
+TEST_F(BulletCellPluginTest, RejectsBadArmParametersAtTheirKey) {
+  const std::string scene = "scene: scenes/isolated_cylinder.yaml\n";
+  EXPECT_NE(creation_error(scene + "robot: robots/nope.urdf")
+                .find("robot: robots/nope.urdf: cannot open the robot description"),
+            std::string::npos);
+  const std::string home =
+      creation_error(scene + "robot: robots/baxter/baxter.urdf\n" + "home_rad: [0, 1]");
+  EXPECT_NE(home.find("home_rad: 2 values for the 7 joints of the arm (right_s0 ... right_w2)"),
+            std::string::npos)
+      << home;
+  EXPECT_NE(home.find("test.yaml:3:"), std::string::npos) << home;  // the home_rad line
+  EXPECT_NE(creation_error(scene + "home_rad: [0, 1]").find("'home_rad' needs 'robot'"),
+            std::string::npos);
+}
+
 TEST_F(BulletCellPluginTest, ObjectsFolderReplacesTheScenesObjects) {
   const std::string ycb = std::string(ANTIPODE_TEST_DATA_DIR) + "/objects/ycb";
   if (!std::filesystem::is_directory(ycb)) GTEST_SKIP() << "no " << ycb;

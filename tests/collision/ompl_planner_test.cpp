@@ -7,6 +7,7 @@
 
 #include <gtest/gtest.h>
 
+#include "antipode/core/parameters.hpp"
 #include "antipode/robot/robot_model.hpp"
 #include "arm_collision_world.hpp"
 #include "arm_planner.hpp"
@@ -124,6 +125,22 @@ TEST(OmplPlanner, AGraspInAnotherFrameIsAnError) {
   EXPECT_NE(testing::error_of([&] {
               p.plan(problem);
             }).find("the grasp is in frame 'camera', the robot's base is 'base'"),
+            std::string::npos);
+}
+
+TEST(OmplPlanner, BadParametersNameTheirKey) {
+  const auto error = [](const std::string& yaml) {
+    return testing::error_of(
+        [&] { OmplPlanner(Parameters(YAML::Load(yaml), "component 'planner'", "trees/t.yaml")); });
+  };
+  EXPECT_NE(error("robot: robots/nope.urdf").find("robot: robots/nope.urdf: cannot open"),
+            std::string::npos);
+  const std::string tip = error("robot: " + kUrdf + "\narm_tip: right_griper");
+  EXPECT_NE(tip.find("trees/t.yaml:2:"), std::string::npos) << tip;
+  EXPECT_NE(tip.find("did you mean 'right_gripper'?"), std::string::npos) << tip;
+  EXPECT_NE(error("robot: " + kUrdf + "\ntime_limit_s: 0").find("'time_limit_s' must be positive"),
+            std::string::npos);
+  EXPECT_NE(error("robot: " + kUrdf + "\nplaner: RRT").find("did you mean 'planner'?"),
             std::string::npos);
 }
 

@@ -107,7 +107,9 @@ BulletCell::BulletCell(const Parameters& params) : scene_(scene_of(params)) {
   try {
     if (options_.arm) arm_ = std::make_shared<const CellArm>(*options_.arm);
   } catch (const Error& e) {
-    params.fail("robot", std::string("robot: ") + e.what());
+    const std::string message = e.what();
+    if (message.rfind("home_rad", 0) == 0) params.fail("home_rad", message);
+    params.fail("robot", "robot: " + message);
   }
   reset(options_.seed);
 }

@@ -67,8 +67,13 @@ CellArm::CellArm(const CellArmOptions& options) : impl_(std::make_unique<Impl>()
     for (const CollisionPrimitive& p : robot.collision_shapes(links[i]))
       impl_->shapes.push_back({i, links[i], p.X_LinkShape, bullet_shape(p)});
   }
-  const std::string why = check_trajectory({impl_->chain.joint_names(), {options.home_rad}, {0}});
-  if (!why.empty()) throw Error("arm: home_rad: " + why);
+  const std::vector<std::string>& joints = impl_->chain.joint_names();
+  if (options.home_rad.size() != joints.size())
+    throw Error("home_rad: " + std::to_string(options.home_rad.size()) + " values for the " +
+                std::to_string(joints.size()) + " joints of the arm (" + joints.front() + " ... " +
+                joints.back() + ")");
+  if (!check_trajectory({joints, {options.home_rad}, {0}}).empty())
+    throw Error("home_rad: a value is outside its joint's limits (or not finite)");
 }
 
 CellArm::~CellArm() = default;

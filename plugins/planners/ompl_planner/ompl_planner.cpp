@@ -37,16 +37,18 @@ OmplPlannerOptions read_options(const Parameters& p) {
   if (!(o.speed_fraction > 0.0 && o.speed_fraction <= 1.0))
     p.fail("speed_fraction", "'speed_fraction' must be in (0, 1]");
   p.reject_unknown();
-  return o;
-}
-
-RobotModel load_robot(const OmplPlannerOptions& o, const Parameters* p) {
+  // The robot's errors located at the key that names what is wrong.
+  const char* key = "robot";
   try {
-    return RobotModel::load(o.robot_file);
+    const RobotModel robot = RobotModel::load(o.robot_file);
+    key = "arm_tip";
+    robot.chain(robot.root_link(), o.arm_tip);
+    key = "points_unchecked_from";
+    collision::shaped_links_below(robot, o.points_unchecked_from);
   } catch (const Error& e) {
-    if (p) p->fail("robot", std::string("robot: ") + e.what());
-    throw;
+    p.fail(key, std::string(key) + ": " + e.what());
   }
+  return o;
 }
 
 Eigen::VectorXd to_vector(const std::vector<double>& q) {
@@ -76,15 +78,64 @@ PlanningStatus reach_failure(collision::ReachStatus status) {
   }
 }
 
+// Waypoints with times: each segment at `speed_fraction` of its slowest joint's velocity
+// limit.
+Trajectory timed_trajectory(const KinematicChain& arm, const std::vector<Eigen::VectorXd>& q,
+                            double speed_fraction) {
+  Trajectory t;
+  t.joint_names = arm.joint_names();
+  double time_s = 0.0;
+  for (std::size_t w = 0; w < q.size(); ++w) {
+    for (std::size_t j = 0; w > 0 && j < arm.dof(); ++j) {
+      const double speed = std::max(1e-3, arm.limits()[j].velocity * speed_fraction);
+      const auto i = Eigen::Index(j);
+      time_s = std::max(time_s, t.times_s.back() + std::abs(q[w][i] - q[w - 1][i]) / speed);
+    }
+    t.positions_rad.emplace_back(q[w].data(), q[w].data() + q[w].size());
+    t.times_s.push_back(time_s);
+  }
+  return t;
+}
+
 }  // namespace
 
 OmplPlanner::OmplPlanner(const Parameters& params) : OmplPlanner(read_options(params)) {}
 
 OmplPlanner::OmplPlanner(const OmplPlannerOptions& options)
     : options_(options),
-      robot_(load_robot(options, nullptr)),
+      robot_(RobotModel::load(options.robot_file)),
       arm_(robot_.chain(robot_.root_link(), options.arm_tip)),
       gripper_links_(collision::shaped_links_below(robot_, options.points_unchecked_from)) {}
+
+std::vector<Eigen::VectorXd> OmplPlanner::find_goal(const collision::ArmCollisionWorld& world,
+                                                    const Eigen::VectorXd& start,
+                                                    const PlanningProblem& problem,
+                                                    PlanningResult& result) const {
+  collision::ReachOptions reach_options;
+  reach_options.pregrasp_m = problem.standoff_m;
+  reach_options.grasp_solutions = options_.ik_solutions;
+  result.status = PlanningStatus::kNoIkAtGrasp;
+  for (const Eigen::Isometry3d& X :
+       {problem.grasp.X_FrameHand, half_turned(problem.grasp.X_FrameHand)}) {
+    if (problem.stop.stop_requested()) break;
+    const collision::Reach reach = collision::check_reach(arm_, world, X, start, reach_options);
+    if (reach.status != collision::ReachStatus::kReachable) {
+      if (result.status == PlanningStatus::kNoIkAtGrasp) {
+        result.status = reach_failure(reach.status);
+        result.detail = reach.detail;
+      }
+      continue;
+    }
+    if (auto states = straight_approach(arm_, world, X, problem.standoff_m, reach.q_pregrasp,
+                                        options_.approach)) {
+      result.X_BaseHand = X;
+      return std::move(*states);
+    }
+    result.status = PlanningStatus::kNoApproach;
+  }
+  if (problem.stop.stop_requested()) result.status = PlanningStatus::kCancelled;
+  return {};
+}
 
 PlanningResult OmplPlanner::plan(const PlanningProblem& problem) const {
   if (problem.grasp.frame != robot_.root_link())
@@ -107,34 +158,8 @@ PlanningResult OmplPlanner::plan(const PlanningProblem& problem) const {
     result.detail = contact.str();
     return result;
   }
-
-  // The goal: collision-free IK at the grasp and pre-grasp, as given or half-turned, with a
-  // straight approach between them.
-  collision::ReachOptions reach_options;
-  reach_options.pregrasp_m = problem.standoff_m;
-  reach_options.grasp_solutions = options_.ik_solutions;
-  std::vector<Eigen::VectorXd> approach;
-  result.status = PlanningStatus::kNoIkAtGrasp;
-  for (const Eigen::Isometry3d& X :
-       {problem.grasp.X_FrameHand, half_turned(problem.grasp.X_FrameHand)}) {
-    if (problem.stop.stop_requested()) break;
-    const collision::Reach reach = collision::check_reach(arm_, world, X, start, reach_options);
-    if (reach.status != collision::ReachStatus::kReachable) {
-      if (result.status == PlanningStatus::kNoIkAtGrasp) {
-        result.status = reach_failure(reach.status);
-        result.detail = reach.detail;
-      }
-      continue;
-    }
-    if (auto states = straight_approach(arm_, world, X, problem.standoff_m, reach.q_pregrasp,
-                                        options_.approach)) {
-      approach = std::move(*states);
-      result.X_BaseHand = X;
-      break;
-    }
-    result.status = PlanningStatus::kNoApproach;
-  }
-  if (problem.stop.stop_requested()) result.status = PlanningStatus::kCancelled;
+  // The goal (pre-grasp ... grasp), then the path from the start to its first state.
+  const std::vector<Eigen::VectorXd> approach = find_goal(world, start, problem, result);
   result.goal_s = seconds_since(t0);
   if (approach.empty()) return result;
 
@@ -152,39 +177,15 @@ PlanningResult OmplPlanner::plan(const PlanningProblem& problem) const {
   result.search_s = path.planning_s;
   result.collision_checks = path.collision_checks;
   result.simplify_s = path.shortening_s;
-  switch (path.status) {
-    case PlanStatus::kSolved:
-      break;
-    case PlanStatus::kCancelled:
-      result.status = PlanningStatus::kCancelled;
-      return result;
-    default:
-      result.status = PlanningStatus::kTimedOut;
-      result.detail = to_string(path.status);
-      return result;
+  if (path.status != PlanStatus::kSolved) {
+    result.status = path.status == PlanStatus::kCancelled ? PlanningStatus::kCancelled
+                                                          : PlanningStatus::kTimedOut;
+    result.detail = to_string(path.status);
+    return result;
   }
-
-  // Waypoints: the path to the pre-grasp, then the approach; times at `speed_fraction` of
-  // the slowest joint's velocity limit on each segment.
-  Trajectory& t = result.trajectory;
-  t.joint_names = arm_.joint_names();
   std::vector<Eigen::VectorXd> waypoints = path.path;
   waypoints.insert(waypoints.end(), approach.begin() + 1, approach.end());
-  double time_s = 0.0;
-  for (std::size_t w = 0; w < waypoints.size(); ++w) {
-    if (w > 0) {
-      double slowest = 0.0;
-      for (std::size_t j = 0; j < arm_.dof(); ++j) {
-        const double speed = std::max(1e-3, arm_.limits()[j].velocity * options_.speed_fraction);
-        slowest = std::max(
-            slowest,
-            std::abs(waypoints[w][Eigen::Index(j)] - waypoints[w - 1][Eigen::Index(j)]) / speed);
-      }
-      time_s += slowest;
-    }
-    t.positions_rad.emplace_back(waypoints[w].data(), waypoints[w].data() + waypoints[w].size());
-    t.times_s.push_back(time_s);
-  }
+  result.trajectory = timed_trajectory(arm_, waypoints, options_.speed_fraction);
   result.status = PlanningStatus::kSolved;
   return result;
 }

@@ -12,6 +12,7 @@
 #include "antipode/core/parameters.hpp"
 #include "antipode/interfaces/motion_planner.hpp"
 #include "antipode/robot/robot_model.hpp"
+#include "arm_collision_world.hpp"
 #include "straight_approach.hpp"
 
 namespace antipode::planning {
@@ -39,6 +40,13 @@ class OmplPlanner final : public MotionPlanner {
   const KinematicChain& arm() const { return arm_; }
 
  private:
+  /// The states of the straight approach, pre-grasp first, for the grasp as given or
+  /// half-turned; empty, with result.status and result.detail saying why, when neither has one.
+  std::vector<Eigen::VectorXd> find_goal(const collision::ArmCollisionWorld& world,
+                                         const Eigen::VectorXd& start,
+                                         const PlanningProblem& problem,
+                                         PlanningResult& result) const;
+
   OmplPlannerOptions options_;
   RobotModel robot_;
   KinematicChain arm_;
