@@ -72,7 +72,10 @@ nlohmann::ordered_json bench_planning_scenes(const ReachBenchOptions& o) {
       continue;  // nothing to grasp in the workspace
     }
     classifier->classify(hands, {});
-    const HandSet selection = selector->select(hands, {});
+    SelectionContext context;
+    context.scene = cloud;  // the whole capture: the arm passes outside the workspace
+    context.start = cell->arm_state();
+    const HandSet selection = selector->select(hands, context);
     bool any = false;
     for (const Hand& grasp : selection.hands) {
       if (grasp.rejection != Rejection::kNone) break;  // the grasps come first
@@ -80,7 +83,7 @@ nlohmann::ordered_json bench_planning_scenes(const ReachBenchOptions& o) {
       PlanningProblem problem;
       problem.grasp = grasp;
       problem.start = cell->arm_state();
-      problem.scene = cloud;  // the whole capture: the arm passes outside the workspace
+      problem.scene = cloud;
       problem.seed = seed;
       const PlanningResult r = planner->plan(problem);
       plans.push_back(

@@ -335,5 +335,29 @@ TEST_F(ClusterSelectorTest, WithARobotTheArmMustReachTheGrasp) {
             std::string::npos);
 }
 
+// The context's scene, not the hands' cloud, is what the arm must avoid: a wall of points
+// where the arm passes (above the grasp, outside any sampler workspace) makes the grasp
+// unreachable.
+TEST_F(ClusterSelectorTest, TheArmAvoidsTheContextsScene) {
+  const std::string robot = std::string(ANTIPODE_TEST_SOURCE_DIR) + "/robots/baxter/baxter.urdf";
+  HandSet set = on_table({top_down(0.72, -0.2, -0.17, 1.0)});
+  set.support->offset = 0.295f;
+  auto empty = std::make_shared<Cloud>();
+  empty->frame = "base";
+  set.cloud = empty;
+  const auto selector = create("min_cluster_size: 1\nrobot: " + robot);
+  ASSERT_EQ(grasp_count(selector->select(set, {})), 1u);
+  auto ceiling = std::make_shared<Cloud>();  // a sheet of points 15 cm above the palm face
+  ceiling->frame = "base";
+  for (double x = 0.4; x <= 1.1; x += 0.01)
+    for (double y = -0.6; y <= 0.3; y += 0.01)
+      ceiling->points_m.emplace_back(float(x), float(y), -0.02f);
+  SelectionContext context;
+  context.scene = ceiling;
+  const HandSet blocked = selector->select(set, context);
+  EXPECT_EQ(grasp_count(blocked), 0u);
+  EXPECT_EQ(blocked.hands.front().rejection, Rejection::kInCollision);
+}
+
 }  // namespace
 }  // namespace antipode

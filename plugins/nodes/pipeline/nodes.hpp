@@ -12,6 +12,7 @@ void register_sample_hands(bt::NodeRegistry& registry);
 void register_classify_hands(bt::NodeRegistry& registry);
 void register_select_grasps(bt::NodeRegistry& registry);
 void register_plan_reach(bt::NodeRegistry& registry);
+void register_read_arm_state(bt::NodeRegistry& registry);
 void register_execute_grasp(bt::NodeRegistry& registry);
 void register_write_grasps(bt::NodeRegistry& registry);
 void register_read_grasps(bt::NodeRegistry& registry);

@@ -12,6 +12,7 @@ const antipode::PluginFactory kFactories[] = {
     {"node", "ClassifyHands", "scores and labels hands", nullptr, &register_classify_hands},
     {"node", "SelectGrasps", "ranks grasps", nullptr, &register_select_grasps},
     {"node", "PlanReach", "plans an arm motion to a grasp", nullptr, &register_plan_reach},
+    {"node", "ReadArmState", "reads a cell's arm state", nullptr, &register_read_arm_state},
     {"node", "ExecuteGrasp", "executes a grasp in a cell", nullptr, &register_execute_grasp},
     {"node", "WriteGrasps", "writes hands to JSON", nullptr, &register_write_grasps},
     {"node", "ReadGrasps", "reads hands from JSON", nullptr, &register_read_grasps},

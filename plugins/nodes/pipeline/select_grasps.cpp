@@ -14,6 +14,12 @@ class SelectGrasps final : public bt::SyncActionNode {
             bt::NodeCategory::kAction,
             {bt::component_port<GraspSelector>("selector", "the grasp selector to use"),
              bt::input_port<HandSetPtr>("hands", "classified hands"),
+             bt::input_port<CloudPtr>("scene", CloudPtr(),
+                                      "the points a robot arm must avoid, in its base frame "
+                                      "(the whole capture); default: the hands' cloud"),
+             bt::input_port<JointState>("start", JointState{},
+                                        "the arm's joint state (an arm's reach is judged from "
+                                        "it); default: none"),
              bt::output_port<HandSetPtr>(
                  "grasps",
                  "the selection: grasps to try first, best first, then every other "
@@ -27,8 +33,12 @@ class SelectGrasps final : public bt::SyncActionNode {
 
  protected:
   bt::Status tick() override {
+    SelectionContext context;
+    context.scene = get_input<CloudPtr>("scene");
+    context.start = get_input<JointState>("start");
+    context.stop = stop_token();
     auto selection = std::make_shared<const HandSet>(
-        component<GraspSelector>("selector").select(*get_input<HandSetPtr>("hands"), stop_token()));
+        component<GraspSelector>("selector").select(*get_input<HandSetPtr>("hands"), context));
     std::size_t chosen = 0;
     while (chosen < selection->hands.size() &&
            selection->hands[chosen].rejection == Rejection::kNone)

@@ -14,6 +14,7 @@
 
 #include "antipode/core/cloud.hpp"
 #include "antipode/core/hand.hpp"
+#include "antipode/core/trajectory.hpp"
 #include "antipode/robot/robot_model.hpp"
 #include "arm_collision_world.hpp"
 #include "reach_check.hpp"
@@ -40,8 +41,10 @@ class ArmReach {
   /// kNone when the arm reaches `grasp` (as it is or turned half a turn about its approach:
   /// the same grasp for a parallel gripper) and its pre-grasp `standoff_m` back, else kNoIk,
   /// kNoIkAtPreGrasp or kInCollision (the status of the grasp as it is).
-  Rejection check(const collision::ArmCollisionWorld& world, const Hand& grasp,
-                  double standoff_m) const;
+  /// The IK search starts from `start` when it names the arm's joints, else from the middle
+  /// of the joint ranges.
+  Rejection check(const collision::ArmCollisionWorld& world, const Hand& grasp, double standoff_m,
+                  const JointState& start = {}) const;
 
  private:
   ArmReachOptions options_;

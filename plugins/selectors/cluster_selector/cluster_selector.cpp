@@ -56,7 +56,7 @@ ClusterSelector::ClusterSelector(const Parameters& params)
   }
 }
 
-HandSet ClusterSelector::select(const HandSet& in, const StopToken& stop) const {
+HandSet ClusterSelector::select(const HandSet& in, const SelectionContext& context) const {
   if (!in.cloud) throw Error("cluster_selector: the hand set has no cloud");
   const HandGeometry& g = in.geometry;
   std::optional<SupportPlane> support = in.support;
@@ -133,8 +133,8 @@ HandSet ClusterSelector::select(const HandSet& in, const StopToken& stop) const 
   std::optional<collision::ArmCollisionWorld> arm_world;
   const auto arm_rejection = [&](const Hand& grasp) {
     if (!arm_) return Rejection::kNone;
-    if (!arm_world) arm_world.emplace(arm_->world_for(*in.cloud));
-    return arm_->check(*arm_world, grasp, options_.standoff_m);
+    if (!arm_world) arm_world.emplace(arm_->world_for(context.scene ? *context.scene : *in.cloud));
+    return arm_->check(*arm_world, grasp, options_.standoff_m, context.start);
   };
 
   // The kept grasps first, then the proposals not kept, then the input hands.
@@ -142,7 +142,7 @@ HandSet ClusterSelector::select(const HandSet& in, const StopToken& stop) const 
   std::vector<std::pair<const Proposal*, bool>> placed;  // proposal, kept?
   bool balanced_kept = false;
   for (const Proposal& p : proposals) {
-    stop.throw_if_stop_requested("cluster_selector");
+    context.stop.throw_if_stop_requested("cluster_selector");
     Hand grasp = p.grasp;
     grasp.rejection = Rejection::kNone;
     if (unbalanced(p) && balanced_kept)

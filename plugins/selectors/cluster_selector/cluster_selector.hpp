@@ -34,7 +34,7 @@ class ClusterSelector final : public GraspSelector {
   /// first `max_grasps` whose way in is free (and, with a robot, that the arm reaches) are
   /// the grasps. See GraspSelector::select for
   /// the layout of the result.
-  HandSet select(const HandSet& hands, const StopToken& stop) const override;
+  HandSet select(const HandSet& hands, const SelectionContext& context) const override;
 
  private:
   SelectionOptions options_;

@@ -3,11 +3,25 @@
 /// GraspSelector: chooses and ranks the grasps to try from classified hands (paper
 /// section 5.1), keeping the reason for every hand it drops.
 
+#include "antipode/core/cloud.hpp"
 #include "antipode/core/stop_token.hpp"
+#include "antipode/core/trajectory.hpp"
 #include "antipode/interfaces/component.hpp"
 #include "antipode/interfaces/hand_set.hpp"
 
 namespace antipode {
+
+/// What a selector may know besides the hands. Everything is optional: a selector for a
+/// free-floating hand needs none of it.
+struct SelectionContext {
+  /// The observed points a robot arm must avoid, in the robot's base frame (the whole
+  /// capture, which reaches beyond the sampler's workspace); null: the hands' cloud.
+  CloudPtr scene;
+  /// The arm's joint state now (Cell::arm_state()), from which its reach is judged; empty:
+  /// the selector's own choice.
+  JointState start;
+  StopToken stop;  ///< cancellation
+};
 
 class GraspSelector : public Component {
  public:
@@ -23,8 +37,8 @@ class GraspSelector : public Component {
   /// No grasp at the front means none was found (not an error). Hands with a rejection or
   /// a label other than kPositive or kUnknown are never chosen. Deterministic; may be called
   /// concurrently. Throws antipode::Error only for unusable input (a set without a cloud),
-  /// and Cancelled when `stop` asks to stop.
-  virtual HandSet select(const HandSet& hands, const StopToken& stop) const = 0;
+  /// and Cancelled when `context.stop` asks to stop.
+  virtual HandSet select(const HandSet& hands, const SelectionContext& context) const = 0;
 };
 
 }  // namespace antipode
