@@ -80,6 +80,44 @@ TEST(ReachCheck, AGraspBehindTheBoxWallIsRejectedWithTheWallNamed) {
   EXPECT_NE(reach.detail.find("with near_wall"), std::string::npos) << reach.detail;
 }
 
+// A hand at `position` approaching along `approach`, closing horizontally, as given or
+// turned half a turn about the approach (the same grasp for a parallel gripper).
+bool reachable(const KinematicChain& arm, const ArmCollisionWorld& world,
+               const Eigen::Vector3d& position, const Eigen::Vector3d& approach) {
+  Eigen::Isometry3d X = Eigen::Isometry3d::Identity();
+  const Eigen::Vector3d a = approach.normalized();
+  const Eigen::Vector3d closing = std::abs(a.z()) > 0.9
+                                      ? Eigen::Vector3d::UnitY()
+                                      : Eigen::Vector3d::UnitZ().cross(a).normalized();
+  X.linear().col(0) = a;
+  X.linear().col(1) = closing;
+  X.linear().col(2) = a.cross(closing);
+  X.translation() = position;
+  Eigen::Isometry3d turned = X;
+  turned.linear().col(1) *= -1.0;
+  turned.linear().col(2) *= -1.0;
+  return check_reach(arm, world, X, arm.mid_range()).status == ReachStatus::kReachable ||
+         check_reach(arm, world, turned, arm.mid_range()).status == ReachStatus::kReachable;
+}
+
+// Over the isolation region (docs/robot.md): from above the arm reaches the object whichever
+// way the fingers close; horizontally only from its own side, not from the far side.
+TEST(ReachCheck, OverTheIsolationRegionFromAboveAndFromTheNearSideOnly) {
+  const KinematicChain arm = baxter().chain("base", "right_gripper");
+  const ArmCollisionWorld world(baxter(), arm);
+  const Eigen::Vector3d object(0.71, -0.13, -0.21);
+  for (int yaw_deg = 0; yaw_deg < 180; yaw_deg += 30) {
+    const double yaw = yaw_deg * M_PI / 180.0;
+    Eigen::Isometry3d X = hand_at(object, -Eigen::Vector3d::UnitZ());
+    X.linear() = X.linear() * Eigen::AngleAxisd(yaw, Eigen::Vector3d::UnitX());
+    EXPECT_EQ(check_reach(arm, world, X, arm.mid_range()).status, ReachStatus::kReachable)
+        << "from above, closing at " << yaw_deg << " deg";
+  }
+  EXPECT_TRUE(reachable(arm, world, object, Eigen::Vector3d::UnitX()));    // away from the robot
+  EXPECT_FALSE(reachable(arm, world, object, -Eigen::Vector3d::UnitX()));  // towards it
+  EXPECT_FALSE(reachable(arm, world, object, Eigen::Vector3d::UnitY()));   // from its right
+}
+
 TEST(ReachCheck, AGraspBeyondTheArmHasNoIk) {
   const KinematicChain arm = baxter().chain("base", "right_gripper");
   const ArmCollisionWorld world(baxter(), arm);
