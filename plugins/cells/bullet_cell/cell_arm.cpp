@@ -114,14 +114,17 @@ std::optional<ArmContact> CellArm::first_contact(const Trajectory& t,
     }
     return std::nullopt;
   };
-  for (std::size_t w = 0; w < t.positions_rad.size(); ++w) {
+  if (t.empty()) return std::nullopt;
+  if (auto contact = touched(to_vector(t.positions_rad.front()))) return contact;
+  // Each segment from its start (already checked) to its end, every check_step_rad.
+  for (std::size_t w = 1; w < t.positions_rad.size(); ++w) {
+    const Eigen::VectorXd from = to_vector(t.positions_rad[w - 1]);
     const Eigen::VectorXd to = to_vector(t.positions_rad[w]);
-    const Eigen::VectorXd from = w == 0 ? to : to_vector(t.positions_rad[w - 1]);
     const double largest = (to - from).cwiseAbs().maxCoeff();
     const int steps = std::max(1, int(std::ceil(largest / impl_->options.check_step_rad)));
-    for (int k = w == 0 ? steps : 1; k <= steps; ++k) {
+    for (int k = 1; k <= steps; ++k) {
       if (auto contact = touched(from + (to - from) * (double(k) / steps))) {
-        contact->segment = w == 0 ? 0 : w - 1;
+        contact->segment = w - 1;
         return contact;
       }
     }
