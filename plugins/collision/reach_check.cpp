@@ -22,6 +22,13 @@ const char* to_string(ReachStatus status) {
   return "?";
 }
 
+Eigen::Isometry3d half_turned(const Eigen::Isometry3d& X_BaseHand) {
+  Eigen::Isometry3d turned = X_BaseHand;
+  turned.linear().col(1) *= -1.0;
+  turned.linear().col(2) *= -1.0;
+  return turned;
+}
+
 Reach check_reach(const KinematicChain& arm, const ArmCollisionWorld& world,
                   const Eigen::Isometry3d& X_BaseHand, const Eigen::VectorXd& q_seed,
                   const ReachOptions& options) {

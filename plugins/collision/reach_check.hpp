@@ -43,6 +43,10 @@ struct Reach {
   std::string detail;          ///< the contact behind a kInCollision status
 };
 
+/// The same grasp for a parallel gripper turned half a turn about its approach (closing and
+/// hand axis reversed): the fingers swap places, the wrist stands elsewhere.
+Eigen::Isometry3d half_turned(const Eigen::Isometry3d& X_BaseHand);
+
 /// Tries up to `grasp_solutions` distinct IK solutions at the grasp (from `q_seed`); for each
 /// free one, solves the pre-grasp from it (as many solutions) and takes the free one nearest
 /// to it. Returns the

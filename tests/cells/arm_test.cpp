@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include "antipode/core/parameters.hpp"
+#include "antipode/core/trajectory.hpp"
 #include "antipode/robot/inverse_kinematics.hpp"
 #include "antipode/robot/robot_model.hpp"
 #include "bullet_cell.hpp"
@@ -31,12 +32,10 @@ BulletCell arm_cell(bool with_arm = true) {
 std::vector<double> ik(const Eigen::Isometry3d& X, const std::vector<double>& seed) {
   static const RobotModel robot = RobotModel::load(kUrdf);
   static const KinematicChain arm = robot.chain("base", "right_gripper");
-  const IkResult result =
-      solve_ik(arm, X, Eigen::Map<const Eigen::VectorXd>(seed.data(), Eigen::Index(seed.size())));
+  const IkResult result = solve_ik(arm, X, joint_vector(seed));
   EXPECT_FALSE(result.solutions.empty());
   if (result.solutions.empty()) return seed;
-  const Eigen::VectorXd& q = result.solutions.front();
-  return {q.data(), q.data() + q.size()};
+  return joint_values(result.solutions.front());
 }
 
 // home -> `hand` moved `back_m` back along its approach -> `hand`.

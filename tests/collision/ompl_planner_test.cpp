@@ -47,10 +47,6 @@ std::shared_ptr<Cloud> table_at(double z) {
   return cloud;
 }
 
-Eigen::VectorXd q_of(const std::vector<double>& q) {
-  return Eigen::Map<const Eigen::VectorXd>(q.data(), Eigen::Index(q.size()));
-}
-
 TEST(OmplPlanner, ReachesAGraspFromHomeWithAStraightApproach) {
   const OmplPlanner p = planner();
   PlanningProblem problem;
@@ -67,13 +63,13 @@ TEST(OmplPlanner, ReachesAGraspFromHomeWithAStraightApproach) {
   EXPECT_EQ(t.positions_rad.front(), problem.start.positions_rad);
   for (std::size_t w = 1; w < t.times_s.size(); ++w) EXPECT_GE(t.times_s[w], t.times_s[w - 1]);
   // The end is the grasp (or the grasp turned half a turn about its approach).
-  const Eigen::Isometry3d X_end = p.arm().forward(q_of(t.positions_rad.back()));
+  const Eigen::Isometry3d X_end = p.arm().forward(joint_vector(t.positions_rad.back()));
   EXPECT_LT((X_end.translation() - problem.grasp.position_m()).norm(), 1e-4);
   EXPECT_LT((X_end.linear().col(0) - problem.grasp.approach()).norm(), 1e-4);
   EXPECT_TRUE(result.X_BaseHand.isApprox(X_end, 1e-3));
   // The last 10 cm: the hand moves straight down along its approach.
   for (std::size_t w = t.positions_rad.size() - 10; w < t.positions_rad.size(); ++w) {
-    const Eigen::Vector3d at = p.arm().forward(q_of(t.positions_rad[w])).translation();
+    const Eigen::Vector3d at = p.arm().forward(joint_vector(t.positions_rad[w])).translation();
     EXPECT_LT(std::hypot(at.x() - 0.72, at.y() + 0.15), 1e-3) << "waypoint " << w;
   }
   // Never through the table, checked at a quarter of the planning resolution.
@@ -83,8 +79,8 @@ TEST(OmplPlanner, ReachesAGraspFromHomeWithAStraightApproach) {
       problem.scene->points_m, 0.01,
       {"right_hand", "right_gripper_base", "right_gripper_l_finger", "right_gripper_r_finger"});
   for (std::size_t w = 0; w + 1 < t.positions_rad.size(); ++w)
-    EXPECT_TRUE(
-        segment_is_free(world, q_of(t.positions_rad[w]), q_of(t.positions_rad[w + 1]), 0.005))
+    EXPECT_TRUE(segment_is_free(world, joint_vector(t.positions_rad[w]),
+                                joint_vector(t.positions_rad[w + 1]), 0.005))
         << "segment " << w;
 }
 

@@ -93,11 +93,8 @@ bool reachable(const KinematicChain& arm, const ArmCollisionWorld& world,
   X.linear().col(1) = closing;
   X.linear().col(2) = a.cross(closing);
   X.translation() = position;
-  Eigen::Isometry3d turned = X;
-  turned.linear().col(1) *= -1.0;
-  turned.linear().col(2) *= -1.0;
   return check_reach(arm, world, X, arm.mid_range()).status == ReachStatus::kReachable ||
-         check_reach(arm, world, turned, arm.mid_range()).status == ReachStatus::kReachable;
+         check_reach(arm, world, half_turned(X), arm.mid_range()).status == ReachStatus::kReachable;
 }
 
 // Over the isolation region (docs/robot.md): from above the arm reaches the object whichever

@@ -144,6 +144,32 @@ trees:
   tree.remove_observer(&failures);
 }
 
+TEST_F(PipelineNodesTest, ARequestToStopTheTreeStopsAPlannerCall) {
+  bt::Tree tree = load(R"(
+components:
+  cell: { plugin: line_cell, points: 5 }
+  sampler: { plugin: point_sampler }
+  selector: { plugin: best_first }
+  planner: { plugin: endless_planner }
+main: pick
+trees:
+  pick:
+    Sequence:
+      - CaptureCloud: { cell: cell, cloud: "{cloud}" }
+      - SampleHands: { sampler: sampler, cloud: "{cloud}", hands: "{hands}" }
+      - SelectGrasps: { selector: selector, hands: "{hands}", grasps: "{grasps}" }
+      - PlanReach: { name: reach, planner: planner, cell: cell, grasps: "{grasps}" }
+)");
+  tree.request_stop();  // e.g. from a signal handler; the endless planner sees it
+  EXPECT_EQ(tree.tick_while_running(), bt::Status::kFailure);
+  const bt::Node* reach = nullptr;
+  tree.visit([&](const bt::Node& node, int) {
+    if (node.name() == "reach") reach = &node;
+  });
+  ASSERT_NE(reach, nullptr);
+  EXPECT_EQ(reach->failure_reason(), "planning cancelled");
+}
+
 TEST_F(PipelineNodesTest, GraspsWrittenAndReadBackKeepTheirPoses) {
   const std::string file =
       (std::filesystem::temp_directory_path() / ("grasps_" + std::to_string(::getpid()) + ".json"))

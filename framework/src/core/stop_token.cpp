@@ -1,7 +1,5 @@
 #include "antipode/core/stop_token.hpp"
 
-#include <limits>
-
 namespace antipode {
 
 void StopToken::throw_if_stop_requested(const std::string& where) const {
@@ -15,11 +13,6 @@ StopToken StopToken::with_deadline(Clock::time_point deadline) const {
   StopToken t = *this;
   if (!t.deadline_ || deadline < *t.deadline_) t.deadline_ = deadline;
   return t;
-}
-
-double StopToken::seconds_left() const {
-  if (!deadline_) return std::numeric_limits<double>::infinity();
-  return std::chrono::duration<double>(*deadline_ - Clock::now()).count();
 }
 
 }  // namespace antipode

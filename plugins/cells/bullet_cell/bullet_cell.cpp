@@ -106,10 +106,10 @@ BulletCell::BulletCell(const Parameters& params) : scene_(scene_of(params)) {
   params.reject_unknown();
   try {
     if (options_.arm) arm_ = std::make_shared<const CellArm>(*options_.arm);
+  } catch (const CellArm::HomeError& e) {
+    params.fail("home_rad", e.what());
   } catch (const Error& e) {
-    const std::string message = e.what();
-    if (message.rfind("home_rad", 0) == 0) params.fail("home_rad", message);
-    params.fail("robot", "robot: " + message);
+    params.fail("robot", std::string("robot: ") + e.what());
   }
   reset(options_.seed);
 }

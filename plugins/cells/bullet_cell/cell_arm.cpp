@@ -42,10 +42,6 @@ std::unique_ptr<btCollisionShape> bullet_shape(const CollisionPrimitive& p) {
   return shape;
 }
 
-Eigen::VectorXd to_vector(const std::vector<double>& q) {
-  return Eigen::Map<const Eigen::VectorXd>(q.data(), Eigen::Index(q.size()));
-}
-
 }  // namespace
 
 CellArm::CellArm(const CellArmOptions& options) : impl_(std::make_unique<Impl>()) {
@@ -69,11 +65,11 @@ CellArm::CellArm(const CellArmOptions& options) : impl_(std::make_unique<Impl>()
   }
   const std::vector<std::string>& joints = impl_->chain.joint_names();
   if (options.home_rad.size() != joints.size())
-    throw Error("home_rad: " + std::to_string(options.home_rad.size()) + " values for the " +
-                std::to_string(joints.size()) + " joints of the arm (" + joints.front() + " ... " +
-                joints.back() + ")");
+    throw HomeError("home_rad: " + std::to_string(options.home_rad.size()) + " values for the " +
+                    std::to_string(joints.size()) + " joints of the arm (" + joints.front() +
+                    " ... " + joints.back() + ")");
   if (!check_trajectory({joints, {options.home_rad}, {0}}).empty())
-    throw Error("home_rad: a value is outside its joint's limits (or not finite)");
+    throw HomeError("home_rad: a value is outside its joint's limits (or not finite)");
 }
 
 CellArm::~CellArm() = default;
@@ -115,11 +111,11 @@ std::optional<ArmContact> CellArm::first_contact(const Trajectory& t,
     return std::nullopt;
   };
   if (t.empty()) return std::nullopt;
-  if (auto contact = touched(to_vector(t.positions_rad.front()))) return contact;
+  if (auto contact = touched(joint_vector(t.positions_rad.front()))) return contact;
   // Each segment from its start (already checked) to its end, every check_step_rad.
   for (std::size_t w = 1; w < t.positions_rad.size(); ++w) {
-    const Eigen::VectorXd from = to_vector(t.positions_rad[w - 1]);
-    const Eigen::VectorXd to = to_vector(t.positions_rad[w]);
+    const Eigen::VectorXd from = joint_vector(t.positions_rad[w - 1]);
+    const Eigen::VectorXd to = joint_vector(t.positions_rad[w]);
     const double largest = (to - from).cwiseAbs().maxCoeff();
     const int steps = std::max(1, int(std::ceil(largest / impl_->options.check_step_rad)));
     for (int k = 1; k <= steps; ++k) {
@@ -133,7 +129,7 @@ std::optional<ArmContact> CellArm::first_contact(const Trajectory& t,
 }
 
 Eigen::Isometry3d CellArm::tip_pose(const std::vector<double>& q_rad) const {
-  return impl_->chain.forward(to_vector(q_rad));
+  return impl_->chain.forward(joint_vector(q_rad));
 }
 
 }  // namespace antipode::cells

@@ -15,6 +15,7 @@
 
 #include <Eigen/Geometry>
 
+#include "antipode/core/error.hpp"
 #include "antipode/core/trajectory.hpp"
 #include "antipode/robot/robot_model.hpp"
 #include "physics_world.hpp"
@@ -40,8 +41,14 @@ struct ArmContact {
 
 class CellArm {
  public:
-  /// Throws antipode::Error for an unreadable URDF, an unknown link, or a home
-  /// configuration of the wrong size or outside the joint limits.
+  /// The home configuration does not suit the arm (`home_rad`'s fault, not the robot's).
+  class HomeError : public Error {
+   public:
+    using Error::Error;
+  };
+
+  /// Throws antipode::Error for an unreadable URDF or an unknown link, and HomeError for a
+  /// home configuration of the wrong size or outside the joint limits.
   explicit CellArm(const CellArmOptions& options);
   ~CellArm();
   CellArm(CellArm&&) noexcept;

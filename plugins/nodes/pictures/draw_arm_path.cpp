@@ -18,12 +18,12 @@ Eigen::VectorXd at_fraction(const Trajectory& t, double s) {
   const double index = s * double(t.positions_rad.size() - 1);
   const std::size_t i = std::min(std::size_t(index), t.positions_rad.size() - 1);
   const std::size_t j = std::min(i + 1, t.positions_rad.size() - 1);
-  const auto q = [&](std::size_t k) {
-    return Eigen::Map<const Eigen::VectorXd>(t.positions_rad[k].data(),
-                                             Eigen::Index(t.positions_rad[k].size()));
-  };
-  return q(i) + (q(j) - q(i)) * (index - double(i));
+  const Eigen::VectorXd qi = joint_vector(t.positions_rad[i]);
+  return qi + (joint_vector(t.positions_rad[j]) - qi) * (index - double(i));
 }
+
+// Where along the motion the k-th of `poses` drawn arms stands: 0 (start) to 1 (grasp).
+double fraction(int k, int poses) { return poses == 1 ? 1.0 : double(k) / (poses - 1); }
 
 // The index of the first of `links` (a chain, base to tip) that a moving joint carries.
 std::size_t first_moving_link(const RobotModel& robot, const std::vector<std::string>& links) {
@@ -111,23 +111,29 @@ class DrawArmPath final : public bt::SyncActionNode {
     const OrthoView side(Eigen::Vector3d::UnitY(), Eigen::Vector3d::UnitZ(), centre, 0.75, size_px);
     const OrthoView above(-Eigen::Vector3d::UnitZ(), Eigen::Vector3d::UnitX(), centre, 0.75,
                           size_px);
+    // The links' shapes, and their poses at each drawn point of the motion (the fixed links
+    // before the first moving joint are the same in all).
+    const std::vector<std::string> links = arm.link_names();
+    std::vector<std::vector<CollisionPrimitive>> shapes;
+    for (const std::string& link : links) shapes.push_back(robot.collision_shapes(link));
+    const std::size_t first_moving = first_moving_link(robot, links);
+    std::vector<std::vector<Eigen::Isometry3d>> X_BaseLink;
+    for (int k = 0; k < poses; ++k)
+      X_BaseLink.push_back(arm.link_poses(at_fraction(trajectory, fraction(k, poses))));
+
     cv::Mat image(size_px, 2 * size_px, CV_8UC3, cv::Scalar(255, 255, 255));
     cv::Mat left = image(cv::Rect(0, 0, size_px, size_px));
     cv::Mat right = image(cv::Rect(size_px, 0, size_px, size_px));
     for (auto* panel : {&left, &right}) {
       const OrthoView& view = panel == &left ? side : above;
       draw_cloud(*panel, view, *set->cloud);
-      const std::vector<std::string> links = arm.link_names();
-      const std::size_t first_moving = first_moving_link(robot, links);
-      const std::vector<Eigen::Isometry3d> X0 = arm.link_poses(at_fraction(trajectory, 0.0));
       for (std::size_t i = 0; i < first_moving; ++i)
-        draw_link(*panel, view, robot.collision_shapes(links[i]), X0[i], cv::Scalar(150, 150, 150));
+        draw_link(*panel, view, shapes[i], X_BaseLink[0][i], cv::Scalar(150, 150, 150));
       for (int k = 0; k < poses; ++k) {
-        const double s = poses == 1 ? 1.0 : double(k) / (poses - 1);
-        const std::vector<Eigen::Isometry3d> X = arm.link_poses(at_fraction(trajectory, s));
+        const double s = fraction(k, poses);
         const cv::Scalar colour(230 - 200 * s, 180 - 150 * s, 60 + 140 * s);  // BGR
         for (std::size_t i = first_moving; i < links.size(); ++i)
-          draw_link(*panel, view, robot.collision_shapes(links[i]), X[i], colour);
+          draw_link(*panel, view, shapes[i], X_BaseLink[std::size_t(k)][i], colour);
       }
       Hand grasp;
       grasp.X_FrameHand = X_end;

@@ -37,7 +37,8 @@ class PlanReach final : public bt::SyncActionNode {
                                       "base frame (the whole capture); default: the "
                                       "selection's cloud"),
              bt::input_port<int>("max_grasps", 3, "how many of the selection's grasps to try"),
-             bt::input_port<double>("time_limit_s", 1.0, "the search's limit per grasp"),
+             bt::input_port<double>("time_limit_s", 0.0,
+                                    "the search's limit per grasp; 0: the planner's own"),
              bt::input_port<double>("standoff_m", 0.10, "the pre-grasp, back along the approach"),
              bt::output_port<Trajectory>("trajectory", "the planned motion"),
              bt::output_port<HandSetPtr>(

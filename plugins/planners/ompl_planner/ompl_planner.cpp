@@ -51,20 +51,8 @@ OmplPlannerOptions read_options(const Parameters& p) {
   return o;
 }
 
-Eigen::VectorXd to_vector(const std::vector<double>& q) {
-  return Eigen::Map<const Eigen::VectorXd>(q.data(), Eigen::Index(q.size()));
-}
-
 double seconds_since(Clock::time_point t0) {
   return std::chrono::duration<double>(Clock::now() - t0).count();
-}
-
-// A parallel gripper turned half a turn about its approach takes the same grasp.
-Eigen::Isometry3d half_turned(const Eigen::Isometry3d& X_BaseHand) {
-  Eigen::Isometry3d turned = X_BaseHand;
-  turned.linear().col(1) *= -1.0;
-  turned.linear().col(2) *= -1.0;
-  return turned;
 }
 
 PlanningStatus reach_failure(collision::ReachStatus status) {
@@ -91,7 +79,7 @@ Trajectory timed_trajectory(const KinematicChain& arm, const std::vector<Eigen::
       const auto i = Eigen::Index(j);
       time_s = std::max(time_s, t.times_s.back() + std::abs(q[w][i] - q[w - 1][i]) / speed);
     }
-    t.positions_rad.emplace_back(q[w].data(), q[w].data() + q[w].size());
+    t.positions_rad.push_back(joint_values(q[w]));
     t.times_s.push_back(time_s);
   }
   return t;
@@ -107,6 +95,18 @@ OmplPlanner::OmplPlanner(const OmplPlannerOptions& options)
       arm_(robot_.chain(robot_.root_link(), options.arm_tip)),
       gripper_links_(collision::shaped_links_below(robot_, options.points_unchecked_from)) {}
 
+std::shared_ptr<const collision::ArmCollisionWorld> OmplPlanner::world_for(
+    const CloudPtr& scene) const {
+  const std::lock_guard<std::mutex> lock(cache_mutex_);
+  if (!cached_world_ || scene != cached_scene_) {
+    auto world = std::make_shared<collision::ArmCollisionWorld>(robot_, arm_);
+    if (scene) world->set_points(scene->points_m, options_.points_resolution_m, gripper_links_);
+    cached_scene_ = scene;  // held, so that its address is not reused while cached
+    cached_world_ = std::move(world);
+  }
+  return cached_world_;
+}
+
 std::vector<Eigen::VectorXd> OmplPlanner::find_goal(const collision::ArmCollisionWorld& world,
                                                     const Eigen::VectorXd& start,
                                                     const PlanningProblem& problem,
@@ -116,7 +116,7 @@ std::vector<Eigen::VectorXd> OmplPlanner::find_goal(const collision::ArmCollisio
   reach_options.grasp_solutions = options_.ik_solutions;
   result.status = PlanningStatus::kNoIkAtGrasp;
   for (const Eigen::Isometry3d& X :
-       {problem.grasp.X_FrameHand, half_turned(problem.grasp.X_FrameHand)}) {
+       {problem.grasp.X_FrameHand, collision::half_turned(problem.grasp.X_FrameHand)}) {
     if (problem.stop.stop_requested()) break;
     const collision::Reach reach = collision::check_reach(arm_, world, X, start, reach_options);
     if (reach.status != collision::ReachStatus::kReachable) {
@@ -149,10 +149,9 @@ PlanningResult OmplPlanner::plan(const PlanningProblem& problem) const {
     result.detail = "the start state does not name the arm's joints in order";
     return result;
   }
-  const Eigen::VectorXd start = to_vector(problem.start.positions_rad);
-  collision::ArmCollisionWorld world(robot_, arm_);
-  if (problem.scene)
-    world.set_points(problem.scene->points_m, options_.points_resolution_m, gripper_links_);
+  const Eigen::VectorXd start = joint_vector(problem.start.positions_rad);
+  const std::shared_ptr<const collision::ArmCollisionWorld> shared_world = world_for(problem.scene);
+  const collision::ArmCollisionWorld& world = *shared_world;
   if (const collision::ContactReport contact = world.check(start); !contact.free()) {
     result.status = PlanningStatus::kStartInCollision;
     result.detail = contact.str();

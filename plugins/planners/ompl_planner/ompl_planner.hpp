@@ -4,9 +4,12 @@
 // from the start state to the pre-grasp (arm_planner.hpp), then the straight approach
 // (straight_approach.hpp). See docs/robot.md#the-ompl_planner-plugin for the parameters.
 //
-// Threads: plan() is const and builds its collision world per call; concurrent calls are
-// safe.
+// Threads: plan() is const; concurrent calls are safe. The collision world of the last scene
+// planned in (the robot and the scene's octree) is kept, under a mutex, for the next call on
+// the same scene: a selection's grasps are planned in one capture.
 
+#include <memory>
+#include <mutex>
 #include <string>
 
 #include "antipode/core/parameters.hpp"
@@ -40,6 +43,9 @@ class OmplPlanner final : public MotionPlanner {
   const KinematicChain& arm() const { return arm_; }
 
  private:
+  /// The robot and `scene`'s points (none: the robot alone), built once per scene.
+  std::shared_ptr<const collision::ArmCollisionWorld> world_for(const CloudPtr& scene) const;
+
   /// The states of the straight approach, pre-grasp first, for the grasp as given or
   /// half-turned; empty, with result.status and result.detail saying why, when neither has one.
   std::vector<Eigen::VectorXd> find_goal(const collision::ArmCollisionWorld& world,
@@ -51,6 +57,9 @@ class OmplPlanner final : public MotionPlanner {
   RobotModel robot_;
   KinematicChain arm_;
   std::vector<std::string> gripper_links_;
+  mutable std::mutex cache_mutex_;
+  mutable CloudPtr cached_scene_;
+  mutable std::shared_ptr<const collision::ArmCollisionWorld> cached_world_;
 };
 
 }  // namespace antipode::planning

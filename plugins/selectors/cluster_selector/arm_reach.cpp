@@ -26,21 +26,15 @@ collision::ArmCollisionWorld ArmReach::world_for(const Cloud& cloud) const {
 Rejection ArmReach::check(const collision::ArmCollisionWorld& world, const Hand& grasp,
                           double standoff_m, const JointState& start) const {
   const Eigen::VectorXd seed =
-      start.names == arm_.joint_names()
-          ? Eigen::VectorXd(Eigen::Map<const Eigen::VectorXd>(
-                start.positions_rad.data(), Eigen::Index(start.positions_rad.size())))
-          : arm_.mid_range();
+      start.names == arm_.joint_names() ? joint_vector(start.positions_rad) : arm_.mid_range();
   collision::ReachOptions options;
   options.pregrasp_m = standoff_m;
   options.grasp_solutions = options_.ik_solutions;
   collision::Reach reach = collision::check_reach(arm_, world, grasp.X_FrameHand, seed, options);
   if (reach.status != collision::ReachStatus::kReachable) {
-    // A parallel gripper turned half a turn about its approach takes the same grasp, with
-    // the wrist in another place.
-    Eigen::Isometry3d turned = grasp.X_FrameHand;
-    turned.linear().col(1) *= -1.0;
-    turned.linear().col(2) *= -1.0;
-    const collision::Reach other = collision::check_reach(arm_, world, turned, seed, options);
+    // A parallel gripper turned half a turn about its approach takes the same grasp.
+    const collision::Reach other = collision::check_reach(
+        arm_, world, collision::half_turned(grasp.X_FrameHand), seed, options);
     if (other.status == collision::ReachStatus::kReachable) reach = other;
   }
   switch (reach.status) {

@@ -46,10 +46,6 @@ class StopToken {
 
   /// This token, also stopping at `deadline` (the earlier of both deadlines).
   StopToken with_deadline(Clock::time_point deadline) const;
-  /// The deadline, if any.
-  std::optional<Clock::time_point> deadline() const { return deadline_; }
-  /// Seconds until the deadline (negative once passed); +infinity without one.
-  double seconds_left() const;
 
  private:
   friend class StopSource;
@@ -62,7 +58,6 @@ class StopSource {
  public:
   StopSource() : flag_(std::make_shared<std::atomic<bool>>(false)) {}
   void request_stop() { flag_->store(true, std::memory_order_relaxed); }
-  bool stop_requested() const { return flag_->load(std::memory_order_relaxed); }
   StopToken token() const {
     StopToken t;
     t.flag_ = flag_;

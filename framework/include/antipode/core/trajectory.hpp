@@ -8,6 +8,8 @@
 #include <string>
 #include <vector>
 
+#include <Eigen/Core>
+
 namespace antipode {
 
 /// The positions of named joints, e.g. the seven of Baxter's right arm.
@@ -26,11 +28,14 @@ struct Trajectory {
   std::vector<double> times_s;                     ///< one per waypoint, non-decreasing
 
   bool empty() const { return positions_rad.empty(); }
-  /// The last waypoint as a joint state; empty for an empty trajectory.
-  JointState end_state() const {
-    if (empty()) return {};
-    return {joint_names, positions_rad.back()};
-  }
 };
+
+/// Joint values as an Eigen vector (for kinematics) and back.
+inline Eigen::VectorXd joint_vector(const std::vector<double>& q_rad) {
+  return Eigen::Map<const Eigen::VectorXd>(q_rad.data(), Eigen::Index(q_rad.size()));
+}
+inline std::vector<double> joint_values(const Eigen::VectorXd& q_rad) {
+  return {q_rad.data(), q_rad.data() + q_rad.size()};
+}
 
 }  // namespace antipode

@@ -24,13 +24,15 @@ namespace antipode {
 /// What to plan: from `start` to the grasp, through the pre-grasp `standoff_m` back along
 /// the approach.
 struct PlanningProblem {
-  Hand grasp;                          ///< frame "base"
-  JointState start;                    ///< the arm's joints now (Cell::arm_state())
-  std::shared_ptr<const Cloud> scene;  ///< observed points (base frame); null = none known
-  double standoff_m = 0.10;            ///< where the straight approach starts
-  double time_limit_s = 1.0;           ///< for the search; <= 0: the planner's default
-  std::uint64_t seed = 0;              ///< the same problem and seed give the same motion
-  StopToken stop;                      ///< cancellation (a Timeout node's deadline)
+  Hand grasp;        ///< frame "base"
+  JointState start;  ///< the arm's joints now (Cell::arm_state())
+  /// Observed points (base frame); null = none known. A planner may keep the cloud for the
+  /// next call on the same one: do not modify it once given.
+  std::shared_ptr<const Cloud> scene;
+  double standoff_m = 0.10;   ///< where the straight approach starts
+  double time_limit_s = 1.0;  ///< for the search; <= 0: the planner's default
+  std::uint64_t seed = 0;     ///< the same problem and seed give the same motion
+  StopToken stop;             ///< cancellation (a Timeout node's deadline)
 };
 
 /// How a planning call ended.
