@@ -108,10 +108,9 @@ trees:
   EXPECT_EQ(lines[2], "scene 7: success - 3 of 3 succeeded (100%)");
 }
 
-TEST_F(PipelineNodesTest, ATimeoutStopsAPlannerCall) {
-  // The endless planner searches for a minute unless its stop token asks it to stop: the
-  // Timeout's deadline reaches it through PlanReach, which fails as cancelled.
-  bt::Tree tree = load(R"(
+// Up to the planning of the selection's grasps, with a planner that searches for a minute
+// unless its stop token asks it to stop.
+constexpr const char* kEndlessPlanning = R"(
 components:
   cell: { plugin: line_cell, points: 5 }
   sampler: { plugin: point_sampler }
@@ -124,6 +123,12 @@ trees:
       - CaptureCloud: { cell: cell, cloud: "{cloud}" }
       - SampleHands: { sampler: sampler, cloud: "{cloud}", hands: "{hands}" }
       - SelectGrasps: { selector: selector, hands: "{hands}", grasps: "{grasps}" }
+)";
+
+TEST_F(PipelineNodesTest, ATimeoutStopsAPlannerCall) {
+  // The endless planner searches for a minute unless its stop token asks it to stop: the
+  // Timeout's deadline reaches it through PlanReach, which fails as cancelled.
+  bt::Tree tree = load(std::string(kEndlessPlanning) + R"(
       - Timeout:
           msec: 50
           child:
@@ -145,19 +150,7 @@ trees:
 }
 
 TEST_F(PipelineNodesTest, ARequestToStopTheTreeStopsAPlannerCall) {
-  bt::Tree tree = load(R"(
-components:
-  cell: { plugin: line_cell, points: 5 }
-  sampler: { plugin: point_sampler }
-  selector: { plugin: best_first }
-  planner: { plugin: endless_planner }
-main: pick
-trees:
-  pick:
-    Sequence:
-      - CaptureCloud: { cell: cell, cloud: "{cloud}" }
-      - SampleHands: { sampler: sampler, cloud: "{cloud}", hands: "{hands}" }
-      - SelectGrasps: { selector: selector, hands: "{hands}", grasps: "{grasps}" }
+  bt::Tree tree = load(std::string(kEndlessPlanning) + R"(
       - PlanReach: { name: reach, planner: planner, cell: cell, grasps: "{grasps}" }
 )");
   tree.request_stop();  // e.g. from a signal handler; the endless planner sees it
