@@ -63,6 +63,33 @@ std::vector<std::pair<std::string, std::string>> task_overrides(const TaskSettin
 
 std::vector<double> vector_of(const Eigen::Vector3d& v) { return {v.x(), v.y(), v.z()}; }
 
+// How many hands each stage passed on: hypotheses, hands classified as grasps, and the
+// selection's reasons (what became of every classified hand).
+nlohmann::ordered_json funnel(const bt::Blackboard& board) {
+  nlohmann::ordered_json out = nlohmann::ordered_json::object();
+  const auto count_of = [&](const char* key) {
+    return board.get_ref<HandSetPtr>(key)->hands.size();
+  };
+  if (board.has("hands")) out["hypotheses"] = count_of("hands");
+  if (board.has("classified")) {
+    std::size_t positive = 0;
+    for (const Hand& hand : board.get_ref<HandSetPtr>("classified")->hands)
+      positive += hand.rejection == Rejection::kNone ? 1 : 0;
+    out["grasps_classified"] = positive;
+  }
+  if (board.has("grasps")) {
+    nlohmann::ordered_json reasons = nlohmann::ordered_json::object();
+    for (const Hand& hand : board.get_ref<HandSetPtr>("grasps")->hands) {
+      const std::string reason = to_string(hand.rejection);
+      reasons[reason] = reasons.value(reason, 0) + 1;
+    }
+    out["selection"] = reasons;
+  }
+  return out;
+}
+
+}  // namespace
+
 nlohmann::ordered_json hand_json(const Hand& hand) {
   const Eigen::Quaterniond q(hand.X_FrameHand.linear());
   return {{"position_m", vector_of(hand.position_m())},
@@ -90,32 +117,6 @@ nlohmann::ordered_json record_json(const GraspAttempt& r) {
           {"duration_s", r.duration_s}};
 }
 
-// How many hands each stage passed on: hypotheses, hands classified as grasps, and the
-// selection's reasons (what became of every classified hand).
-nlohmann::ordered_json funnel(const bt::Blackboard& board) {
-  nlohmann::ordered_json out = nlohmann::ordered_json::object();
-  const auto count_of = [&](const char* key) {
-    return board.get_ref<HandSetPtr>(key)->hands.size();
-  };
-  if (board.has("hands")) out["hypotheses"] = count_of("hands");
-  if (board.has("classified")) {
-    std::size_t positive = 0;
-    for (const Hand& hand : board.get_ref<HandSetPtr>("classified")->hands)
-      positive += hand.rejection == Rejection::kNone ? 1 : 0;
-    out["grasps_classified"] = positive;
-  }
-  if (board.has("grasps")) {
-    nlohmann::ordered_json reasons = nlohmann::ordered_json::object();
-    for (const Hand& hand : board.get_ref<HandSetPtr>("grasps")->hands) {
-      const std::string reason = to_string(hand.rejection);
-      reasons[reason] = reasons.value(reason, 0) + 1;
-    }
-    out["selection"] = reasons;
-  }
-  return out;
-}
-
-// The failure class of an executed attempt, from the cell's record (docs/cli.md lists them).
 std::string failure_class(const GraspAttempt& r) {
   switch (r.outcome) {
     case GraspOutcome::kSuccess:
@@ -136,8 +137,6 @@ std::string failure_class(const GraspAttempt& r) {
   if (r.outcome == GraspOutcome::kObjectKnockedOut) return "knocked off the table";
   return "slipped";
 }
-
-}  // namespace
 
 const std::vector<BenchVariant>& isolation_variants() {
   static const std::vector<BenchVariant> variants = {

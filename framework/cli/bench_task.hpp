@@ -8,6 +8,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "antipode/core/hand.hpp"
+#include "antipode/interfaces/grasp_attempt.hpp"
 #include "bench_objects.hpp"
 #include "session.hpp"
 
@@ -45,6 +47,18 @@ struct BenchTask {
   bool held_out = false;
   bool graspable = true;  ///< the gripper can hold the object in this pose at all
 };
+
+/// A hand as JSON: position_m, quaternion_xyzw, approach, score, width_m.
+nlohmann::ordered_json hand_json(const Hand& hand);
+
+/// A cell's attempt record as JSON (its fields but outcome and reason; NaN as null).
+nlohmann::ordered_json record_json(const GraspAttempt& record);
+
+/// The failure class of an executed attempt, from the cell's record (docs/cli.md lists
+/// them): "success", "collision at the stand-off pose", "arm collision", "planned into the
+/// object", "stopped short of the pose", "nothing between the planned fingers", "closed on
+/// nothing", "knocked off the table", "slipped" or "not executed".
+std::string failure_class(const GraspAttempt& record);
 
 /// The pick tree's `attempt` tree, loaded for `task` (its components created, nothing run).
 /// Throws antipode::Error when it cannot be loaded (e.g. a parameter the variant's

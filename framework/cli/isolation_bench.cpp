@@ -1,20 +1,15 @@
 #include "isolation_bench.hpp"
 
-#include <sys/wait.h>
-#include <unistd.h>
-
 #include <algorithm>
 #include <chrono>
-#include <cstdio>
-#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <sstream>
 #include <thread>
 
-#include "antipode/core/atomic_file.hpp"
 #include "antipode/core/error.hpp"
+#include "bench_processes.hpp"
 #include "bench_report.hpp"
 #include "bench_task.hpp"
 #include "commands.hpp"
@@ -26,11 +21,6 @@ namespace antipode::cli {
 namespace {
 
 using Json = nlohmann::ordered_json;
-
-// A child process already printed why the run cannot go on; exit with its code.
-struct BenchStopped {
-  int code;
-};
 
 // The gripper's range in the paper's setting: objects narrower or wider in every
 // direction cannot be held, and finding no grasp on them is the right answer.
@@ -102,94 +92,17 @@ std::string progress_line(const Json& r, std::size_t total) {
   return line.str();
 }
 
-// Runs the tasks whose index is `job` modulo `jobs`, in order; `sink` gets each record.
-void run_share(const TaskSettings& settings, const std::vector<BenchTask>& tasks, int job, int jobs,
-               const std::function<void(const Json&)>& sink) {
-  const Session session = open_session();
-  for (const BenchTask& task : tasks)
-    if (task.index % jobs == job) sink(run_task(session, settings, task));
-}
-
-// Loads the tree of each variant's first task (in a child process, so that this one starts
-// no plugin before forking its workers): a parameter the variant's plugin does not take is
-// one error line before anything runs, not one per worker.
+// Loads the tree of each variant's first task in a child process: a parameter the
+// variant's plugin does not take is one error line before anything runs, not one per worker.
 void check_every_variant_loads(const TaskSettings& settings, const std::vector<BenchTask>& tasks) {
-  std::cout.flush();
-  const pid_t pid = fork();
-  if (pid < 0) throw Error("cannot start a benchmark process");
-  if (pid == 0) {
-    int code = 0;
-    try {
-      const Session session = open_session();
-      std::vector<const BenchVariant*> seen;
-      for (const BenchTask& task : tasks) {
-        if (std::find(seen.begin(), seen.end(), task.variant) != seen.end()) continue;
-        seen.push_back(task.variant);
-        load_task_tree(session, settings, task);
-      }
-    } catch (const std::exception& error) {
-      std::cerr << "antipode: error: " << error.what() << "\n";
-      code = dynamic_cast<const Error*>(&error) ? kExitInvalidInput : kExitInternalError;
+  check_in_child([&](const Session& session) {
+    std::vector<const BenchVariant*> seen;
+    for (const BenchTask& task : tasks) {
+      if (std::find(seen.begin(), seen.end(), task.variant) != seen.end()) continue;
+      seen.push_back(task.variant);
+      load_task_tree(session, settings, task);
     }
-    std::_Exit(code);
-  }
-  int status = 0;
-  waitpid(pid, &status, 0);
-  if (!WIFEXITED(status) || WEXITSTATUS(status) != 0)
-    throw BenchStopped{WIFEXITED(status) ? WEXITSTATUS(status) : kExitInternalError};
-}
-
-// Runs every task in `jobs` forked processes, each writing its records to a file of its
-// own; returns the records in task order.
-std::vector<Json> run_in_processes(const TaskSettings& settings,
-                                   const std::vector<BenchTask>& tasks, int jobs) {
-  std::string pattern = (fs::temp_directory_path() / "antipode-bench-XXXXXX").string();
-  if (mkdtemp(pattern.data()) == nullptr) throw Error("cannot create a temporary folder");
-  const fs::path folder = pattern;
-  std::cout.flush();
-  std::vector<pid_t> children;
-  for (int job = 0; job < jobs; ++job) {
-    const pid_t pid = fork();
-    if (pid < 0) throw Error("cannot start a benchmark process");
-    if (pid > 0) {
-      children.push_back(pid);
-      continue;
-    }
-    int code = 0;
-    try {
-      std::ofstream file(folder / ("job-" + std::to_string(job) + ".jsonl"));
-      run_share(settings, tasks, job, jobs, [&](const Json& record) {
-        file << record.dump() << "\n" << std::flush;
-        const std::string line = progress_line(record, tasks.size());
-        if (::write(STDOUT_FILENO, line.data(), line.size()) < 0) code = 3;
-      });
-    } catch (const std::exception& error) {
-      std::cerr << "antipode: error: " << error.what() << "\n";
-      code = dynamic_cast<const Error*>(&error) ? kExitInvalidInput : kExitInternalError;
-    }
-    std::_Exit(code);
-  }
-  int failed = 0;
-  for (const pid_t pid : children) {
-    int status = 0;
-    waitpid(pid, &status, 0);
-    if (!WIFEXITED(status) || WEXITSTATUS(status) != 0)
-      failed = WIFEXITED(status) ? WEXITSTATUS(status) : 3;
-  }
-  std::vector<Json> records(tasks.size());
-  for (int job = 0; job < jobs; ++job) {
-    std::ifstream file(folder / ("job-" + std::to_string(job) + ".jsonl"));
-    for (std::string line; std::getline(file, line);) {
-      Json record = Json::parse(line);
-      const auto index = record.at("task").get<std::size_t>();
-      records.at(index) = std::move(record);
-    }
-  }
-  fs::remove_all(folder);
-  if (failed != 0) throw Error("a benchmark process failed (see its message above)");
-  for (const Json& record : records)
-    if (record.is_null()) throw InternalError("a benchmark process lost an attempt");
-  return records;
+  });
 }
 
 }  // namespace
@@ -217,20 +130,17 @@ int bench_isolation_command(const IsolationBenchOptions& o) {
             << tasks.size() / variants.size() << " attempts for each of " << variant_names.size()
             << " variants, " << o.jobs << " process(es)\n";
   const auto start = std::chrono::steady_clock::now();
-  std::vector<Json> records;
-  if (o.jobs == 1) {
-    run_share(settings, tasks, 0, 1, [&](const Json& record) {
-      std::cout << progress_line(record, tasks.size()) << std::flush;
-      records.push_back(record);
-    });
-  } else {
+  if (o.jobs > 1) {
     try {
       check_every_variant_loads(settings, tasks);
     } catch (const BenchStopped& stopped) {
       return stopped.code;
     }
-    records = run_in_processes(settings, tasks, o.jobs);
   }
+  std::vector<Json> records = run_bench_tasks(
+      tasks.size(), o.jobs,
+      [&](const Session& session, std::size_t i) { return run_task(session, settings, tasks[i]); },
+      [&](const Json& record) { return progress_line(record, tasks.size()); });
   const double wall_s =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 

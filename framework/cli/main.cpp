@@ -7,6 +7,7 @@
 #include "antipode/core/error.hpp"
 #include "commands.hpp"
 #include "exit_codes.hpp"
+#include "clutter_bench.hpp"
 #include "isolation_bench.hpp"
 #include "reach_bench.hpp"
 
@@ -19,6 +20,7 @@ constexpr const char* kExamples = R"(Examples:
   antipode detect ../shared/data/clouds/table_mug.pcd --out grasps.json --image grasps.png
   antipode scene scenes/pile_procedural.yaml --image scene.png
   antipode bench isolation --objects ../shared/data/objects/ycb --jobs 2 --report iso.json
+  antipode bench clutter --runs 10 --jobs 2 --report clutter.json
   antipode bench reach --ik-poses 10000 --scenes 100 --report reach.json
   antipode train --out my.model --dataset examples.data
   antipode eval-classifier --model my.model --report eval.json
@@ -37,6 +39,7 @@ struct Commands {
   antipode::cli::EvalOptions eval;
   antipode::cli::IsolationBenchOptions isolation;
   antipode::cli::ReachBenchOptions reach;
+  antipode::cli::ClutterBenchOptions clutter;
   std::string validate_path;
   std::string node_type;  ///< `antipode nodes [TYPE]`
 };
@@ -124,6 +127,26 @@ void add_bench_reach(CLI::App& bench, antipode::cli::ReachBenchOptions& o) {
   reach->add_option("--report", o.report_path, "Write the report as JSON");
 }
 
+void add_bench_clutter(CLI::App& bench, antipode::cli::ClutterBenchOptions& o) {
+  CLI::App* clutter = bench.add_subcommand(
+      "clutter", "The paper's dense-clutter experiment: seeded clear-the-box runs");
+  clutter
+      ->add_option("--objects", o.objects,
+                   "'procedural' (the scene's random shapes) or a mesh folder")
+      ->capture_default_str();
+  clutter->add_option("--runs", o.runs, "Clear-the-box runs")->capture_default_str();
+  clutter->add_option("--objects-per-run", o.objects_per_run, "Objects dumped into the box")
+      ->capture_default_str();
+  clutter->add_option("--seed", o.seed, "Cell seed of run 0 (run i: seed + i)")
+      ->capture_default_str();
+  clutter->add_option("--jobs", o.jobs, "Processes (the same results for any number)")
+      ->capture_default_str();
+  clutter->add_option("--report", o.report_path, "Write the report as JSON");
+  clutter->add_option("--tree", o.tree_path, "The clear-the-box tree")->capture_default_str();
+  clutter->add_option("--noise", o.noise, "The cell's sensor noise scale (default: the tree's)");
+  clutter->add_option("--set", o.set, "Override a tree entry or component parameter");
+}
+
 void add_bench(CLI::App& app, Commands& commands) {
   auto& o = commands.isolation;
   CLI::App* bench = app.add_subcommand("bench", "Measure picking end to end in the simulated cell");
@@ -155,6 +178,7 @@ void add_bench(CLI::App& app, Commands& commands) {
       ->delimiter(',');
   isolation->add_option("--set", o.set, "Override a tree entry or component parameter");
   add_bench_reach(*bench, commands.reach);
+  add_bench_clutter(*bench, commands.clutter);
 }
 
 int dispatch(const CLI::App& app, const Commands& commands) {
@@ -171,6 +195,9 @@ int dispatch(const CLI::App& app, const Commands& commands) {
   if (app.got_subcommand("bench")) {
     const CLI::App* bench = app.get_subcommand("bench");
     if (bench->got_subcommand("reach")) return antipode::cli::bench_reach_command(commands.reach);
+    if (bench->got_subcommand("clutter")) {
+      return antipode::cli::bench_clutter_command(commands.clutter);
+    }
     return antipode::cli::bench_isolation_command(commands.isolation);
   }
   if (app.got_subcommand("plugins")) return antipode::cli::plugins_command();

@@ -2,6 +2,8 @@
 
 #include <any>
 
+#include "tree_context.hpp"
+
 namespace antipode::bt::builtin {
 namespace {
 
@@ -23,10 +25,18 @@ NodeManifest AlwaysFailure::manifest() { return action("AlwaysFailure", "Fails."
 NodeManifest SetBlackboard::manifest() {
   return action("SetBlackboard", "Writes a value to a blackboard entry.",
                 {output_port<std::any>("key", "the entry to write"),
-                 input_port<std::any>("value", "a literal (stored as text) or {entry} to copy")});
+                 input_port<std::any>("value", "a literal (stored as text) or {entry} to copy"),
+                 input_port<bool>("if_unset", false,
+                                  "write only when the entry does not exist yet: a default "
+                                  "that --set key=value overrides")});
 }
 
 Status SetBlackboard::tick() {
+  if (get_input<bool>("if_unset")) {
+    const PortBinding& key = detail::NodeAccess::binding(*this, "key");
+    if (key.source == PortBinding::Source::kEntry && blackboard().has(key.key))
+      return Status::kSuccess;
+  }
   set_output("key", get_input<std::any>("value"));
   return Status::kSuccess;
 }

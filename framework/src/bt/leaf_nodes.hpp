@@ -27,7 +27,8 @@ class AlwaysFailure : public SyncActionNode {
   Status tick() override { return Status::kFailure; }
 };
 
-// Writes `value` (a literal, stored as text, or a copy of another entry) to entry `key`.
+// Writes `value` (a literal, stored as text, or a copy of another entry) to entry `key`;
+// with `if_unset`, only when the entry does not exist yet.
 class SetBlackboard : public SyncActionNode {
  public:
   using SyncActionNode::SyncActionNode;

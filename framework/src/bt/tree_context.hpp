@@ -47,6 +47,9 @@ struct NodeAccess {
     parent.children_.push_back(std::move(child));
   }
   static TreeContext* context(const Node& node) { return node.config_.context.get(); }
+  static const PortBinding& binding(const Node& node, const std::string& port) {
+    return node.binding(port);
+  }
 };
 
 }  // namespace antipode::bt::detail

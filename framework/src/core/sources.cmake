@@ -1,6 +1,7 @@
 list(APPEND ANTIPODE_SOURCES
   ${CMAKE_CURRENT_LIST_DIR}/atomic_file.cpp
   ${CMAKE_CURRENT_LIST_DIR}/binary_file.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/clearing_run.cpp
   ${CMAKE_CURRENT_LIST_DIR}/cloud.cpp
   ${CMAKE_CURRENT_LIST_DIR}/error.cpp
   ${CMAKE_CURRENT_LIST_DIR}/hand_geometry.cpp

@@ -63,10 +63,22 @@ void replace_with_object(const Parameters& params, SceneSpec& scene) {
   scene.random = RandomObjects{};
 }
 
+// `object_count: N` drops N random objects instead of the scene's number (a clutter run of
+// another size with the same layout).
+void replace_object_count(const Parameters& params, SceneSpec& scene) {
+  if (!params.has("object_count")) return;
+  const int count = params.get<int>("object_count", 0);
+  if (count < 1 || count > 100) params.fail("object_count", "'object_count' must be in [1, 100]");
+  if (scene.random.count == 0)
+    params.fail("object_count", "'object_count' needs a scene with random objects");
+  scene.random.count = count;
+}
+
 SceneSpec scene_of(const Parameters& params) {
   SceneSpec scene = read_scene_parameter(params);
   replace_objects(params, scene);
   replace_with_object(params, scene);
+  replace_object_count(params, scene);
   return scene;
 }
 

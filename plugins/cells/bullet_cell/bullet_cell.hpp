@@ -34,6 +34,7 @@ class BulletCell final : public Cell {
   std::vector<std::string> view_names() const override;
   Cloud capture(const std::vector<std::string>& views) override;
   JointState arm_state() const override;
+  std::optional<int> objects_left() const override { return int(objects().size()); }
   GraspAttempt execute(const GraspRequest& request) override;
   void reset(std::uint64_t seed) override;
 

@@ -132,6 +132,8 @@ const PluginFactory kFactories[] = {
      nullptr, &register_draw_attempt},
     {"node", "DrawArmPath", "draws a planned arm motion over the scene", nullptr,
      &register_draw_arm_path},
+    {"node", "DrawCloud", "draws a cloud from its sensor and from above", nullptr,
+     &register_draw_cloud},
 };
 
 }  // namespace

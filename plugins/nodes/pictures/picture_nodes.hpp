@@ -8,5 +8,6 @@ namespace antipode::pictures {
 void register_draw_grasps(bt::NodeRegistry& registry);
 void register_draw_attempt(bt::NodeRegistry& registry);
 void register_draw_arm_path(bt::NodeRegistry& registry);
+void register_draw_cloud(bt::NodeRegistry& registry);
 
 }  // namespace antipode::pictures

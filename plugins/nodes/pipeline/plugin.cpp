@@ -19,6 +19,7 @@ const antipode::PluginFactory kFactories[] = {
     {"node", "SelectViews", "keeps the points of some views", nullptr, &register_select_views},
     {"node", "ResetScene", "rebuilds a cell's scene from a seed", nullptr, &register_reset_scene},
     {"node", "RecordOutcome", "tallies grasp outcomes", nullptr, &register_record_outcome},
+    {"node", "ClearBox", "picks until the box is empty", nullptr, &register_clear_box},
 };
 
 }  // namespace

@@ -3,6 +3,7 @@
 /// Cell: the robot's world, real or simulated - it captures views and executes grasps.
 
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -35,6 +36,11 @@ class Cell : public Component {
   /// request. With a trajectory, the arm follows it first; an arm link touching the
   /// environment on the way ends the attempt with kArmCollision, naming link and object.
   virtual GraspAttempt execute(const GraspRequest& request) = 0;
+
+  /// How many objects are left in the cell's workspace (picked objects leave it, and so do
+  /// objects knocked off the table); nullopt when the cell cannot tell (a real cell without
+  /// ground truth). A clear-the-box loop ends when it reaches 0.
+  virtual std::optional<int> objects_left() const { return std::nullopt; }
 
   /// Restores the cell's initial state for `seed`.
   virtual void reset(std::uint64_t seed) = 0;

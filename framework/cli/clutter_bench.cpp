@@ -1,0 +1,282 @@
+#include "clutter_bench.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <filesystem>
+#include <fstream>
+#include <iomanip>
+#include <iostream>
+#include <map>
+#include <sstream>
+#include <thread>
+
+#include "antipode/bt/loader.hpp"
+#include "antipode/core/error.hpp"
+#include "antipode/interfaces/clearing_run.hpp"
+#include "bench_processes.hpp"
+#include "bench_report.hpp"
+#include "bench_task.hpp"
+#include "commands.hpp"
+#include "exit_codes.hpp"
+#include "stage_timer.hpp"
+
+namespace fs = std::filesystem;
+
+namespace antipode::cli {
+namespace {
+
+using Json = nlohmann::ordered_json;
+
+struct RunSettings {
+  std::string tree_path;
+  std::string tree_yaml;
+  int threads = 2;
+  std::vector<std::pair<std::string, std::string>> entries;  ///< the same for every run
+};
+
+void check_options(const ClutterBenchOptions& o) {
+  if (o.runs < 1 || o.runs > 100000) throw Error("--runs must be in 1..100000");
+  if (o.objects_per_run < 1 || o.objects_per_run > 100)
+    throw Error("--objects-per-run must be in 1..100");
+  if (o.jobs < 1 || o.jobs > 64) throw Error("--jobs must be in 1..64");
+  if (!fs::is_regular_file(o.tree_path)) throw Error("--tree: no tree file '" + o.tree_path + "'");
+  if (o.objects != "procedural" && !fs::is_directory(o.objects))
+    throw Error("--objects: '" + o.objects + "' is neither 'procedural' nor a folder of meshes");
+  parse_overrides(o.set);  // throws for an entry without '='
+}
+
+// The --set entries every run shares, the user's last.
+std::vector<std::pair<std::string, std::string>> shared_entries(const ClutterBenchOptions& o,
+                                                                int threads) {
+  const std::string t = std::to_string(threads);
+  std::vector<std::pair<std::string, std::string>> entries = {
+      {"cell.object_count", std::to_string(o.objects_per_run)},
+      {"cell.render_threads", t},
+      {"sampler.threads", t},
+      {"classifier.threads", t}};
+  if (o.objects != "procedural") entries.emplace_back("cell.objects", fs::absolute(o.objects));
+  if (!o.noise.empty()) entries.emplace_back("cell.noise", o.noise);
+  for (auto& entry : parse_overrides(o.set)) entries.push_back(std::move(entry));
+  return entries;
+}
+
+bt::Tree load_run_tree(const Session& session, const RunSettings& settings, std::uint64_t seed) {
+  bt::LoadOptions load;
+  load.registry = &session.registry;
+  load.components = session.host.get();
+  load.seed = seed;
+  load.overrides = {{"cell.seed", std::to_string(seed)}};
+  for (const auto& entry : settings.entries) load.overrides.push_back(entry);
+  return bt::load_tree_string(settings.tree_yaml, settings.tree_path, load);
+}
+
+// An attempt's failure class: the cell's record classified, or the planner's outcome.
+std::string reason_of(const ClearingCycle& cycle) {
+  return cycle.attempt ? failure_class(*cycle.attempt) : cycle.outcome;
+}
+
+Json cycle_json(const ClearingCycle& cycle) {
+  Json out = {{"outcome", cycle.outcome}, {"reason", reason_of(cycle)}};
+  out["detail"] = cycle.attempt ? cycle.attempt->reason : "";
+  if (cycle.grasp) out["hand"] = hand_json(*cycle.grasp);
+  if (cycle.attempt) out["record"] = record_json(*cycle.attempt);
+  out["objects_before"] = cycle.objects_before;
+  out["objects_after"] = cycle.objects_after;
+  out["seconds"] = cycle.seconds;
+  return out;
+}
+
+Json run_one(const Session& session, const RunSettings& settings, std::size_t index,
+             std::uint64_t seed) {
+  Json out = {{"task", index}, {"seed", seed}};
+  const auto start = std::chrono::steady_clock::now();
+  bt::Tree tree = load_run_tree(session, settings, seed);
+  tree.set_log_sink([](const bt::Node&, const std::string&) {});
+  StageTimer timer;
+  tree.add_observer(&timer);
+  timer.start();
+  try {
+    tree.tick_while_running(std::chrono::milliseconds(0));
+    if (!tree.blackboard().has("run")) throw Error("the tree wrote no {run} (a ClearBox node's)");
+    const ClearingRun& run = tree.blackboard().get_ref<ClearingRun>("run");
+    out["objects"] = run.objects_at_start;
+    out["attempts"] = run.attempts();
+    out["successes"] = run.successes();
+    out["removed"] = run.successes();
+    out["left"] = run.objects_left();
+    out["lost"] = run.objects_lost();
+    out["stop"] = to_string(run.stop);
+    out["summary"] = run.summary();
+    Json cycles = Json::array();
+    for (const ClearingCycle& cycle : run.cycles) cycles.push_back(cycle_json(cycle));
+    out["cycles"] = cycles;
+  } catch (const std::exception& error) {
+    out["error"] = error.what();
+  }
+  out["stage_s"] = timer.seconds();
+  out["wall_s"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  tree.remove_observer(&timer);
+  return out;
+}
+
+std::string progress_line(const Json& r, int runs) {
+  std::ostringstream line;
+  line << "[run " << r["task"].get<int>() + 1 << "/" << runs << "] seed " << r["seed"] << ": ";
+  if (r.contains("error")) {
+    line << "error - " << r["error"].get<std::string>() << "\n";
+    return line.str();
+  }
+  line << r["summary"].get<std::string>() << " (" << r["stop"].get<std::string>() << ", "
+       << std::fixed << std::setprecision(1) << r["wall_s"].get<double>() << " s)\n";
+  return line.str();
+}
+
+// The paper's failure groups (section 5.3) of a failure class.
+std::string paper_class(const std::string& reason) {
+  static const std::map<std::string, std::string> groups = {
+      {"nothing between the planned fingers", "perception"},
+      {"closed on nothing", "perception"},
+      {"planned into the object", "perception"},
+      {"stopped short of the pose", "perception"},
+      {"slipped", "dropped"},
+      {"arm collision", "collision"},
+      {"collision at the stand-off pose", "collision"},
+      {"no IK", "reach"},
+      {"no motion plan", "reach"}};
+  const auto group = groups.find(reason);
+  return group == groups.end() ? "other" : group->second;
+}
+
+Json rate(int k, int n) {
+  const auto [lo, hi] = wilson_interval(k, n);
+  return {{"rate", n > 0 ? double(k) / n : 0.0}, {"ci95", {lo, hi}}};
+}
+
+void print_summary(std::ostream& out, const Json& s) {
+  const auto pct = [](double v) {
+    std::ostringstream t;
+    t << std::fixed << std::setprecision(1) << 100 * v;
+    return t.str();
+  };
+  const auto interval = [&](const Json& r) {
+    return pct(r["rate"].get<double>()) + "% [" + pct(r["ci95"][0].get<double>()) + ", " +
+           pct(r["ci95"][1].get<double>()) + "]";
+  };
+  out << "grasp success " << s["successes"] << " / " << s["attempts"] << " = "
+      << interval(s["success_rate"]) << " (paper, real Baxter: 73%)\n";
+  out << "objects removed " << s["removed"] << " / " << s["objects"] << " = "
+      << interval(s["removed_rate"]) << " (paper: 85%); lost off the table " << s["lost"] << "\n";
+  out << "cycles " << s["cycles"] << ", of which found no grasp " << s["no_grasp"] << "\n";
+  out << "failures by class:";
+  for (const auto& [reason, count] : s["reasons"].items()) out << "  " << reason << " " << count;
+  out << "\nfailures as the paper groups them (share of attempts):";
+  for (const auto& [group, count] : s["paper_classes"].items())
+    out << "  " << group << " " << count << " ("
+        << pct(s["attempts"].get<int>() > 0 ? count.get<double>() / s["attempts"].get<int>() : 0)
+        << "%)";
+  out << "\nruns ended:";
+  for (const auto& [stop, count] : s["stops"].items()) out << "  " << stop << " " << count;
+  out << "\nmedian seconds: cycle " << s["cycle_s_median"] << ", run " << s["run_s_median"] << "\n";
+}
+
+}  // namespace
+
+Json summarise_clutter(const Json& runs) {
+  int attempts = 0, successes = 0, objects = 0, lost = 0, cycles = 0, no_grasp = 0, errors = 0;
+  Json reasons = Json::object(), groups = Json::object(), stops = Json::object();
+  std::vector<double> cycle_s, run_s;
+  for (const Json& run : runs) {
+    if (run.contains("error")) {
+      ++errors;
+      continue;
+    }
+    attempts += run["attempts"].get<int>();
+    successes += run["successes"].get<int>();
+    objects += run["objects"].get<int>();
+    lost += std::max(0, run["lost"].get<int>());
+    const std::string stop = run["stop"];
+    stops[stop] = stops.value(stop, 0) + 1;
+    run_s.push_back(run["wall_s"].get<double>());
+    for (const Json& cycle : run["cycles"]) {
+      ++cycles;
+      cycle_s.push_back(cycle["seconds"].get<double>());
+      const std::string reason = cycle["reason"];
+      if (cycle["outcome"] == kNoGraspFound) ++no_grasp;
+      if (cycle["outcome"] == kNoGraspFound || reason == "success") continue;
+      reasons[reason] = reasons.value(reason, 0) + 1;
+      const std::string group = paper_class(reason);
+      groups[group] = groups.value(group, 0) + 1;
+    }
+  }
+  return {{"runs", runs.size()},
+          {"errors", errors},
+          {"attempts", attempts},
+          {"successes", successes},
+          {"objects", objects},
+          {"removed", successes},
+          {"lost", lost},
+          {"success_rate", rate(successes, attempts)},
+          {"removed_rate", rate(successes, objects)},
+          {"cycles", cycles},
+          {"no_grasp", no_grasp},
+          {"reasons", reasons},
+          {"paper_classes", groups},
+          {"stops", stops},
+          {"cycle_s_median", percentile(cycle_s, 0.5)},
+          {"run_s_median", percentile(run_s, 0.5)}};
+}
+
+int bench_clutter_command(const ClutterBenchOptions& o) {
+  check_options(o);
+  RunSettings settings;
+  settings.tree_path = o.tree_path;
+  std::ifstream tree_file(o.tree_path);
+  settings.tree_yaml.assign(std::istreambuf_iterator<char>(tree_file), {});
+  const int cores = int(std::max(1u, std::thread::hardware_concurrency()));
+  settings.threads = std::max(1, cores / o.jobs);
+  settings.entries = shared_entries(o, settings.threads);
+
+  std::cout << "clutter bench: " << o.runs << " runs of " << o.objects_per_run << " objects ("
+            << o.objects << "), " << o.jobs << " process(es)\n";
+  const auto start = std::chrono::steady_clock::now();
+  try {
+    check_in_child([&](const Session& session) { load_run_tree(session, settings, o.seed); });
+  } catch (const BenchStopped& stopped) {
+    return stopped.code;
+  }
+  std::vector<Json> records = run_bench_tasks(
+      std::size_t(o.runs), o.jobs,
+      [&](const Session& session, std::size_t i) {
+        return run_one(session, settings, i, o.seed + i);
+      },
+      [&](const Json& record) { return progress_line(record, o.runs); });
+  const double wall_s =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+
+  Json runs = Json::array();
+  for (auto& record : records) runs.push_back(std::move(record));
+  const Json summary = summarise_clutter(runs);
+  std::cout << "\n";
+  print_summary(std::cout, summary);
+  std::cout << "wall time " << wall_s << " s\n";
+  if (!o.report_path.empty()) {
+    const Json report = {{"bench", "clutter"},
+                         {"tree", o.tree_path},
+                         {"objects", o.objects},
+                         {"runs", o.runs},
+                         {"objects_per_run", o.objects_per_run},
+                         {"seed", o.seed},
+                         {"noise", o.noise.empty() ? "tree" : o.noise},
+                         {"overrides", o.set},
+                         {"jobs", o.jobs},
+                         {"threads_per_job", settings.threads},
+                         {"cores", cores},
+                         {"wall_s", wall_s},
+                         {"summary", summary},
+                         {"run_records", runs}};
+    write_report(std::cout, o.report_path, report);
+  }
+  return summary["errors"].get<int>() > 0 ? kExitInternalError : kExitSuccess;
+}
+
+}  // namespace antipode::cli

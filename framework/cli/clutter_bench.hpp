@@ -1,0 +1,39 @@
+#pragma once
+// `antipode bench clutter`: the paper's dense-clutter experiment (section 5.3) in the
+// simulated cell - seeded clear-the-box runs of trees/clear_box.yaml, tallied as grasp
+// success (successes / attempts), objects removed and the failure breakdown (docs/cli.md,
+// docs/results.md).
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+namespace antipode::cli {
+
+struct ClutterBenchOptions {
+  std::string objects = "procedural";  ///< "procedural" (the scene's shapes) or a mesh folder
+  int runs = 10;
+  int objects_per_run = 10;
+  std::uint64_t seed = 2000;  ///< run i uses cell seed `seed + i`
+  int jobs = 1;               ///< processes sharing the machine's cores
+  std::string report_path;    ///< JSON report ("" = none)
+  std::string tree_path = "trees/clear_box.yaml";
+  std::string noise;               ///< the cell's sensor noise scale ("" = the tree's)
+  std::vector<std::string> set;    ///< --set overrides of the tree, applied last
+};
+
+/// Runs the clear-the-box runs in `jobs` processes (the same results for any number), prints
+/// one line per run and the summary, and writes the report. Returns the exit code; throws
+/// antipode::Error for bad options.
+int bench_clutter_command(const ClutterBenchOptions& options);
+
+/// The report's "summary" over run records: runs, attempts, successes, objects, removed,
+/// lost, success_rate and removed_rate with 95% intervals, cycles, no_grasp (cycles that found
+/// no grasp), reasons (failure classes of the attempts), paper_classes (the paper's groups:
+/// perception, dropped, collision, reach, other), stops and the median seconds of a cycle
+/// and of a run.
+nlohmann::ordered_json summarise_clutter(const nlohmann::ordered_json& runs);
+
+}  // namespace antipode::cli

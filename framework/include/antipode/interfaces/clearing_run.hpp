@@ -1,0 +1,72 @@
+#pragma once
+/// @file
+/// The record of a clear-the-box run (ClearingRun): the loop that picks objects from a box
+/// until it is empty, one entry per cycle (the `ClearBox` node, docs/trees.md).
+///
+/// A cycle captures views, detects and selects grasps; when it chooses a grasp the arm plans
+/// a motion and the cell executes it. Counting follows the paper's dense-clutter experiment
+/// (section 5.3):
+/// - an *attempt* is a cycle that chose a grasp: one the cell executed, or one the arm could
+///   not reach ("no IK", "no motion plan");
+/// - a *localisation failure* is a cycle that found no grasp ("no grasp found");
+/// - an object is *removed* when an attempt lifted it out (a success).
+///
+/// Units: seconds of wall time. Object counts are -1 where the cell cannot tell (a real
+/// cell without ground truth); the counts that need them are then -1 too.
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "antipode/core/hand.hpp"
+#include "antipode/interfaces/grasp_attempt.hpp"
+
+namespace antipode {
+
+/// The outcome a cycle reports when it found no grasp to try.
+inline constexpr const char* kNoGraspFound = "no grasp found";
+
+/// One cycle of the loop.
+struct ClearingCycle {
+  /// How the cycle ended: a GraspOutcome's name ("success", "slipped", ...) when the cell
+  /// executed a grasp, else "no grasp found", "no IK" or "no motion plan".
+  std::string outcome;
+  std::optional<GraspAttempt> attempt;  ///< the cell's record, when it executed a grasp
+  std::optional<Hand> grasp;            ///< the grasp it executed
+  int objects_before = -1;              ///< objects in the cell when the cycle began
+  int objects_after = -1;               ///< ... and when it ended
+  double seconds = 0.0;                 ///< wall time, capture to outcome
+
+  bool chose_grasp() const { return outcome != kNoGraspFound; }
+  bool succeeded() const { return outcome == to_string(GraspOutcome::kSuccess); }
+};
+
+/// Why a run ended.
+enum class ClearingStop : std::uint8_t {
+  kRunning,      ///< not ended yet
+  kCleared,      ///< no object is left
+  kMissStreak,   ///< that many consecutive cycles found no grasp
+  kCycleLimit,   ///< the run used all its cycles
+};
+
+const char* to_string(ClearingStop stop);
+
+/// A whole run: its cycles in order and why it ended.
+struct ClearingRun {
+  int objects_at_start = -1;
+  std::vector<ClearingCycle> cycles;
+  ClearingStop stop = ClearingStop::kRunning;
+
+  int attempts() const;   ///< cycles that chose a grasp
+  int successes() const;  ///< attempts that lifted an object out = objects removed
+  int objects_left() const;  ///< objects in the cell at the end (-1: unknown)
+  /// Objects that left the cell without being picked (knocked off the table; -1: unknown).
+  int objects_lost() const;
+  /// Consecutive cycles at the end of the run that found no grasp.
+  int trailing_misses() const;
+  /// "cleared X of Y objects; Z of W attempts succeeded" (Y "?" when unknown).
+  std::string summary() const;
+};
+
+}  // namespace antipode

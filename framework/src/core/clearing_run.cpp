@@ -1,0 +1,54 @@
+#include "antipode/interfaces/clearing_run.hpp"
+
+#include <algorithm>
+
+namespace antipode {
+
+const char* to_string(ClearingStop stop) {
+  switch (stop) {
+    case ClearingStop::kRunning:
+      return "running";
+    case ClearingStop::kCleared:
+      return "the box is empty";
+    case ClearingStop::kMissStreak:
+      return "consecutive cycles found no grasp";
+    case ClearingStop::kCycleLimit:
+      return "the run used all its cycles";
+  }
+  return "?";
+}
+
+int ClearingRun::attempts() const {
+  return int(std::count_if(cycles.begin(), cycles.end(),
+                           [](const ClearingCycle& c) { return c.chose_grasp(); }));
+}
+
+int ClearingRun::successes() const {
+  return int(std::count_if(cycles.begin(), cycles.end(),
+                           [](const ClearingCycle& c) { return c.succeeded(); }));
+}
+
+int ClearingRun::objects_left() const {
+  if (cycles.empty()) return objects_at_start;
+  return cycles.back().objects_after;
+}
+
+int ClearingRun::objects_lost() const {
+  if (objects_at_start < 0 || objects_left() < 0) return -1;
+  return objects_at_start - successes() - objects_left();
+}
+
+int ClearingRun::trailing_misses() const {
+  int misses = 0;
+  for (auto c = cycles.rbegin(); c != cycles.rend() && !c->chose_grasp(); ++c) ++misses;
+  return misses;
+}
+
+std::string ClearingRun::summary() const {
+  const std::string objects = objects_at_start >= 0 ? std::to_string(objects_at_start) : "?";
+  return "cleared " + std::to_string(successes()) + " of " + objects + " objects; " +
+         std::to_string(successes()) + " of " + std::to_string(attempts()) +
+         " attempts succeeded";
+}
+
+}  // namespace antipode
