@@ -112,6 +112,7 @@ nlohmann::ordered_json record_json(const GraspAttempt& r) {
           {"between_fingers_at_detection", r.between_fingers_at_detection},
           {"between_fingers_at_closing", r.between_fingers_at_closing},
           {"in_collision_at_planned_pose", r.in_collision_at_planned_pose},
+          {"touching_at_closing", r.touching_at_closing},
           {"pinched_object", r.pinched_object},
           {"lift_m", r.lift_m},
           {"duration_s", r.duration_s}};

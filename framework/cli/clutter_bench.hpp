@@ -20,8 +20,8 @@ struct ClutterBenchOptions {
   int jobs = 1;               ///< processes sharing the machine's cores
   std::string report_path;    ///< JSON report ("" = none)
   std::string tree_path = "trees/clear_box.yaml";
-  std::string noise;               ///< the cell's sensor noise scale ("" = the tree's)
-  std::vector<std::string> set;    ///< --set overrides of the tree, applied last
+  std::string noise;             ///< the cell's sensor noise scale ("" = the tree's)
+  std::vector<std::string> set;  ///< --set overrides of the tree, applied last
 };
 
 /// Runs the clear-the-box runs in `jobs` processes (the same results for any number), prints

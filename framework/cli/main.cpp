@@ -5,9 +5,9 @@
 
 #include "antipode/config.hpp"
 #include "antipode/core/error.hpp"
+#include "clutter_bench.hpp"
 #include "commands.hpp"
 #include "exit_codes.hpp"
-#include "clutter_bench.hpp"
 #include "isolation_bench.hpp"
 #include "reach_bench.hpp"
 

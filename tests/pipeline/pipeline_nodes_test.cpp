@@ -7,6 +7,8 @@
 #include <regex>
 
 #include "antipode/bt/loader.hpp"
+#include "antipode/core/error.hpp"
+#include "antipode/interfaces/clearing_run.hpp"
 #include "antipode/interfaces/grasp_attempt.hpp"
 #include "antipode/interfaces/hand_set.hpp"
 #include "antipode/plugin/plugin_host.hpp"
@@ -106,6 +108,138 @@ trees:
   ASSERT_EQ(lines.size(), 3u);
   EXPECT_EQ(lines[0], "scene 5: success - 1 of 1 succeeded (100%)");
   EXPECT_EQ(lines[2], "scene 7: success - 3 of 3 succeeded (100%)");
+}
+
+// One pick as the clear-the-box loop's child: capture, sample, select, execute.
+constexpr const char* kClearOneObject = R"(
+trees:
+  pick:
+    ClearBox:
+      cell: cell
+      outcome: "{outcome}"
+      attempt: "{attempt}"
+      grasp: "{grasp}"
+      run: "{run}"
+      child:
+        Sequence:
+          - CaptureCloud: { cell: cell, cloud: "{cloud}" }
+          - SampleHands: { sampler: sampler, cloud: "{cloud}", hands: "{hands}" }
+          - SelectGrasps: { selector: selector, hands: "{hands}", grasps: "{grasps}" }
+          - ExecuteGrasp:
+              { cell: cell, grasps: "{grasps}", outcome: "{outcome}", attempt: "{attempt}",
+                grasp: "{grasp}" }
+)";
+
+std::string with_cell(const std::string& cell, const std::string& trees) {
+  return "components:\n  cell: " + cell + R"(
+  sampler: { plugin: point_sampler }
+  selector: { plugin: best_first }
+main: pick
+)" + trees;
+}
+
+TEST_F(PipelineNodesTest, ClearBoxPicksUntilTheCellHasNoObjectLeft) {
+  bt::Tree tree = load(with_cell("{ plugin: line_cell, objects: 3 }", kClearOneObject));
+  std::vector<std::string> lines;
+  tree.set_log_sink([&](const bt::Node& node, const std::string& line) {
+    if (node.type() == "ClearBox") lines.push_back(line);
+  });
+  ASSERT_EQ(tree.tick_while_running(), bt::Status::kSuccess);
+  const auto& run = tree.blackboard().get_ref<ClearingRun>("run");
+  EXPECT_EQ(run.stop, ClearingStop::kCleared);
+  EXPECT_EQ(run.objects_at_start, 3);
+  ASSERT_EQ(run.cycles.size(), 3u);
+  EXPECT_EQ(run.cycles[0].objects_before, 3);
+  EXPECT_EQ(run.cycles[2].objects_after, 0);
+  ASSERT_TRUE(run.cycles[1].attempt.has_value());
+  EXPECT_EQ(run.cycles[1].attempt->pinched_object, "object 2");
+  EXPECT_TRUE(run.cycles[1].grasp.has_value());
+  ASSERT_EQ(lines.size(), 6u);  // start, three cycles, why it stopped, the summary
+  EXPECT_EQ(lines[0], "clearing 3 objects, at most 6 cycles");
+  EXPECT_EQ(lines[1].rfind("cycle 1: success (object 3); 2 left [", 0), 0u) << lines[1];
+  EXPECT_EQ(lines[4], "stopped: the box is empty");
+  EXPECT_EQ(lines[5], "cleared 3 of 3 objects; 3 of 3 attempts succeeded");
+}
+
+TEST_F(PipelineNodesTest, ClearBoxStopsAfterConsecutiveCyclesWithoutAGrasp) {
+  bt::Tree tree = load(with_cell("{ plugin: line_cell, objects: 4 }", R"(
+trees:
+  pick:
+    ClearBox:
+      cell: cell
+      outcome: "{outcome}"
+      max_misses: 2
+      run: "{run}"
+      child:
+        SetBlackboard: { key: outcome, value: "no grasp found" }
+)"));
+  tree.set_log_sink([](const bt::Node&, const std::string&) {});
+  ASSERT_EQ(tree.tick_while_running(), bt::Status::kSuccess);
+  const auto& run = tree.blackboard().get_ref<ClearingRun>("run");
+  EXPECT_EQ(run.stop, ClearingStop::kMissStreak);
+  EXPECT_EQ(run.cycles.size(), 2u);
+  EXPECT_EQ(run.attempts(), 0);
+  EXPECT_EQ(run.objects_left(), 4);
+  EXPECT_EQ(run.summary(), "cleared 0 of 4 objects; 0 of 0 attempts succeeded");
+}
+
+TEST_F(PipelineNodesTest, ClearBoxEndsAfterItsCyclesWhenTheCellCannotCount) {
+  bt::Tree tree = load(with_cell("{ plugin: line_cell }", R"(
+trees:
+  pick:
+    ClearBox:
+      cell: cell
+      outcome: "{outcome}"
+      max_cycles: 4
+      run: "{run}"
+      child:
+        SetBlackboard: { key: outcome, value: "no motion plan" }
+)"));
+  tree.set_log_sink([](const bt::Node&, const std::string&) {});
+  ASSERT_EQ(tree.tick_while_running(), bt::Status::kSuccess);
+  const auto& run = tree.blackboard().get_ref<ClearingRun>("run");
+  EXPECT_EQ(run.stop, ClearingStop::kCycleLimit);
+  EXPECT_EQ(run.cycles.size(), 4u);
+  EXPECT_EQ(run.attempts(), 4);  // a grasp was chosen each time, though not reached
+  EXPECT_FALSE(run.cycles[0].attempt.has_value());
+  EXPECT_EQ(run.objects_lost(), -1);
+  EXPECT_EQ(run.summary(), "cleared 0 of ? objects; 0 of 4 attempts succeeded");
+}
+
+TEST_F(PipelineNodesTest, ClearBoxFailsWhenItsChildFails) {
+  bt::Tree tree = load(with_cell("{ plugin: line_cell, objects: 2 }", R"(
+trees:
+  pick:
+    ClearBox:
+      cell: cell
+      outcome: "{outcome}"
+      child:
+        AlwaysFailure: {}
+)"));
+  tree.set_log_sink([](const bt::Node&, const std::string&) {});
+  EXPECT_EQ(tree.tick_while_running(), bt::Status::kFailure);
+}
+
+TEST_F(PipelineNodesTest, ClearBoxRejectsBadLimitsAtTheirPort) {
+  bt::Tree tree = load(with_cell("{ plugin: line_cell, objects: 2 }", R"(
+trees:
+  pick:
+    ClearBox:
+      cell: cell
+      outcome: "{outcome}"
+      max_misses: 0
+      child:
+        SetBlackboard: { key: outcome, value: "no grasp found" }
+)"));
+  tree.set_log_sink([](const bt::Node&, const std::string&) {});
+  try {
+    tree.tick_while_running();
+    FAIL() << "max_misses 0 was accepted";
+  } catch (const Error& error) {
+    EXPECT_NE(std::string(error.what()).find("max_misses' of ClearBox must be 1 or more"),
+              std::string::npos)
+        << error.what();
+  }
 }
 
 // Up to the planning of the selection's grasps, with a planner that searches for a minute

@@ -1,5 +1,6 @@
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "antipode/core/error.hpp"
@@ -292,6 +293,31 @@ TEST_F(ClusterSelectorTest, UsesAFixedSupportHeightWhenTheSetHasNone) {
   EXPECT_EQ(grasp_count(selector->select(set, {})), 1u);
   set.hands[0].X_FrameHand.translation().z() = 0.075;  // fingertips at 1.5 cm
   EXPECT_EQ(selector->select(set, {}).hands.back().rejection, Rejection::kBelowSupport);
+}
+
+// A 30 cm bin on the table: a hand whose fingers straddle its +y wall would close on the
+// wall; hands inside it, however near the wall, are kept.
+TEST_F(ClusterSelectorTest, HandsThatReachIntoABinWallAreDropped) {
+  const auto selector = create(
+      "min_cluster_size: 1\nbin: {center_m: [0, 0], inner_size_m: [0.3, 0.3], floor_z_m: 0, "
+      "wall_height_m: 0.06, wall_thickness_m: 0.01}");
+  const HandSet selection =
+      selector->select(on_table({top_down(0, 0, 0.1, 3.0), top_down(0.05, 0.155, 0.1, 2.0),
+                                 turned(top_down(-0.05, 0.12, 0.1, 1.0), 90)}),
+                       {});
+  ASSERT_EQ(grasp_count(selection), 2u);
+  EXPECT_NEAR(selection.hands[0].position_m().y(), 0.0, 1e-12);
+  EXPECT_NEAR(selection.hands[1].position_m().y(), 0.12, 1e-12) << "2 cm from the wall";
+  const auto astride = std::find_if(selection.hands.begin(), selection.hands.end(),
+                                    [](const Hand& h) { return h.position_m().y() > 0.15; });
+  ASSERT_NE(astride, selection.hands.end());
+  EXPECT_EQ(astride->rejection, Rejection::kInCollision) << "astride the wall";
+  EXPECT_NE(creation_error("bin: {center_m: [0], inner_size_m: [0.3, 0.3]}")
+                .find("'center_m' needs two numbers"),
+            std::string::npos);
+  EXPECT_NE(creation_error("bin: {center_m: [0, 0], inner_size_m: [0.3, 0.3], wall_hight_m: 1}")
+                .find("did you mean 'wall_height_m'"),
+            std::string::npos);
 }
 
 TEST_F(ClusterSelectorTest, RejectsBadParameters) {

@@ -47,8 +47,7 @@ int ClearingRun::trailing_misses() const {
 std::string ClearingRun::summary() const {
   const std::string objects = objects_at_start >= 0 ? std::to_string(objects_at_start) : "?";
   return "cleared " + std::to_string(successes()) + " of " + objects + " objects; " +
-         std::to_string(successes()) + " of " + std::to_string(attempts()) +
-         " attempts succeeded";
+         std::to_string(successes()) + " of " + std::to_string(attempts()) + " attempts succeeded";
 }
 
 }  // namespace antipode

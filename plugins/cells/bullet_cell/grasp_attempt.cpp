@@ -155,14 +155,16 @@ int close_and_lift(PhysicsWorld& world, Gripper& gripper, const AttemptOptions& 
   gripper.drive_fingers(-options.gripper.finger_speed_m_s);
   world.step(int(std::ceil(options.close_s / world.options().time_step_s)));
   r.opening_at_contact_m = gripper.aperture_m();
+  r.touching_at_closing = part_names(world, gripper.touching_parts(0.001));
   const std::set<int> pinched = gripper.pinched(tolerance);
   if (pinched.empty()) {
     r.outcome = GraspOutcome::kEmptyGrasp;
-    r.reason = approach_text(r) + "the fingers closed on nothing (" +
-               (r.between_fingers_at_detection.empty()
-                    ? std::string("no object was between the planned fingers")
-                    : "planned around " + joined(r.between_fingers_at_detection)) +
-               ")";
+    r.reason =
+        approach_text(r) + "the fingers closed on nothing (" +
+        (r.between_fingers_at_detection.empty()
+             ? std::string("no object was between the planned fingers")
+             : "planned around " + joined(r.between_fingers_at_detection)) +
+        (r.touching_at_closing.empty() ? "" : "; touching " + joined(r.touching_at_closing)) + ")";
     return -1;
   }
   r.pinched_object = world.name(*pinched.begin());

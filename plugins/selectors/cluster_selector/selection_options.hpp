@@ -6,6 +6,7 @@
 
 #include "antipode/core/parameters.hpp"
 #include "arm_reach.hpp"
+#include "bin_walls.hpp"
 
 namespace antipode::selectors {
 
@@ -19,6 +20,9 @@ struct SelectionOptions {
   /// The support's height in the hands' frame (a plane z = support_z_m, normal +z) for hand
   /// sets whose sampler found no support plane; unset: no support check then.
   std::optional<double> support_z_m;
+  /// The bin the objects lie in (a clutter box), when the cell has one: hands that reach
+  /// into its walls are dropped (kInCollision), see bin_walls.hpp.
+  std::optional<Bin> bin;
   /// Hands whose palm-face centres are this close and whose approach and closing directions
   /// are within `cluster_angle_deg` of each other (closing up to its sign) form a cluster.
   double cluster_distance_m = 0.02;

@@ -44,10 +44,10 @@ struct ClearingCycle {
 
 /// Why a run ended.
 enum class ClearingStop : std::uint8_t {
-  kRunning,      ///< not ended yet
-  kCleared,      ///< no object is left
-  kMissStreak,   ///< that many consecutive cycles found no grasp
-  kCycleLimit,   ///< the run used all its cycles
+  kRunning,     ///< not ended yet
+  kCleared,     ///< no object is left
+  kMissStreak,  ///< that many consecutive cycles found no grasp
+  kCycleLimit,  ///< the run used all its cycles
 };
 
 const char* to_string(ClearingStop stop);
@@ -58,8 +58,8 @@ struct ClearingRun {
   std::vector<ClearingCycle> cycles;
   ClearingStop stop = ClearingStop::kRunning;
 
-  int attempts() const;   ///< cycles that chose a grasp
-  int successes() const;  ///< attempts that lifted an object out = objects removed
+  int attempts() const;      ///< cycles that chose a grasp
+  int successes() const;     ///< attempts that lifted an object out = objects removed
   int objects_left() const;  ///< objects in the cell at the end (-1: unknown)
   /// Objects that left the cell without being picked (knocked off the table; -1: unknown).
   int objects_lost() const;
