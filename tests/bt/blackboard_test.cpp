@@ -166,6 +166,27 @@ trees:
   EXPECT_EQ(tree.tick_once(), Status::kSuccess);
 }
 
+// SetBlackboard with if_unset writes a default that a --set entry (or an earlier write) keeps.
+TEST_F(EntryTest, SetBlackboardIfUnsetKeepsAnEntryThatExists) {
+  const std::string yaml = R"(
+main: t
+trees:
+  t:
+    Sequence:
+      - SetBlackboard: { key: n, value: "3", if_unset: true }
+      - SetBlackboard: { key: m, value: "4", if_unset: true }
+      - SetBlackboard: { key: m, value: "6", if_unset: true }
+      - ReadInt: { in: "{n}", expect: 5 }
+      - ReadInt: { in: "{m}", expect: 4 }
+)";
+  options.overrides = {{"n", "5"}};
+  EXPECT_EQ(load(yaml).tick_once(), Status::kSuccess);
+  options.overrides = {};
+  Tree defaulted = load(yaml);
+  EXPECT_EQ(defaulted.tick_once(), Status::kFailure) << "n is 3 without --set";
+  EXPECT_EQ(defaulted.blackboard().get<std::string>("n"), "3");
+}
+
 TEST_F(EntryTest, ListLiteralsAndListEntriesReachListPorts) {
   options.overrides = {{"values", "[0.5, 1.5]"}};
   Tree tree = load(R"(

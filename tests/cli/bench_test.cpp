@@ -1,46 +1,17 @@
 // `antipode bench isolation` as a user runs it: seeded runs with a floor on success, the same
 // results for any number of processes, and one-line errors for bad options.
-#include <unistd.h>
-
 #include <filesystem>
-#include <fstream>
 
 #include <gtest/gtest.h>
-#include <nlohmann/json.hpp>
 
-#include "support/command_output.hpp"
+#include "support/bench_command.hpp"
 
 namespace {
 namespace fs = std::filesystem;
 
-using Result = antipode::testing::CommandResult;
-
-// Runs `antipode bench isolation ARGUMENTS` from the source tree (where the trees are).
-Result bench(const std::string& arguments) {
-  return antipode::testing::run_command("cd '" + std::string(ANTIPODE_TEST_SOURCE_DIR) + "' && " +
-                                        std::string(ANTIPODE_CLI) + " bench isolation " +
-                                        arguments);
-}
-
-class BenchTest : public ::testing::Test {
+class BenchTest : public antipode::testing::BenchCommandTest {
  protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() /
-           ("antipode_bench_test_" + std::to_string(::getpid()) + "_" +
-            ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-
-  nlohmann::json report(const std::string& arguments, const std::string& name) {
-    const std::string file = (dir_ / name).string();
-    const Result result = bench(arguments + " --report " + file);
-    EXPECT_EQ(result.exit_code, 0) << result.out;
-    std::ifstream in(file);
-    return in ? nlohmann::json::parse(in) : nlohmann::json();
-  }
-
-  fs::path dir_;
+  BenchTest() : BenchCommandTest("isolation") {}
 };
 
 // Ten of the procedural test shapes upright and lying, with the SVM and two views; the
@@ -93,12 +64,6 @@ TEST_F(BenchTest, TheSameResultsForAnyNumberOfProcesses) {
 }
 
 TEST_F(BenchTest, BadOptionsAreOneLineErrors) {
-  const auto expect_error = [](const std::string& args, const std::string& words) {
-    const Result r = bench(args);
-    EXPECT_EQ(r.exit_code, 2) << args << ": " << r.out;
-    EXPECT_NE(r.out.find("antipode: error: "), std::string::npos) << r.out;
-    EXPECT_NE(r.out.find(words), std::string::npos) << args << ": " << r.out;
-  };
   expect_error("--variants svm_2w", "did you mean 'svm_2v'");
   expect_error("--poses 0", "--poses must be in 1..360");
   expect_error("--jobs 0", "--jobs must be in 1..64");

@@ -110,8 +110,15 @@ trees:
   EXPECT_EQ(lines[2], "scene 7: success - 3 of 3 succeeded (100%)");
 }
 
-// One pick as the clear-the-box loop's child: capture, sample, select, execute.
-constexpr const char* kClearOneObject = R"(
+// A clear-the-box tree over a line cell with parameters `cell`: ClearBox with the port
+// `limit` (a "port: value" line, may be empty) around `child`, one pick that reports
+// {outcome}.
+std::string clearing_tree(const std::string& cell, const std::string& limit,
+                          const std::string& child) {
+  return "components:\n  cell: " + cell + R"(
+  sampler: { plugin: point_sampler }
+  selector: { plugin: best_first }
+main: pick
 trees:
   pick:
     ClearBox:
@@ -120,26 +127,29 @@ trees:
       attempt: "{attempt}"
       grasp: "{grasp}"
       run: "{run}"
+      )" + limit + R"(
       child:
-        Sequence:
+        )" + child + "\n";
+}
+
+// One pick: capture, sample, select, execute.
+constexpr const char* kPickOne = R"(Sequence:
           - CaptureCloud: { cell: cell, cloud: "{cloud}" }
           - SampleHands: { sampler: sampler, cloud: "{cloud}", hands: "{hands}" }
           - SelectGrasps: { selector: selector, hands: "{hands}", grasps: "{grasps}" }
           - ExecuteGrasp:
               { cell: cell, grasps: "{grasps}", outcome: "{outcome}", attempt: "{attempt}",
-                grasp: "{grasp}" }
-)";
+                grasp: "{grasp}" })";
 
-std::string with_cell(const std::string& cell, const std::string& trees) {
-  return "components:\n  cell: " + cell + R"(
-  sampler: { plugin: point_sampler }
-  selector: { plugin: best_first }
-main: pick
-)" + trees;
+// Runs a clear-the-box tree to its end (it must succeed) and returns its run record.
+ClearingRun run_clearing(bt::Tree tree) {
+  tree.set_log_sink([](const bt::Node&, const std::string&) {});
+  EXPECT_EQ(tree.tick_while_running(), bt::Status::kSuccess);
+  return tree.blackboard().get<ClearingRun>("run");
 }
 
 TEST_F(PipelineNodesTest, ClearBoxPicksUntilTheCellHasNoObjectLeft) {
-  bt::Tree tree = load(with_cell("{ plugin: line_cell, objects: 3 }", kClearOneObject));
+  bt::Tree tree = load(clearing_tree("{ plugin: line_cell, objects: 3 }", "", kPickOne));
   std::vector<std::string> lines;
   tree.set_log_sink([&](const bt::Node& node, const std::string& line) {
     if (node.type() == "ClearBox") lines.push_back(line);
@@ -162,20 +172,9 @@ TEST_F(PipelineNodesTest, ClearBoxPicksUntilTheCellHasNoObjectLeft) {
 }
 
 TEST_F(PipelineNodesTest, ClearBoxStopsAfterConsecutiveCyclesWithoutAGrasp) {
-  bt::Tree tree = load(with_cell("{ plugin: line_cell, objects: 4 }", R"(
-trees:
-  pick:
-    ClearBox:
-      cell: cell
-      outcome: "{outcome}"
-      max_misses: 2
-      run: "{run}"
-      child:
-        SetBlackboard: { key: outcome, value: "no grasp found" }
-)"));
-  tree.set_log_sink([](const bt::Node&, const std::string&) {});
-  ASSERT_EQ(tree.tick_while_running(), bt::Status::kSuccess);
-  const auto& run = tree.blackboard().get_ref<ClearingRun>("run");
+  const ClearingRun run = run_clearing(
+      load(clearing_tree("{ plugin: line_cell, objects: 4 }", "max_misses: 2",
+                         R"(SetBlackboard: { key: outcome, value: "no grasp found" })")));
   EXPECT_EQ(run.stop, ClearingStop::kMissStreak);
   EXPECT_EQ(run.cycles.size(), 2u);
   EXPECT_EQ(run.attempts(), 0);
@@ -184,20 +183,9 @@ trees:
 }
 
 TEST_F(PipelineNodesTest, ClearBoxEndsAfterItsCyclesWhenTheCellCannotCount) {
-  bt::Tree tree = load(with_cell("{ plugin: line_cell }", R"(
-trees:
-  pick:
-    ClearBox:
-      cell: cell
-      outcome: "{outcome}"
-      max_cycles: 4
-      run: "{run}"
-      child:
-        SetBlackboard: { key: outcome, value: "no motion plan" }
-)"));
-  tree.set_log_sink([](const bt::Node&, const std::string&) {});
-  ASSERT_EQ(tree.tick_while_running(), bt::Status::kSuccess);
-  const auto& run = tree.blackboard().get_ref<ClearingRun>("run");
+  const ClearingRun run = run_clearing(
+      load(clearing_tree("{ plugin: line_cell }", "max_cycles: 4",
+                         R"(SetBlackboard: { key: outcome, value: "no motion plan" })")));
   EXPECT_EQ(run.stop, ClearingStop::kCycleLimit);
   EXPECT_EQ(run.cycles.size(), 4u);
   EXPECT_EQ(run.attempts(), 4);  // a grasp was chosen each time, though not reached
@@ -207,30 +195,15 @@ trees:
 }
 
 TEST_F(PipelineNodesTest, ClearBoxFailsWhenItsChildFails) {
-  bt::Tree tree = load(with_cell("{ plugin: line_cell, objects: 2 }", R"(
-trees:
-  pick:
-    ClearBox:
-      cell: cell
-      outcome: "{outcome}"
-      child:
-        AlwaysFailure: {}
-)"));
+  bt::Tree tree = load(clearing_tree("{ plugin: line_cell, objects: 2 }", "", "AlwaysFailure: {}"));
   tree.set_log_sink([](const bt::Node&, const std::string&) {});
   EXPECT_EQ(tree.tick_while_running(), bt::Status::kFailure);
 }
 
 TEST_F(PipelineNodesTest, ClearBoxRejectsBadLimitsAtTheirPort) {
-  bt::Tree tree = load(with_cell("{ plugin: line_cell, objects: 2 }", R"(
-trees:
-  pick:
-    ClearBox:
-      cell: cell
-      outcome: "{outcome}"
-      max_misses: 0
-      child:
-        SetBlackboard: { key: outcome, value: "no grasp found" }
-)"));
+  bt::Tree tree =
+      load(clearing_tree("{ plugin: line_cell, objects: 2 }", "max_misses: 0",
+                         R"(SetBlackboard: { key: outcome, value: "no grasp found" })"));
   tree.set_log_sink([](const bt::Node&, const std::string&) {});
   try {
     tree.tick_while_running();

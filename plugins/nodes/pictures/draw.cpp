@@ -69,6 +69,12 @@ void draw_hand(cv::Mat& image, const OrthoView& view, const HandBody& body, cons
   }
 }
 
+Eigen::Vector3d centroid(const Cloud& cloud) {
+  Eigen::Vector3d sum = Eigen::Vector3d::Zero();
+  for (const auto& p : cloud.points_m) sum += p.cast<double>();
+  return cloud.empty() ? sum : Eigen::Vector3d(sum / static_cast<double>(cloud.size()));
+}
+
 Eigen::Vector3d default_up(const Cloud& cloud) {
   return cloud.frame == "sensor" ? Eigen::Vector3d(0, -1, 0) : Eigen::Vector3d(0, 0, 1);
 }

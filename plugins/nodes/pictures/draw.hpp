@@ -24,6 +24,9 @@ void draw_box(cv::Mat& image, const OrthoView& view, const HandBox& box,
 void draw_hand(cv::Mat& image, const OrthoView& view, const HandBody& body, const Hand& hand,
                const cv::Scalar& colour, int thickness);
 
+/// The mean of the cloud's points (the origin for an empty cloud).
+Eigen::Vector3d centroid(const Cloud& cloud);
+
 /// "Up" in pictures of `cloud`: -y for a cloud in frame "sensor", +z otherwise.
 Eigen::Vector3d default_up(const Cloud& cloud);
 

@@ -6,12 +6,6 @@
 namespace antipode::pictures {
 namespace {
 
-Eigen::Vector3d centroid(const Cloud& cloud) {
-  Eigen::Vector3d sum = Eigen::Vector3d::Zero();
-  for (const auto& p : cloud.points_m) sum += p.cast<double>();
-  return cloud.empty() ? sum : Eigen::Vector3d(sum / static_cast<double>(cloud.size()));
-}
-
 // Seen from above, "up" in the picture is the horizontal direction from the first sensor to
 // `centre` (any horizontal direction without a sensor).
 Eigen::Vector3d away_from_sensor(const Cloud& cloud, const Eigen::Vector3d& centre,

@@ -21,12 +21,6 @@ std::vector<const Hand*> best_hands(const HandSet& set, std::size_t count) {
   return hands;
 }
 
-Eigen::Vector3d centroid(const Cloud& cloud) {
-  Eigen::Vector3d sum = Eigen::Vector3d::Zero();
-  for (const auto& p : cloud.points_m) sum += p.cast<double>();
-  return cloud.empty() ? sum : Eigen::Vector3d(sum / static_cast<double>(cloud.size()));
-}
-
 // Where the picture looks and how much it shows: around the hands, else the whole cloud.
 std::pair<Eigen::Vector3d, double> framing(const Cloud& cloud,
                                            const std::vector<const Hand*>& hands) {

@@ -9,7 +9,8 @@
 namespace antipode::pipeline {
 namespace {
 
-// True when `outcome` names one of the cell's outcomes: the cell executed the grasp.
+// True when `outcome` names one of the cell's outcomes: the cell executed the grasp
+// (GraspOutcome's enumerators run from kSuccess to kNotExecuted).
 bool cell_executed(const std::string& outcome) {
   for (auto o = int(GraspOutcome::kSuccess); o <= int(GraspOutcome::kNotExecuted); ++o)
     if (outcome == to_string(GraspOutcome(o))) return true;
@@ -32,9 +33,10 @@ class ClearBox final : public bt::DecoratorNode {
             bt::NodeCategory::kDecorator,
             {bt::component_port<Cell>("cell", "the cell whose objects are picked (it counts them)"),
              bt::input_port<std::string>("outcome", "the child's outcome of each cycle"),
-             bt::input_port<GraspAttempt>("attempt", GraspAttempt{},
-                                          "the cell's record, read when a grasp was executed"),
-             bt::input_port<Hand>("grasp", Hand{}, "the grasp executed, read with `attempt`"),
+             bt::input_port<GraspAttempt>("attempt",
+                                          "the cell's record, read when the cell executed the "
+                                          "cycle's grasp (`outcome` is a cell outcome)"),
+             bt::input_port<Hand>("grasp", "the grasp executed, read with `attempt`"),
              bt::input_port<int>("max_cycles", 0,
                                  "cycles at most; 0 = twice the objects at the start (20 when "
                                  "the cell cannot count them)"),

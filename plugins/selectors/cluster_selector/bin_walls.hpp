@@ -4,7 +4,10 @@
 // (seen from the cloud, the wall's points between the fingers look like an object's), so the
 // selector drops every hand whose body or closing region reaches into a wall.
 
+#include <utility>
 #include <vector>
+
+#include <fcl/geometry/shape/box.h>
 
 #include <Eigen/Core>
 
@@ -23,12 +26,20 @@ struct Bin {
   double wall_thickness_m = 0.01;
 };
 
-/// The bin's four walls, each filled with points on a grid no coarser than `step_m`.
-std::vector<Eigen::Vector3d> wall_points(const Bin& bin, double step_m = 0.005);
+/// Tells whether a hand reaches into the bin's walls: the box that bounds its fingers, palm
+/// and the closing region between the fingers (hand_body.hpp), at the hand's pose, overlaps
+/// (or touches) a wall - FCL's exact box-box test. Made once per hand geometry; a check
+/// allocates nothing unless the boxes overlap.
+class BinWalls {
+ public:
+  BinWalls(const Bin& bin, const HandBody& body);
 
-/// True when a point of `walls` lies in the box that bounds the hand's fingers, palm and the
-/// closing region between the fingers (hand_body.hpp) at the hand's pose.
-bool reaches_into_wall(const Hand& hand, const HandBody& body,
-                       const std::vector<Eigen::Vector3d>& walls);
+  bool reached_by(const Hand& hand) const;
+
+ private:
+  fcl::Boxd hand_box_;
+  Eigen::Vector3d hand_box_center_;  ///< in the hand frame
+  std::vector<std::pair<fcl::Boxd, fcl::Transform3d>> walls_;
+};
 
 }  // namespace antipode::selectors

@@ -43,13 +43,11 @@ double aperture_penalty(double width_m, const HandGeometry& geometry, double mar
 }
 
 ClusterSelector::ClusterSelector(const SelectionOptions& options) : options_(options) {
-  if (options_.bin) bin_walls_ = wall_points(*options_.bin);
   if (!options_.arm.robot_file.empty()) arm_ = std::make_shared<const ArmReach>(options_.arm);
 }
 
 ClusterSelector::ClusterSelector(const Parameters& params)
     : options_(read_selection_options(params)) {
-  if (options_.bin) bin_walls_ = wall_points(*options_.bin);
   if (options_.arm.robot_file.empty()) return;
   try {
     arm_ = std::make_shared<const ArmReach>(options_.arm);
@@ -66,11 +64,12 @@ HandSet ClusterSelector::select(const HandSet& in, const SelectionContext& conte
     support = SupportPlane{Eigen::Vector3f::UnitZ(), float(-*options_.support_z_m), 0};
   }
   const HandBody body = make_hand_body(g);
+  std::optional<BinWalls> bin_walls;
+  if (options_.bin) bin_walls.emplace(*options_.bin, body);
   const auto feasible = [&](const Hand& hand) {
     if (support && !clears_support(hand, g, *support, options_.standoff_m, options_.clearance_m))
       return Rejection::kBelowSupport;
-    if (!bin_walls_.empty() && reaches_into_wall(hand, body, bin_walls_))
-      return Rejection::kInCollision;
+    if (bin_walls && bin_walls->reached_by(hand)) return Rejection::kInCollision;
     if (hand.width_m < g.min_aperture_m || hand.width_m > g.max_aperture_m)
       return Rejection::kApertureLimit;
     return Rejection::kNone;

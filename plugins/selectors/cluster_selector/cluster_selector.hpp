@@ -38,8 +38,7 @@ class ClusterSelector final : public GraspSelector {
 
  private:
   SelectionOptions options_;
-  std::shared_ptr<const ArmReach> arm_;     // null for a free-floating hand
-  std::vector<Eigen::Vector3d> bin_walls_;  // points filling the bin's walls; none without one
+  std::shared_ptr<const ArmReach> arm_;  // null for a free-floating hand
 };
 
 }  // namespace antipode::selectors

@@ -28,7 +28,7 @@ enum class GraspOutcome : std::uint8_t {
   kEmptyGrasp,
   kSlipped,
   kObjectKnockedOut,
-  kNotExecuted,
+  kNotExecuted,  ///< stays last: code iterates kSuccess .. kNotExecuted
 };
 
 const char* to_string(GraspOutcome outcome);
