@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <map>
 
 #include "antipode/core/error.hpp"
 #include "exit_codes.hpp"
@@ -30,13 +31,13 @@ int wait_for(pid_t pid) {
 }
 
 // The body of worker `job`: its share of the tasks, each record a line of its file.
-int run_share(const fs::path& file_path, std::size_t count, int job, int jobs,
+int run_share(const fs::path& file_path, const std::vector<std::size_t>& tasks, int job, int jobs,
               const BenchTaskRunner& run, const BenchProgressLine& progress) {
   try {
     std::ofstream file(file_path);
     const Session session = open_session();
-    for (std::size_t i = std::size_t(job); i < count; i += std::size_t(jobs)) {
-      const Json record = run(session, i);
+    for (std::size_t k = std::size_t(job); k < tasks.size(); k += std::size_t(jobs)) {
+      const Json record = run(session, tasks[k]);
       file << record.dump() << "\n" << std::flush;
       const std::string line = progress(record);
       if (::write(STDOUT_FILENO, line.data(), line.size()) < 0) return kExitInternalError;
@@ -48,16 +49,20 @@ int run_share(const fs::path& file_path, std::size_t count, int job, int jobs,
   }
 }
 
-std::vector<Json> read_records(const fs::path& folder, std::size_t count, int jobs) {
-  std::vector<Json> records(count);
+// The records of `tasks` in their order (null where a worker wrote none).
+std::vector<Json> read_records(const fs::path& folder, const std::vector<std::size_t>& tasks,
+                               int jobs) {
+  std::map<std::size_t, Json> by_task;
   for (int job = 0; job < jobs; ++job) {
     std::ifstream file(folder / ("job-" + std::to_string(job) + ".jsonl"));
     for (std::string line; std::getline(file, line);) {
       Json record = Json::parse(line);
       const auto index = record.at("task").get<std::size_t>();
-      records.at(index) = std::move(record);
+      by_task[index] = std::move(record);
     }
   }
+  std::vector<Json> records;
+  for (const std::size_t task : tasks) records.push_back(std::move(by_task[task]));
   return records;
 }
 
@@ -80,13 +85,13 @@ void check_in_child(const std::function<void(const Session&)>& check) {
   if (const int code = wait_for(pid); code != kExitSuccess) throw BenchStopped{code};
 }
 
-std::vector<Json> run_bench_tasks(std::size_t count, int jobs, const BenchTaskRunner& run,
-                                  const BenchProgressLine& progress) {
+std::vector<Json> run_bench_tasks(const std::vector<std::size_t>& tasks, int jobs,
+                                  const BenchTaskRunner& run, const BenchProgressLine& progress) {
   if (jobs == 1) {
     const Session session = open_session();
     std::vector<Json> records;
-    for (std::size_t i = 0; i < count; ++i) {
-      records.push_back(run(session, i));
+    for (const std::size_t task : tasks) {
+      records.push_back(run(session, task));
       std::cout << progress(records.back()) << std::flush;
     }
     return records;
@@ -101,14 +106,14 @@ std::vector<Json> run_bench_tasks(std::size_t count, int jobs, const BenchTaskRu
     if (pid < 0) throw Error("cannot start a benchmark process");
     if (pid == 0) {
       const fs::path file = folder / ("job-" + std::to_string(job) + ".jsonl");
-      std::_Exit(run_share(file, count, job, jobs, run, progress));
+      std::_Exit(run_share(file, tasks, job, jobs, run, progress));
     }
     children.push_back(pid);
   }
   int failed = 0;
   for (const pid_t pid : children)
     if (const int code = wait_for(pid); code != kExitSuccess) failed = code;
-  std::vector<Json> records = read_records(folder, count, jobs);
+  std::vector<Json> records = read_records(folder, tasks, jobs);
   fs::remove_all(folder);
   if (failed != 0) throw Error("a benchmark process failed (see its message above)");
   for (const Json& record : records)

@@ -1,8 +1,8 @@
 #pragma once
 // Running a benchmark's tasks in forked processes: each process opens its own session (plugins
-// and nodes), runs every task whose index is its number modulo the process count, and writes
-// one JSON record per task; the records come back in task order, so a report is the same for
-// any number of processes.
+// and nodes), runs every task whose position in the list is its number modulo the process
+// count, and writes one JSON record per task; the records come back in task order, so a
+// report is the same for any number of processes.
 
 #include <cstddef>
 #include <functional>
@@ -29,10 +29,10 @@ using BenchProgressLine = std::function<std::string(const nlohmann::ordered_json
 /// workers); an error there is printed once and thrown here as BenchStopped.
 void check_in_child(const std::function<void(const Session&)>& check);
 
-/// Runs tasks 0 .. count-1 in `jobs` processes (in this one when `jobs` is 1), printing each
-/// record's progress line as it finishes; returns the records in task order. Throws
-/// antipode::Error when a process failed (its message printed above).
-std::vector<nlohmann::ordered_json> run_bench_tasks(std::size_t count, int jobs,
+/// Runs the tasks numbered in `tasks` in `jobs` processes (in this one when `jobs` is 1),
+/// printing each record's progress line as it finishes; returns the records in the order of
+/// `tasks`. Throws antipode::Error when a process failed (its message printed above).
+std::vector<nlohmann::ordered_json> run_bench_tasks(const std::vector<std::size_t>& tasks, int jobs,
                                                     const BenchTaskRunner& run,
                                                     const BenchProgressLine& progress);
 

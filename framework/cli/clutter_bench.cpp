@@ -15,6 +15,7 @@
 #include "antipode/interfaces/clearing_run.hpp"
 #include "bench_processes.hpp"
 #include "bench_report.hpp"
+#include "bench_shard.hpp"
 #include "bench_task.hpp"
 #include "commands.hpp"
 #include "exit_codes.hpp"
@@ -152,7 +153,9 @@ Json rate(int k, int n) {
   return {{"rate", n > 0 ? double(k) / n : 0.0}, {"ci95", {lo, hi}}};
 }
 
-void print_summary(std::ostream& out, const Json& s) {
+}  // namespace
+
+void print_clutter_summary(std::ostream& out, const Json& s) {
   const auto pct = [](double v) {
     std::ostringstream t;
     t << std::fixed << std::setprecision(1) << 100 * v;
@@ -178,8 +181,6 @@ void print_summary(std::ostream& out, const Json& s) {
   for (const auto& [stop, count] : s["stops"].items()) out << "  " << stop << " " << count;
   out << "\nmedian seconds: cycle " << s["cycle_s_median"] << ", run " << s["run_s_median"] << "\n";
 }
-
-}  // namespace
 
 Json summarise_clutter(const Json& runs) {
   int attempts = 0, successes = 0, objects = 0, lost = 0, cycles = 0, no_grasp = 0, errors = 0;
@@ -228,6 +229,9 @@ Json summarise_clutter(const Json& runs) {
 
 int bench_clutter_command(const ClutterBenchOptions& o) {
   check_options(o);
+  const BenchShard shard = parse_shard(o.shard);
+  require_shard_report(shard, o.report_path);
+  const std::vector<std::size_t> tasks = shard_tasks(std::size_t(o.runs), shard);
   RunSettings settings;
   settings.tree_path = o.tree_path;
   std::ifstream tree_file(o.tree_path);
@@ -237,7 +241,9 @@ int bench_clutter_command(const ClutterBenchOptions& o) {
   settings.entries = shared_entries(o, settings.threads);
 
   std::cout << "clutter bench: " << o.runs << " runs of " << o.objects_per_run << " objects ("
-            << o.objects << "), " << o.jobs << " process(es)\n";
+            << o.objects << "), " << o.jobs << " process(es)";
+  if (!shard.whole()) std::cout << "; " << shard.str() << ": " << tasks.size() << " runs";
+  std::cout << "\n";
   const auto start = std::chrono::steady_clock::now();
   // With several processes, a tree that cannot load is one error line, not one per process.
   if (o.jobs > 1) {
@@ -248,7 +254,7 @@ int bench_clutter_command(const ClutterBenchOptions& o) {
     }
   }
   std::vector<Json> records = run_bench_tasks(
-      std::size_t(o.runs), o.jobs,
+      tasks, o.jobs,
       [&](const Session& session, std::size_t i) {
         return run_one(session, settings, i, o.seed + i);
       },
@@ -260,23 +266,24 @@ int bench_clutter_command(const ClutterBenchOptions& o) {
   for (auto& record : records) runs.push_back(std::move(record));
   const Json summary = summarise_clutter(runs);
   std::cout << "\n";
-  print_summary(std::cout, summary);
+  print_clutter_summary(std::cout, summary);
   std::cout << "wall time " << wall_s << " s\n";
   if (!o.report_path.empty()) {
-    const Json report = {{"bench", "clutter"},
-                         {"tree", o.tree_path},
-                         {"objects", o.objects},
-                         {"runs", o.runs},
-                         {"objects_per_run", o.objects_per_run},
-                         {"seed", o.seed},
-                         {"noise", o.noise.empty() ? "tree" : o.noise},
-                         {"overrides", o.set},
-                         {"jobs", o.jobs},
-                         {"threads_per_job", settings.threads},
-                         {"cores", cores},
-                         {"wall_s", wall_s},
-                         {"summary", summary},
-                         {"run_records", runs}};
+    Json report = {{"bench", "clutter"},
+                   {"tree", o.tree_path},
+                   {"objects", o.objects},
+                   {"runs", o.runs},
+                   {"objects_per_run", o.objects_per_run},
+                   {"seed", o.seed},
+                   {"noise", o.noise.empty() ? "tree" : o.noise},
+                   {"overrides", o.set},
+                   {"jobs", o.jobs},
+                   {"threads_per_job", settings.threads},
+                   {"cores", cores},
+                   {"wall_s", wall_s},
+                   {"summary", summary},
+                   {"run_records", runs}};
+    if (!shard.whole()) report["shard"] = shard_json(shard, std::size_t(o.runs));
     write_report(std::cout, o.report_path, report);
   }
   return summary["errors"].get<int>() > 0 ? kExitInternalError : kExitSuccess;

@@ -5,6 +5,7 @@
 // docs/results.md).
 
 #include <cstdint>
+#include <ostream>
 #include <string>
 #include <vector>
 
@@ -22,6 +23,7 @@ struct ClutterBenchOptions {
   std::string tree_path = "trees/clear_box.yaml";
   std::string noise;             ///< the cell's sensor noise scale ("" = the tree's)
   std::vector<std::string> set;  ///< --set overrides of the tree, applied last
+  std::string shard;             ///< "i/n": run only that shard of the runs ("" = all)
 };
 
 /// Runs the clear-the-box runs in `jobs` processes (the same results for any number), prints
@@ -35,5 +37,8 @@ int bench_clutter_command(const ClutterBenchOptions& options);
 /// perception, dropped, collision, reach, other), stops and the median seconds of a cycle
 /// and of a run.
 nlohmann::ordered_json summarise_clutter(const nlohmann::ordered_json& runs);
+
+/// Prints a clutter report's summary as the bench does after its runs.
+void print_clutter_summary(std::ostream& out, const nlohmann::ordered_json& summary);
 
 }  // namespace antipode::cli

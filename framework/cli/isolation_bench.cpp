@@ -11,6 +11,7 @@
 #include "antipode/core/error.hpp"
 #include "bench_processes.hpp"
 #include "bench_report.hpp"
+#include "bench_shard.hpp"
 #include "bench_task.hpp"
 #include "commands.hpp"
 #include "exit_codes.hpp"
@@ -109,6 +110,8 @@ void check_every_variant_loads(const TaskSettings& settings, const std::vector<B
 
 int bench_isolation_command(const IsolationBenchOptions& o) {
   check_options(o);
+  const BenchShard shard = parse_shard(o.shard);
+  require_shard_report(shard, o.report_path);
   const std::vector<const BenchVariant*> variants = chosen_variants(o.variants);
   const std::vector<BenchObject> objects = bench_objects(o.objects, o.procedural_file);
   const std::vector<BenchTask> tasks = plan(o, objects, variants);
@@ -128,7 +131,10 @@ int bench_isolation_command(const IsolationBenchOptions& o) {
   for (const BenchVariant* v : variants) variant_names.push_back(v->name);
   std::cout << "isolation bench: " << objects.size() << " objects, " << o.poses << " poses, "
             << tasks.size() / variants.size() << " attempts for each of " << variant_names.size()
-            << " variants, " << o.jobs << " process(es)\n";
+            << " variants, " << o.jobs << " process(es)";
+  const std::vector<std::size_t> shard_indices = shard_tasks(tasks.size(), shard);
+  if (!shard.whole()) std::cout << "; " << shard.str() << ": " << shard_indices.size() << " tasks";
+  std::cout << "\n";
   const auto start = std::chrono::steady_clock::now();
   if (o.jobs > 1) {
     try {
@@ -138,7 +144,7 @@ int bench_isolation_command(const IsolationBenchOptions& o) {
     }
   }
   std::vector<Json> records = run_bench_tasks(
-      tasks.size(), o.jobs,
+      shard_indices, o.jobs,
       [&](const Session& session, std::size_t i) { return run_task(session, settings, tasks[i]); },
       [&](const Json& record) { return progress_line(record, tasks.size()); });
   const double wall_s =
@@ -153,23 +159,24 @@ int bench_isolation_command(const IsolationBenchOptions& o) {
   if (!o.report_path.empty()) {
     Json names = Json::array();
     for (const auto& object : objects) names.push_back(object.name);
-    const Json report = {{"bench", "isolation"},
-                         {"tree", o.tree_path},
-                         {"objects", o.objects},
-                         {"object_names", names},
-                         {"held_out", o.held_out},
-                         {"poses", o.poses},
-                         {"attempts_per_variant", tasks.size() / variants.size()},
-                         {"seed", o.seed},
-                         {"noise", o.noise.empty() ? "tree" : o.noise},
-                         {"overrides", o.set},
-                         {"variants", variant_names},
-                         {"jobs", o.jobs},
-                         {"threads_per_job", settings.threads},
-                         {"cores", cores},
-                         {"wall_s", wall_s},
-                         {"summary", summary},
-                         {"attempts", attempts}};
+    Json report = {{"bench", "isolation"},
+                   {"tree", o.tree_path},
+                   {"objects", o.objects},
+                   {"object_names", names},
+                   {"held_out", o.held_out},
+                   {"poses", o.poses},
+                   {"attempts_per_variant", tasks.size() / variants.size()},
+                   {"seed", o.seed},
+                   {"noise", o.noise.empty() ? "tree" : o.noise},
+                   {"overrides", o.set},
+                   {"variants", variant_names},
+                   {"jobs", o.jobs},
+                   {"threads_per_job", settings.threads},
+                   {"cores", cores},
+                   {"wall_s", wall_s},
+                   {"summary", summary},
+                   {"attempts", attempts}};
+    if (!shard.whole()) report["shard"] = shard_json(shard, tasks.size());
     write_report(std::cout, o.report_path, report);
   }
   return kExitSuccess;

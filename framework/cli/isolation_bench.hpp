@@ -24,6 +24,7 @@ struct IsolationBenchOptions {
   std::string noise;                  ///< the cell's sensor noise scale ("" = the tree's)
   std::vector<std::string> held_out;  ///< object names reported apart
   std::vector<std::string> set;       ///< --set overrides of the tree, applied last
+  std::string shard;                  ///< "i/n": run only that shard of the attempts ("" = all)
 };
 
 /// Plans the attempts (object i % objects, pose (i / objects) % poses), runs them in

@@ -5,6 +5,7 @@
 
 #include "antipode/config.hpp"
 #include "antipode/core/error.hpp"
+#include "bench_merge.hpp"
 #include "clutter_bench.hpp"
 #include "commands.hpp"
 #include "exit_codes.hpp"
@@ -21,6 +22,8 @@ constexpr const char* kExamples = R"(Examples:
   antipode scene scenes/pile_procedural.yaml --image scene.png
   antipode bench isolation --objects ../shared/data/objects/ycb --jobs 2 --report iso.json
   antipode bench clutter --runs 10 --jobs 2 --report clutter.json
+  antipode bench clutter --shard 2/4 --report shard2.json
+  antipode bench merge shard*.json --report clutter.json
   antipode bench reach --ik-poses 10000 --scenes 100 --report reach.json
   antipode train --out my.model --dataset examples.data
   antipode eval-classifier --model my.model --report eval.json
@@ -40,6 +43,7 @@ struct Commands {
   antipode::cli::IsolationBenchOptions isolation;
   antipode::cli::ReachBenchOptions reach;
   antipode::cli::ClutterBenchOptions clutter;
+  antipode::cli::BenchMergeOptions merge;
   std::string validate_path;
   std::string node_type;  ///< `antipode nodes [TYPE]`
 };
@@ -145,6 +149,8 @@ void add_bench_clutter(CLI::App& bench, antipode::cli::ClutterBenchOptions& o) {
   clutter->add_option("--tree", o.tree_path, "The clear-the-box tree")->capture_default_str();
   clutter->add_option("--noise", o.noise, "The cell's sensor noise scale (default: the tree's)");
   clutter->add_option("--set", o.set, "Override a tree entry or component parameter");
+  clutter->add_option("--shard", o.shard,
+                      "i/n: run every n-th run from the i-th (then bench merge)");
 }
 
 void add_bench(CLI::App& app, Commands& commands) {
@@ -177,8 +183,14 @@ void add_bench(CLI::App& app, Commands& commands) {
   isolation->add_option("--held-out", o.held_out, "Objects reported apart (comma-separated)")
       ->delimiter(',');
   isolation->add_option("--set", o.set, "Override a tree entry or component parameter");
+  isolation->add_option("--shard", o.shard,
+                        "i/n: run every n-th attempt from the i-th (then bench merge)");
   add_bench_reach(*bench, commands.reach);
   add_bench_clutter(*bench, commands.clutter);
+  CLI::App* merge = bench->add_subcommand(
+      "merge", "Join the reports of a bench's shards (--shard i/n) into one report");
+  merge->add_option("reports", commands.merge.reports, "The shards' JSON reports")->required();
+  merge->add_option("--report", commands.merge.report_path, "Write the merged report as JSON");
 }
 
 int dispatch(const CLI::App& app, const Commands& commands) {
@@ -195,6 +207,7 @@ int dispatch(const CLI::App& app, const Commands& commands) {
   if (app.got_subcommand("bench")) {
     const CLI::App* bench = app.get_subcommand("bench");
     if (bench->got_subcommand("reach")) return antipode::cli::bench_reach_command(commands.reach);
+    if (bench->got_subcommand("merge")) return antipode::cli::bench_merge_command(commands.merge);
     if (bench->got_subcommand("clutter")) {
       return antipode::cli::bench_clutter_command(commands.clutter);
     }

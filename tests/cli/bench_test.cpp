@@ -1,6 +1,7 @@
 // `antipode bench isolation` as a user runs it: seeded runs with a floor on success, the same
 // results for any number of processes, and one-line errors for bad options.
 #include <filesystem>
+#include <fstream>
 
 #include <gtest/gtest.h>
 
@@ -8,6 +9,7 @@
 
 namespace {
 namespace fs = std::filesystem;
+using antipode::testing::without_seconds;
 
 class BenchTest : public antipode::testing::BenchCommandTest {
  protected:
@@ -63,7 +65,23 @@ TEST_F(BenchTest, TheSameResultsForAnyNumberOfProcesses) {
     EXPECT_EQ(one["summary"][variant]["successes"], two["summary"][variant]["successes"]);
 }
 
+TEST_F(BenchTest, ShardsMergedGiveTheWholeBenchsReport) {
+  const std::string args = "--objects procedural --variants a_2v,nc_1v --attempts 3 --poses 2";
+  const auto whole = report(args, "whole.json");
+  report(args + " --shard 1/2", "1.json");
+  const auto second = report(args + " --shard 2/2", "2.json");
+  ASSERT_EQ(second["attempts"].size(), 3u);  // tasks 1, 3 and 5 of 6
+  const auto merge = antipode("bench merge " + file("1.json") + " " + file("2.json") +
+                              " --report " + file("merged.json"));
+  ASSERT_EQ(merge.exit_code, 0) << merge.out;
+  std::ifstream in(file("merged.json"));
+  const auto merged = nlohmann::json::parse(in);
+  EXPECT_EQ(without_seconds(merged["summary"]), without_seconds(whole["summary"]));
+  EXPECT_EQ(without_seconds(merged["attempts"]), without_seconds(whole["attempts"]));
+}
+
 TEST_F(BenchTest, BadOptionsAreOneLineErrors) {
+  expect_error("--shard 0/2 --report x.json", "--shard: '0/2' is not i/n");
   expect_error("--variants svm_2w", "did you mean 'svm_2v'");
   expect_error("--poses 0", "--poses must be in 1..360");
   expect_error("--jobs 0", "--jobs must be in 1..64");

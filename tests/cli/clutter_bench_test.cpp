@@ -3,9 +3,14 @@
 // processes, and one-line errors for bad options.
 #include <gtest/gtest.h>
 
+#include <fstream>
+
 #include "support/bench_command.hpp"
 
 namespace {
+
+using antipode::testing::CommandResult;
+using antipode::testing::without_seconds;
 
 class ClutterBenchTest : public antipode::testing::BenchCommandTest {
  protected:
@@ -58,7 +63,53 @@ TEST_F(ClutterBenchTest, TheSameResultsForAnyNumberOfProcesses) {
   EXPECT_EQ(one["summary"]["successes"], two["summary"]["successes"]);
 }
 
+// Three runs in two shards, merged in either order, give the report of the whole bench (but
+// for the seconds it took).
+TEST_F(ClutterBenchTest, ShardsMergedGiveTheWholeBenchsReport) {
+  const std::string args = "--runs 3 --objects-per-run 2 --seed 7";
+  const auto whole = report(args, "whole.json");
+  const auto second = report(args + " --shard 2/2", "2.json");
+  ASSERT_EQ(second["run_records"].size(), 1u);  // runs 1, 3 and 2
+  EXPECT_EQ(second["shard"]["index"], 2);
+  report(args + " --shard 1/2", "1.json");
+  const CommandResult merge = antipode("bench merge " + file("2.json") + " " + file("1.json") +
+                                       " --report " + file("merged.json"));
+  ASSERT_EQ(merge.exit_code, 0) << merge.out;
+  std::ifstream in(file("merged.json"));
+  const auto merged = nlohmann::json::parse(in);
+  EXPECT_EQ(without_seconds(merged["summary"]), without_seconds(whole["summary"]));
+  EXPECT_EQ(without_seconds(merged["run_records"]), without_seconds(whole["run_records"]));
+  EXPECT_EQ(merged["shards"], 2);
+  EXPECT_FALSE(merged.contains("shard"));
+  // The console shows the same tallies as the whole bench's.
+  EXPECT_NE(merge.out.find("grasp success " + whole["summary"]["successes"].dump() + " / " +
+                           whole["summary"]["attempts"].dump()),
+            std::string::npos)
+      << merge.out;
+}
+
+TEST_F(ClutterBenchTest, MergeRefusesShardsThatAreNotOneWholeBench) {
+  const std::string args = "--runs 2 --objects-per-run 1";
+  report(args + " --seed 7 --shard 1/2", "1.json");
+  report(args + " --seed 8 --shard 2/2", "2_other.json");
+  report(args + " --seed 7", "whole.json");
+  const auto merge_error = [&](const std::string& files, const std::string& words) {
+    const CommandResult r = antipode("bench merge " + files);
+    EXPECT_EQ(r.exit_code, 2) << files << ": " << r.out;
+    EXPECT_NE(r.out.find("antipode: error: "), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find(words), std::string::npos) << files << ": " << r.out;
+  };
+  merge_error(file("1.json") + " " + file("2_other.json"), "entry \"seed\" differs");
+  merge_error(file("1.json"), "shards 2 of 2 are missing");
+  merge_error(file("1.json") + " " + file("1.json"), "shard 1 given twice");
+  merge_error(file("whole.json"), "not a shard's report");
+  merge_error(file("none.json"), "cannot read the report");
+}
+
 TEST_F(ClutterBenchTest, BadOptionsAreOneLineErrors) {
+  expect_error("--shard 3/2 --report x.json", "--shard: '3/2' is not i/n");
+  expect_error("--shard 1/0 --report x.json", "is not i/n");
+  expect_error("--shard 1/2", "needs --report");
   expect_error("--runs 0", "--runs must be in 1..100000");
   expect_error("--objects-per-run 0", "--objects-per-run must be in 1..100");
   expect_error("--jobs 0", "--jobs must be in 1..64");

@@ -127,9 +127,11 @@ trees:
       attempt: "{attempt}"
       grasp: "{grasp}"
       run: "{run}"
-      )" + limit + R"(
+      )" +
+         limit + R"(
       child:
-        )" + child + "\n";
+        )" +
+         child + "\n";
 }
 
 // One pick: capture, sample, select, execute.
@@ -217,6 +219,64 @@ TEST_F(PipelineNodesTest, ClearBoxRejectsBadLimitsAtTheirPort) {
 
 // Up to the planning of the selection's grasps, with a planner that searches for a minute
 // unless its stop token asks it to stop.
+// A cycle of a clearing run that executed `grasp` (a hand at `x_m` on the x axis).
+ClearingCycle executed_cycle(const std::string& outcome, double x_m, int before, int after) {
+  ClearingCycle cycle;
+  cycle.outcome = outcome;
+  cycle.attempt = GraspAttempt{};
+  Hand grasp;
+  grasp.X_FrameHand.translation() = Eigen::Vector3d(x_m, 0.0, 0.0);
+  cycle.grasp = grasp;
+  cycle.objects_before = before;
+  cycle.objects_after = after;
+  return cycle;
+}
+
+class AvoidFailedGraspsTest : public PipelineNodesTest {
+ protected:
+  // The x coordinates of the hands AvoidFailedGrasps keeps of hands at x = 0, 0.01, 0.03,
+  // 0.1 after the cycles of `run`; empty when it fails.
+  std::vector<double> kept_after(const ClearingRun& run);
+};
+
+std::vector<double> AvoidFailedGraspsTest::kept_after(const ClearingRun& run) {
+  bt::Tree tree = load(R"(
+main: avoid
+trees:
+  avoid:
+    AvoidFailedGrasps: { hands: "{hands}", run: "{run}", kept: "{kept}" }
+)");
+  auto hands = std::make_shared<HandSet>();
+  for (double x : {0.0, 0.01, 0.03, 0.1}) {
+    Hand hand;
+    hand.X_FrameHand.translation() = Eigen::Vector3d(x, 0.0, 0.0);
+    hands->hands.push_back(hand);
+  }
+  tree.blackboard().set<HandSetPtr>("hands", hands);
+  tree.blackboard().set<ClearingRun>("run", run);
+  tree.set_log_sink([](const bt::Node&, const std::string&) {});
+  if (tree.tick_while_running() != bt::Status::kSuccess) return {};
+  std::vector<double> xs;
+  for (const Hand& hand : tree.blackboard().get<HandSetPtr>("kept")->hands)
+    xs.push_back(hand.position_m().x());
+  return xs;
+}
+
+TEST_F(AvoidFailedGraspsTest, DropsHandsWhereAGraspFailedSinceTheLastRemoval) {
+  ClearingRun run;
+  EXPECT_EQ(kept_after(run), (std::vector<double>{0.0, 0.01, 0.03, 0.1}));
+  run.cycles.push_back(executed_cycle("empty grasp", 0.0, 4, 4));
+  run.cycles.push_back(executed_cycle("no grasp found", 0.0, 4, 4));
+  run.cycles.back().attempt.reset();  // a cycle without a grasp: nothing to avoid
+  EXPECT_EQ(kept_after(run), (std::vector<double>{0.03, 0.1}));  // within 2 cm of 0
+  run.cycles.push_back(executed_cycle("success", 0.1, 4, 3));    // the scene changed
+  EXPECT_EQ(kept_after(run), (std::vector<double>{0.0, 0.01, 0.03, 0.1}));
+  run.cycles.push_back(executed_cycle("slipped", 0.1, 3, 3));
+  EXPECT_EQ(kept_after(run), (std::vector<double>{0.0, 0.01, 0.03}));
+  run.cycles.push_back(executed_cycle("empty grasp", 0.015, 3, 3));
+  EXPECT_EQ(kept_after(run), (std::vector<double>{}));  // every hand dropped: FAILURE
+}
+
 constexpr const char* kEndlessPlanning = R"(
 components:
   cell: { plugin: line_cell, points: 5 }

@@ -15,6 +15,24 @@
 
 namespace antipode::testing {
 
+/// `value` without the entries that measure time (keys "seconds", "*_s", "*_s_*"): what must
+/// be equal between two runs of one bench.
+inline nlohmann::json without_seconds(const nlohmann::json& value) {
+  if (value.is_array()) {
+    nlohmann::json out = nlohmann::json::array();
+    for (const auto& item : value) out.push_back(without_seconds(item));
+    return out;
+  }
+  if (!value.is_object()) return value;
+  nlohmann::json out = nlohmann::json::object();
+  for (const auto& [key, item] : value.items()) {
+    const bool timing = key == "seconds" || key.find("_s_") != std::string::npos ||
+                        (key.size() > 2 && key.compare(key.size() - 2, 2, "_s") == 0);
+    if (!timing) out[key] = without_seconds(item);
+  }
+  return out;
+}
+
 class BenchCommandTest : public ::testing::Test {
  protected:
   /// `subcommand`: "isolation", "clutter", ...
@@ -28,18 +46,26 @@ class BenchCommandTest : public ::testing::Test {
   }
   void TearDown() override { std::filesystem::remove_all(dir_); }
 
+  /// Runs `antipode ARGUMENTS` (any command) from the source tree.
+  CommandResult antipode(const std::string& arguments) const {
+    return run_command("cd '" + std::string(ANTIPODE_TEST_SOURCE_DIR) + "' && " +
+                       std::string(ANTIPODE_CLI) + " " + arguments);
+  }
+
   /// Runs `antipode bench SUBCOMMAND ARGUMENTS`.
   CommandResult bench(const std::string& arguments) const {
-    return run_command("cd '" + std::string(ANTIPODE_TEST_SOURCE_DIR) + "' && " +
-                       std::string(ANTIPODE_CLI) + " bench " + subcommand_ + " " + arguments);
+    return antipode("bench " + subcommand_ + " " + arguments);
   }
+
+  /// DIR/NAME: a file in the test's own temporary folder.
+  std::string file(const std::string& name) const { return (dir_ / name).string(); }
 
   /// Runs it with `--report DIR/NAME`, expects exit 0 and returns the report (null if none).
   nlohmann::json report(const std::string& arguments, const std::string& name) const {
-    const std::string file = (dir_ / name).string();
-    const CommandResult result = bench(arguments + " --report " + file);
+    const std::string path = file(name);
+    const CommandResult result = bench(arguments + " --report " + path);
     EXPECT_EQ(result.exit_code, 0) << result.out;
-    std::ifstream in(file);
+    std::ifstream in(path);
     return in ? nlohmann::json::parse(in) : nlohmann::json();
   }
 

@@ -20,5 +20,6 @@ void register_reset_scene(bt::NodeRegistry& registry);
 void register_select_views(bt::NodeRegistry& registry);
 void register_record_outcome(bt::NodeRegistry& registry);
 void register_clear_box(bt::NodeRegistry& registry);
+void register_avoid_failed_grasps(bt::NodeRegistry& registry);
 
 }  // namespace antipode::pipeline

@@ -20,6 +20,8 @@ const antipode::PluginFactory kFactories[] = {
     {"node", "ResetScene", "rebuilds a cell's scene from a seed", nullptr, &register_reset_scene},
     {"node", "RecordOutcome", "tallies grasp outcomes", nullptr, &register_record_outcome},
     {"node", "ClearBox", "picks until the box is empty", nullptr, &register_clear_box},
+    {"node", "AvoidFailedGrasps", "drops hands where a grasp just failed", nullptr,
+     &register_avoid_failed_grasps},
 };
 
 }  // namespace

@@ -1,0 +1,141 @@
+#include "bench_merge.hpp"
+
+#include <algorithm>
+#include <fstream>
+#include <iostream>
+#include <set>
+
+#include <nlohmann/json.hpp>
+
+#include "antipode/core/error.hpp"
+#include "bench_report.hpp"
+#include "clutter_bench.hpp"
+#include "exit_codes.hpp"
+
+namespace antipode::cli {
+namespace {
+
+using Json = nlohmann::ordered_json;
+
+// What each kind of bench calls its records.
+std::string records_key(const std::string& bench) {
+  if (bench == "isolation") return "attempts";
+  if (bench == "clutter") return "run_records";
+  return "";
+}
+
+// Entries that differ between shards of one bench: the shard's own records and figures and
+// how its machine ran it.
+bool per_shard(const std::string& key, const std::string& records) {
+  static const std::set<std::string> keys = {"shard", "summary", "wall_s",
+                                             "jobs",  "cores",   "threads_per_job"};
+  return key == records || keys.count(key) > 0;
+}
+
+Json read_shard(const std::string& path) {
+  std::ifstream file(path);
+  if (!file) throw Error(path + ": cannot read the report");
+  Json report;
+  try {
+    report = Json::parse(file);
+  } catch (const Json::exception& e) {
+    throw Error(path + ": not a JSON report (" + std::string(e.what()) + ")");
+  }
+  if (!report.is_object() || !report.contains("bench") || !report["bench"].is_string() ||
+      records_key(report["bench"].get<std::string>()).empty())
+    throw Error(path + ": not the report of an isolation or clutter bench");
+  const Json& shard = report.contains("shard") ? report["shard"] : Json();
+  if (!shard.is_object() || !shard.contains("index") || !shard.contains("count") ||
+      !shard.contains("tasks"))
+    throw Error(path + ": not a shard's report (no \"shard\" entry: run the bench with --shard)");
+  if (!report.contains(records_key(report["bench"])) ||
+      !report[records_key(report["bench"])].is_array())
+    throw Error(path + ": the report has no records");
+  return report;
+}
+
+// Throws unless `report` (from `path`) was run with the settings of `first` (from `first_path`).
+void check_same_bench(const Json& first, const std::string& first_path, const Json& report,
+                      const std::string& path) {
+  const std::string records = records_key(first["bench"]);
+  for (const auto& [key, value] : first.items()) {
+    if (per_shard(key, records)) continue;
+    if (!report.contains(key) || report[key] != value)
+      throw Error(path + ": entry \"" + key + "\" differs from " + first_path +
+                  "'s: the shards are not of one bench");
+  }
+  for (const auto& [key, value] : report.items())
+    if (!per_shard(key, records) && !first.contains(key))
+      throw Error(path + ": entry \"" + key + "\" is not in " + first_path);
+  if (report["shard"]["count"] != first["shard"]["count"] ||
+      report["shard"]["tasks"] != first["shard"]["tasks"])
+    throw Error(path + ": its shard count or task count differs from " + first_path + "'s");
+}
+
+// The records of every shard in task order; throws unless each shard 1..n came exactly once
+// and the records are the bench's tasks 0..tasks-1, each once.
+Json joined_records(const std::vector<Json>& shards, const std::vector<std::string>& paths) {
+  const std::string key = records_key(shards.front()["bench"]);
+  const int count = shards.front()["shard"]["count"].get<int>();
+  const auto tasks = shards.front()["shard"]["tasks"].get<std::size_t>();
+  std::set<int> seen;
+  for (std::size_t i = 0; i < shards.size(); ++i)
+    if (!seen.insert(shards[i]["shard"]["index"].get<int>()).second)
+      throw Error(paths[i] + ": shard " + shards[i]["shard"]["index"].dump() + " given twice");
+  if (int(seen.size()) != count) {
+    std::string missing;
+    for (int i = 1; i <= count; ++i)
+      if (!seen.count(i)) missing += (missing.empty() ? "" : ", ") + std::to_string(i);
+    throw Error("shards " + missing + " of " + std::to_string(count) + " are missing");
+  }
+  std::vector<Json> records;
+  for (const Json& shard : shards)
+    for (const Json& record : shard[key]) records.push_back(record);
+  std::sort(records.begin(), records.end(), [](const Json& a, const Json& b) {
+    return a.at("task").get<std::size_t>() < b.at("task").get<std::size_t>();
+  });
+  for (std::size_t i = 0; i < records.size(); ++i)
+    if (records[i]["task"].get<std::size_t>() != i)
+      throw Error("the shards' records are not tasks 0.." + std::to_string(tasks - 1) +
+                  " each once (task " + std::to_string(i) + ")");
+  if (records.size() != tasks)
+    throw Error("the shards hold " + std::to_string(records.size()) + " records of " +
+                std::to_string(tasks) + " tasks");
+  return Json(records);
+}
+
+}  // namespace
+
+int bench_merge_command(const BenchMergeOptions& o) {
+  if (o.reports.empty()) throw Error("bench merge: give the shards' reports");
+  std::vector<Json> shards;
+  for (const std::string& path : o.reports) shards.push_back(read_shard(path));
+  for (std::size_t i = 1; i < shards.size(); ++i)
+    check_same_bench(shards.front(), o.reports.front(), shards[i], o.reports[i]);
+  const Json records = joined_records(shards, o.reports);
+  const std::string bench = shards.front()["bench"];
+
+  Json merged;
+  double wall_s = 0.0;
+  for (const Json& shard : shards) wall_s += shard.value("wall_s", 0.0);
+  for (const auto& [key, value] : shards.front().items())
+    if (key != "shard") merged[key] = value;
+  merged["wall_s"] = wall_s;
+  merged["shards"] = shards.size();
+  merged[records_key(bench)] = records;
+  std::cout << bench << " bench: " << shards.size() << " shards, " << records.size()
+            << " records\n\n";
+  if (bench == "clutter") {
+    merged["summary"] = summarise_clutter(records);
+    print_clutter_summary(std::cout, merged["summary"]);
+  } else {
+    const auto variants = merged["variants"].get<std::vector<std::string>>();
+    merged["summary"] = summarise(records, variants);
+    print_report(std::cout, records, merged["summary"], variants);
+  }
+  std::cout << "wall time " << wall_s << " s (the shards' sum)\n";
+  write_report(std::cout, o.report_path, merged);
+  return kExitSuccess;
+}
+
+}  // namespace antipode::cli
