@@ -27,8 +27,8 @@ std::string records_key(const std::string& bench) {
 // Entries that differ between shards of one bench: the shard's own records and figures and
 // how its machine ran it.
 bool per_shard(const std::string& key, const std::string& records) {
-  static const std::set<std::string> keys = {"shard", "summary", "wall_s",
-                                             "jobs",  "cores",   "threads_per_job"};
+  static const std::set<std::string> keys = {"shard", "summary",         "wall_s", "jobs",
+                                             "cores", "threads_per_job", "machine"};
   return key == records || keys.count(key) > 0;
 }
 

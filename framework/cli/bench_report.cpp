@@ -6,6 +6,9 @@
 #include <fstream>
 #include <functional>
 #include <map>
+#include <thread>
+
+#include <sys/utsname.h>
 
 #include "antipode/core/atomic_file.hpp"
 #include "antipode/core/error.hpp"
@@ -267,6 +270,23 @@ void print_report(std::ostream& out, const Json& attempts, const Json& summary,
     }
     row(out, stage, seconds, label_width, cell_width);
   }
+}
+
+nlohmann::ordered_json machine_json() {
+  std::string cpu = "unknown";
+  std::ifstream info("/proc/cpuinfo");
+  for (std::string line; std::getline(info, line);)
+    if (line.rfind("model name", 0) == 0 && line.find(':') != std::string::npos) {
+      cpu = line.substr(line.find(':') + 2);
+      break;
+    }
+  struct utsname name {};
+  std::string system = "unknown";
+  if (uname(&name) == 0)
+    system = std::string(name.sysname) + " " + name.release + " " + name.machine;
+  return {{"cpu", cpu},
+          {"cores", std::max(1u, std::thread::hardware_concurrency())},
+          {"system", system}};
 }
 
 void write_report(std::ostream& out, const std::string& path,

@@ -34,6 +34,10 @@ nlohmann::ordered_json summarise(const nlohmann::ordered_json& attempts,
 void print_report(std::ostream& out, const nlohmann::ordered_json& attempts,
                   const nlohmann::ordered_json& summary, const std::vector<std::string>& variants);
 
+/// The machine a bench runs on: {"cpu": the processor's model name, "cores", "system": kernel
+/// name, release and architecture}.
+nlohmann::ordered_json machine_json();
+
 /// Writes `report` to `path` (all or nothing) and prints "report: PATH"; nothing when `path`
 /// is empty. Throws antipode::Error naming the file when it cannot be written.
 void write_report(std::ostream& out, const std::string& path, const nlohmann::ordered_json& report);

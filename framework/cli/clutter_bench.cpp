@@ -280,6 +280,7 @@ int bench_clutter_command(const ClutterBenchOptions& o) {
                    {"jobs", o.jobs},
                    {"threads_per_job", settings.threads},
                    {"cores", cores},
+                   {"machine", machine_json()},
                    {"wall_s", wall_s},
                    {"summary", summary},
                    {"run_records", runs}};

@@ -173,6 +173,7 @@ int bench_isolation_command(const IsolationBenchOptions& o) {
                    {"jobs", o.jobs},
                    {"threads_per_job", settings.threads},
                    {"cores", cores},
+                   {"machine", machine_json()},
                    {"wall_s", wall_s},
                    {"summary", summary},
                    {"attempts", attempts}};

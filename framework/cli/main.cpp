@@ -11,6 +11,7 @@
 #include "exit_codes.hpp"
 #include "isolation_bench.hpp"
 #include "reach_bench.hpp"
+#include "report_command.hpp"
 
 namespace {
 
@@ -24,6 +25,7 @@ constexpr const char* kExamples = R"(Examples:
   antipode bench clutter --runs 10 --jobs 2 --report clutter.json
   antipode bench clutter --shard 2/4 --report shard2.json
   antipode bench merge shard*.json --report clutter.json
+  antipode report iso.json clutter.json --out results.md --notes notes.md
   antipode bench reach --ik-poses 10000 --scenes 100 --report reach.json
   antipode train --out my.model --dataset examples.data
   antipode eval-classifier --model my.model --report eval.json
@@ -44,6 +46,7 @@ struct Commands {
   antipode::cli::ReachBenchOptions reach;
   antipode::cli::ClutterBenchOptions clutter;
   antipode::cli::BenchMergeOptions merge;
+  antipode::cli::ReportOptions report;
   std::string validate_path;
   std::string node_type;  ///< `antipode nodes [TYPE]`
 };
@@ -193,6 +196,16 @@ void add_bench(CLI::App& app, Commands& commands) {
   merge->add_option("--report", commands.merge.report_path, "Write the merged report as JSON");
 }
 
+void add_report(CLI::App& app, antipode::cli::ReportOptions& o) {
+  CLI::App* report = app.add_subcommand(
+      "report", "Write the results report (markdown and PNG charts) from bench reports");
+  report->add_option("reports", o.reports, "Bench JSON reports, one section each")->required();
+  report->add_option("--out", o.out_path, "The markdown file to write")->required();
+  report->add_option("--plots", o.plots_dir,
+                     "Folder of the PNG charts (default: images/ beside --out)");
+  report->add_option("--notes", o.notes_path, "Hand-written context (markdown, ## sections)");
+}
+
 int dispatch(const CLI::App& app, const Commands& commands) {
   if (app.got_subcommand("run")) return antipode::cli::run_command(commands.run);
   if (app.got_subcommand("detect")) return antipode::cli::detect_command(commands.detect);
@@ -213,6 +226,7 @@ int dispatch(const CLI::App& app, const Commands& commands) {
     }
     return antipode::cli::bench_isolation_command(commands.isolation);
   }
+  if (app.got_subcommand("report")) return antipode::cli::report_command(commands.report);
   if (app.got_subcommand("plugins")) return antipode::cli::plugins_command();
   if (app.got_subcommand("nodes")) return antipode::cli::nodes_command(commands.node_type);
   std::cout << app.help();
@@ -233,6 +247,7 @@ int main(int argc, char** argv) {
   add_train(app, commands);
   add_eval(app, commands);
   add_bench(app, commands);
+  add_report(app, commands.report);
   CLI::App* validate = app.add_subcommand("validate", "Check a tree file without running it");
   validate->add_option("tree", commands.validate_path, "YAML tree file")->required();
   app.add_subcommand("plugins", "List plugin libraries found, loaded and refused, and why");

@@ -2,6 +2,7 @@
 // results for any number of processes, and one-line errors for bad options.
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 
 #include <gtest/gtest.h>
 
@@ -78,6 +79,19 @@ TEST_F(BenchTest, ShardsMergedGiveTheWholeBenchsReport) {
   const auto merged = nlohmann::json::parse(in);
   EXPECT_EQ(without_seconds(merged["summary"]), without_seconds(whole["summary"]));
   EXPECT_EQ(without_seconds(merged["attempts"]), without_seconds(whole["attempts"]));
+
+  // The report's section of the merged bench: a column per variant, a row per object.
+  const auto made = antipode("report " + file("merged.json") + " --out " + file("results.md"));
+  ASSERT_EQ(made.exit_code, 0) << made.out;
+  std::ifstream md(file("results.md"));
+  const std::string markdown((std::istreambuf_iterator<char>(md)), {});
+  EXPECT_NE(markdown.find("## Isolation: procedural shapes"), std::string::npos) << markdown;
+  EXPECT_NE(markdown.find("| NC 1V | A 2V |"), std::string::npos) << markdown;
+  const auto& every = whole["summary"]["a_2v"];
+  EXPECT_NE(markdown.find("(" + every["successes"].dump() + "/" + every["attempts"].dump() + ")"),
+            std::string::npos)
+      << markdown;
+  EXPECT_TRUE(fs::exists(file("images/merged-objects.png")));
 }
 
 TEST_F(BenchTest, BadOptionsAreOneLineErrors) {

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <fstream>
+#include <iterator>
 
 #include "support/bench_command.hpp"
 
@@ -86,6 +87,40 @@ TEST_F(ClutterBenchTest, ShardsMergedGiveTheWholeBenchsReport) {
                            whole["summary"]["attempts"].dump()),
             std::string::npos)
       << merge.out;
+}
+
+// antipode report turns a bench report into a markdown section with the figures of its
+// summary and a PNG chart of the runs.
+TEST_F(ClutterBenchTest, ReportWritesMarkdownAndAChart) {
+  const auto r = report("--runs 2 --objects-per-run 2 --seed 3", "clutter-small.json");
+  const CommandResult made =
+      antipode("report " + file("clutter-small.json") + " --out " + file("results.md"));
+  ASSERT_EQ(made.exit_code, 0) << made.out;
+  std::ifstream in(file("results.md"));
+  const std::string markdown((std::istreambuf_iterator<char>(in)), {});
+  EXPECT_NE(markdown.find("## Dense clutter: procedural shapes"), std::string::npos) << markdown;
+  const auto& s = r["summary"];
+  const std::string counts = "(" + s["successes"].dump() + "/" + s["attempts"].dump() + ")";
+  EXPECT_NE(markdown.find(counts), std::string::npos) << counts << "\n" << markdown;
+  EXPECT_NE(markdown.find("--runs 2 --objects-per-run 2 --seed 3"), std::string::npos);
+  EXPECT_NE(markdown.find("![per run](images/clutter-small-runs.png)"), std::string::npos);
+  std::ifstream png(file("images/clutter-small-runs.png"), std::ios::binary);
+  char signature[8] = {};
+  png.read(signature, 8);
+  EXPECT_EQ(std::string(signature + 1, 3), "PNG");
+
+  const auto report_error = [&](const std::string& arguments, const std::string& words) {
+    const CommandResult e = antipode("report " + arguments);
+    EXPECT_EQ(e.exit_code, 2) << arguments << ": " << e.out;
+    EXPECT_NE(e.out.find("antipode: error: "), std::string::npos) << e.out;
+    EXPECT_NE(e.out.find(words), std::string::npos) << arguments << ": " << e.out;
+  };
+  report_error(file("none.json") + " --out " + file("x.md"), "cannot read the bench report");
+  report_error("CMakeLists.txt --out " + file("x.md"), "not a JSON report");
+  report_error("robots/baxter/baxter.urdf --out " + file("x.md"), "not a JSON report");
+  report_error(
+      file("clutter-small.json") + " --out " + file("x.md") + " --notes " + file("none.md"),
+      "cannot read the notes");
 }
 
 TEST_F(ClutterBenchTest, MergeRefusesShardsThatAreNotOneWholeBench) {

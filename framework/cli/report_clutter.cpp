@@ -1,0 +1,106 @@
+// The report's section for a clutter bench (antipode bench clutter): settings and command,
+// grasp success and objects removed beside the paper's, failures in the paper's groups, how
+// the runs ended, each run's line, seconds; a chart of each run.
+#include <cstdio>
+#include <filesystem>
+
+#include "bar_chart.hpp"
+#include "report_sections.hpp"
+
+namespace antipode::cli {
+namespace {
+
+using Json = nlohmann::ordered_json;
+
+std::string settings_text(const Json& r) {
+  const int runs = r["runs"], first = r["seed"];
+  return std::to_string(runs) + " clear-the-box runs of " + r["objects_per_run"].dump() +
+         " objects (" + object_set_name(r["objects"]) + "), seeds " + std::to_string(first) + "-" +
+         std::to_string(first + runs - 1) + ", tree `" + r["tree"].get<std::string>() + "`, " +
+         noise_phrase(r) + "; " + machine_phrase(r) + ", " + r["jobs"].dump() + " process(es), " +
+         wall_time(r["wall_s"]) + " of wall time.\n\n";
+}
+
+std::string command_text(const Json& r, const std::string& name) {
+  std::string c = "antipode bench clutter --objects " + shell_word(r["objects"]) + " --runs " +
+                  r["runs"].dump() + " --objects-per-run " + r["objects_per_run"].dump() +
+                  " --seed " + r["seed"].dump();
+  if (r["tree"] != "trees/clear_box.yaml") c += " --tree " + shell_word(r["tree"]);
+  if (r["noise"] != "tree") c += " --noise " + shell_word(r["noise"]);
+  return "```sh\n" + c + set_options(r) + " --jobs 2 --report " + name + ".json\n```\n\n";
+}
+
+std::string headline(const Json& s) {
+  return markdown_table(
+      {"", "antipode (simulated cell)", "the paper (real Baxter)"},
+      {{"grasp success (successes / attempts)", rate_with_interval(s["successes"], s["attempts"]),
+        "73%"},
+       {"objects removed", rate_with_interval(s["removed"], s["objects"]), "85%"}});
+}
+
+std::string failures(const Json& s) {
+  const int attempts = s["attempts"];
+  std::vector<std::vector<std::string>> rows;
+  for (const auto& [group, count] : s["paper_classes"].items()) {
+    char share[32];
+    std::snprintf(share, sizeof share, "%.1f%%",
+                  attempts ? 100.0 * count.get<int>() / attempts : 0);
+    rows.push_back({group, count.dump(), share});
+  }
+  std::string classes;
+  for (const auto& [reason, count] : s["reasons"].items())
+    classes += (classes.empty() ? "" : ", ") + reason + " " + count.dump();
+  std::string stops;
+  for (const auto& [stop, count] : s["stops"].items())
+    stops += (stops.empty() ? "" : ", ") + stop + " " + count.dump();
+  char seconds[160];
+  std::snprintf(seconds, sizeof seconds,
+                "Median cycle (capture to outcome) %.2f s, median run %.1f s; %d of %d cycles "
+                "found no grasp; %d objects lost off the table.\n\n",
+                s["cycle_s_median"].get<double>(), s["run_s_median"].get<double>(),
+                s["no_grasp"].get<int>(), s["cycles"].get<int>(), s["lost"].get<int>());
+  return "Failures as the paper groups them (share of attempts):\n\n" +
+         markdown_table({"group", "attempts", "share"}, rows) +
+         "\nFailure classes: " + (classes.empty() ? "none" : classes) + ". Runs ended: " + stops +
+         ". " + seconds;
+}
+
+std::string per_run(const Json& r, const PlotPlace& plots, const std::string& name) {
+  BarChart chart;
+  chart.title = "clear the box, per run: " + object_set_name(r["objects"]);
+  chart.value_label = "% of the run's objects / attempts";
+  chart.series = {"objects removed", "grasp success"};
+  chart.values.resize(2);
+  std::vector<std::vector<std::string>> rows;
+  for (const Json& run : r["run_records"]) {
+    chart.groups.push_back("seed " + run["seed"].dump());
+    if (run.contains("error")) {
+      for (auto& v : chart.values) v.push_back(-1.0);
+      rows.push_back({run["seed"].dump(), "error: " + run["error"].get<std::string>(), ""});
+      continue;
+    }
+    const int objects = run["objects"], attempts = run["attempts"], removed = run["removed"];
+    chart.values[0].push_back(objects ? 100.0 * removed / objects : 0.0);
+    chart.values[1].push_back(attempts ? 100.0 * run["successes"].get<int>() / attempts : -1.0);
+    rows.push_back({run["seed"].dump(), run["summary"].get<std::string>(), run["stop"]});
+  }
+  const std::string file = name + "-runs.png";
+  write_bar_chart(chart, (std::filesystem::path(plots.dir) / file).string());
+  return "![per run](" + plots.link + "/" + file + ")\n\n" +
+         markdown_table({"seed", "run", "ended"}, rows);
+}
+
+}  // namespace
+
+ReportSection clutter_section(const Json& report, const std::string& name, const PlotPlace& plots) {
+  const Json& s = report["summary"];
+  ReportSection section;
+  section.title = "Dense clutter: " + object_set_name(report["objects"]);
+  if (report["tree"] != "trees/clear_box.yaml" || report["noise"] != "tree")
+    section.title += ", " + setting_words(report, "", "", "trees/clear_box.yaml", "");
+  section.markdown = settings_text(report) + command_text(report, name) + headline(s) + "\n" +
+                     failures(s) + per_run(report, plots, name);
+  return section;
+}
+
+}  // namespace antipode::cli

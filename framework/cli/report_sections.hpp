@@ -1,0 +1,21 @@
+#pragma once
+// The sections of the generated results report, one per bench report (antipode report).
+
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "report_markdown.hpp"
+
+namespace antipode::cli {
+
+/// The section of an isolation bench's report; its charts are written to `plots` as
+/// NAME-objects.png.
+ReportSection isolation_section(const nlohmann::ordered_json& report, const std::string& name,
+                                const PlotPlace& plots);
+
+/// The section of a clutter bench's report; its chart is written to `plots` as NAME-runs.png.
+ReportSection clutter_section(const nlohmann::ordered_json& report, const std::string& name,
+                              const PlotPlace& plots);
+
+}  // namespace antipode::cli
