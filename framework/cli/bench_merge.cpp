@@ -127,7 +127,7 @@ int bench_merge_command(const BenchMergeOptions& o) {
             << " records\n\n";
   if (bench == "clutter") {
     merged["summary"] = summarise_clutter(records);
-    print_clutter_summary(std::cout, merged["summary"]);
+    print_clutter_summary(std::cout, merged["summary"], merged.value("protocol", "paper"));
   } else {
     const auto variants = merged["variants"].get<std::vector<std::string>>();
     merged["summary"] = summarise(records, variants);

@@ -17,6 +17,7 @@
 #include "bench_report.hpp"
 #include "bench_shard.hpp"
 #include "bench_task.hpp"
+#include "clutter_protocols.hpp"
 #include "commands.hpp"
 #include "exit_codes.hpp"
 #include "stage_timer.hpp"
@@ -35,6 +36,14 @@ struct RunSettings {
   std::vector<std::pair<std::string, std::string>> entries;  ///< the same for every run
 };
 
+// `o` with the protocol's tree and object count where the options leave them open.
+ClutterBenchOptions with_protocol(ClutterBenchOptions o) {
+  const ClutterProtocol& protocol = clutter_protocol(o.protocol);  // throws for a bad name
+  if (o.tree_path.empty()) o.tree_path = protocol.tree;
+  if (o.objects_per_run == 0) o.objects_per_run = protocol.objects_per_run;
+  return o;
+}
+
 void check_options(const ClutterBenchOptions& o) {
   if (o.runs < 1 || o.runs > 100000) throw Error("--runs must be in 1..100000");
   if (o.objects_per_run < 1 || o.objects_per_run > 100)
@@ -50,11 +59,15 @@ void check_options(const ClutterBenchOptions& o) {
 std::vector<std::pair<std::string, std::string>> shared_entries(const ClutterBenchOptions& o,
                                                                 int threads) {
   const std::string t = std::to_string(threads);
-  std::vector<std::pair<std::string, std::string>> entries = {
-      {"cell.object_count", std::to_string(o.objects_per_run)},
-      {"cell.render_threads", t},
-      {"sampler.threads", t},
-      {"classifier.threads", t}};
+  std::vector<std::pair<std::string, std::string>> entries;
+  if (const std::string& scene = clutter_protocol(o.protocol).scene; !scene.empty())
+    entries.emplace_back("cell.scene", scene);
+  for (auto& entry : std::vector<std::pair<std::string, std::string>>{
+           {"cell.object_count", std::to_string(o.objects_per_run)},
+           {"cell.render_threads", t},
+           {"sampler.threads", t},
+           {"classifier.threads", t}})
+    entries.push_back(std::move(entry));
   if (o.objects != "procedural") entries.emplace_back("cell.objects", fs::absolute(o.objects));
   if (!o.noise.empty()) entries.emplace_back("cell.noise", o.noise);
   for (auto& entry : parse_overrides(o.set)) entries.push_back(std::move(entry));
@@ -155,7 +168,8 @@ Json rate(int k, int n) {
 
 }  // namespace
 
-void print_clutter_summary(std::ostream& out, const Json& s) {
+void print_clutter_summary(std::ostream& out, const Json& s, const std::string& protocol_name) {
+  const ClutterProtocol& protocol = clutter_protocol(protocol_name);
   const auto pct = [](double v) {
     std::ostringstream t;
     t << std::fixed << std::setprecision(1) << 100 * v;
@@ -165,10 +179,23 @@ void print_clutter_summary(std::ostream& out, const Json& s) {
     return pct(r["rate"].get<double>()) + "% [" + pct(r["ci95"][0].get<double>()) + ", " +
            pct(r["ci95"][1].get<double>()) + "]";
   };
-  out << "grasp success " << s["successes"] << " / " << s["attempts"] << " = "
-      << interval(s["success_rate"]) << " (paper, real Baxter: 73%)\n";
-  out << "objects removed " << s["removed"] << " / " << s["objects"] << " = "
-      << interval(s["removed_rate"]) << " (paper: 85%); lost off the table " << s["lost"] << "\n";
+  const auto published = [&](bool success) {
+    std::string text;
+    for (const auto& p : protocol.published) {
+      const double pct_value = success ? p.success_pct : p.removed_pct;
+      if (pct_value < 0) continue;
+      std::ostringstream t;
+      t << (text.empty() ? "" : ", ") << p.who << " " << std::fixed << std::setprecision(1)
+        << pct_value << "%";
+      text += t.str();
+    }
+    return text;
+  };
+  out << protocol.success_name << " " << s["successes"] << " / " << s["attempts"] << " = "
+      << interval(s["success_rate"]) << " (" << published(true) << ")\n";
+  out << protocol.removed_name << " " << s["removed"] << " / " << s["objects"] << " = "
+      << interval(s["removed_rate"]) << " (" << published(false) << "); lost off the table "
+      << s["lost"] << "\n";
   out << "cycles " << s["cycles"] << ", of which found no grasp " << s["no_grasp"] << "\n";
   out << "failures by class:";
   for (const auto& [reason, count] : s["reasons"].items()) out << "  " << reason << " " << count;
@@ -227,7 +254,8 @@ Json summarise_clutter(const Json& runs) {
           {"run_s_median", percentile(run_s, 0.5)}};
 }
 
-int bench_clutter_command(const ClutterBenchOptions& o) {
+int bench_clutter_command(const ClutterBenchOptions& options) {
+  const ClutterBenchOptions o = with_protocol(options);
   check_options(o);
   const BenchShard shard = parse_shard(o.shard);
   require_shard_report(shard, o.report_path);
@@ -240,8 +268,8 @@ int bench_clutter_command(const ClutterBenchOptions& o) {
   settings.threads = std::max(1, cores / o.jobs);
   settings.entries = shared_entries(o, settings.threads);
 
-  std::cout << "clutter bench: " << o.runs << " runs of " << o.objects_per_run << " objects ("
-            << o.objects << "), " << o.jobs << " process(es)";
+  std::cout << "clutter bench (" << o.protocol << "): " << o.runs << " runs of "
+            << o.objects_per_run << " objects (" << o.objects << "), " << o.jobs << " process(es)";
   if (!shard.whole()) std::cout << "; " << shard.str() << ": " << tasks.size() << " runs";
   std::cout << "\n";
   const auto start = std::chrono::steady_clock::now();
@@ -266,10 +294,11 @@ int bench_clutter_command(const ClutterBenchOptions& o) {
   for (auto& record : records) runs.push_back(std::move(record));
   const Json summary = summarise_clutter(runs);
   std::cout << "\n";
-  print_clutter_summary(std::cout, summary);
+  print_clutter_summary(std::cout, summary, o.protocol);
   std::cout << "wall time " << wall_s << " s\n";
   if (!o.report_path.empty()) {
     Json report = {{"bench", "clutter"},
+                   {"protocol", o.protocol},
                    {"tree", o.tree_path},
                    {"objects", o.objects},
                    {"runs", o.runs},

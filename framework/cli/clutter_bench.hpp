@@ -16,12 +16,13 @@ namespace antipode::cli {
 struct ClutterBenchOptions {
   std::string objects = "procedural";  ///< "procedural" (the scene's shapes) or a mesh folder
   int runs = 10;
-  int objects_per_run = 10;
-  std::uint64_t seed = 2000;  ///< run i uses cell seed `seed + i`
-  int jobs = 1;               ///< processes sharing the machine's cores
-  std::string report_path;    ///< JSON report ("" = none)
-  std::string tree_path = "trees/clear_box.yaml";
-  std::string noise;             ///< the cell's sensor noise scale ("" = the tree's)
+  std::string protocol = "paper";  ///< "paper", "vgn-pile" or "vgn-packed" (clutter_protocols.hpp)
+  int objects_per_run = 0;         ///< 0: the protocol's (10; VGN's 5)
+  std::uint64_t seed = 2000;       ///< run i uses cell seed `seed + i`
+  int jobs = 1;                    ///< processes sharing the machine's cores
+  std::string report_path;         ///< JSON report ("" = none)
+  std::string tree_path;  ///< "": the protocol's (trees/clear_box.yaml; trees/vgn_round.yaml)
+  std::string noise;      ///< the cell's sensor noise scale ("" = the tree's)
   std::vector<std::string> set;  ///< --set overrides of the tree, applied last
   std::string shard;             ///< "i/n": run only that shard of the runs ("" = all)
 };
@@ -38,7 +39,9 @@ int bench_clutter_command(const ClutterBenchOptions& options);
 /// and of a run.
 nlohmann::ordered_json summarise_clutter(const nlohmann::ordered_json& runs);
 
-/// Prints a clutter report's summary as the bench does after its runs.
-void print_clutter_summary(std::ostream& out, const nlohmann::ordered_json& summary);
+/// Prints a clutter report's summary as the bench does after its runs, beside the published
+/// figures of `protocol` ("paper", "vgn-pile", "vgn-packed").
+void print_clutter_summary(std::ostream& out, const nlohmann::ordered_json& summary,
+                           const std::string& protocol);
 
 }  // namespace antipode::cli

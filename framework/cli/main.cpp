@@ -142,14 +142,18 @@ void add_bench_clutter(CLI::App& bench, antipode::cli::ClutterBenchOptions& o) {
                    "'procedural' (the scene's random shapes) or a mesh folder")
       ->capture_default_str();
   clutter->add_option("--runs", o.runs, "Clear-the-box runs")->capture_default_str();
-  clutter->add_option("--objects-per-run", o.objects_per_run, "Objects dumped into the box")
+  clutter->add_option("--protocol", o.protocol, "paper (the default), vgn-pile or vgn-packed")
       ->capture_default_str();
+  clutter->add_option("--objects-per-run", o.objects_per_run,
+                      "Objects dumped into the box (default: the protocol's, 10 or 5)");
   clutter->add_option("--seed", o.seed, "Cell seed of run 0 (run i: seed + i)")
       ->capture_default_str();
   clutter->add_option("--jobs", o.jobs, "Processes (the same results for any number)")
       ->capture_default_str();
   clutter->add_option("--report", o.report_path, "Write the report as JSON");
-  clutter->add_option("--tree", o.tree_path, "The clear-the-box tree")->capture_default_str();
+  clutter->add_option("--tree", o.tree_path,
+                      "The clear-the-box tree (default: the protocol's, trees/clear_box.yaml or "
+                      "trees/vgn_round.yaml)");
   clutter->add_option("--noise", o.noise, "The cell's sensor noise scale (default: the tree's)");
   clutter->add_option("--set", o.set, "Override a tree entry or component parameter");
   clutter->add_option("--shard", o.shard,

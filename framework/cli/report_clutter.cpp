@@ -5,6 +5,7 @@
 #include <filesystem>
 
 #include "bar_chart.hpp"
+#include "clutter_protocols.hpp"
 #include "report_sections.hpp"
 
 namespace antipode::cli {
@@ -21,21 +22,39 @@ std::string settings_text(const Json& r) {
          wall_time(r["wall_s"]) + " of wall time.\n\n";
 }
 
+const ClutterProtocol& protocol_of(const Json& r) {
+  return clutter_protocol(r.value("protocol", "paper"));
+}
+
 std::string command_text(const Json& r, const std::string& name) {
-  std::string c = "antipode bench clutter --objects " + shell_word(r["objects"]) + " --runs " +
-                  r["runs"].dump() + " --objects-per-run " + r["objects_per_run"].dump() +
-                  " --seed " + r["seed"].dump();
-  if (r["tree"] != "trees/clear_box.yaml") c += " --tree " + shell_word(r["tree"]);
+  const ClutterProtocol& protocol = protocol_of(r);
+  std::string c = "antipode bench clutter";
+  if (protocol.name != "paper") c += " --protocol " + protocol.name;
+  c += " --objects " + shell_word(r["objects"]) + " --runs " + r["runs"].dump();
+  if (r["objects_per_run"] != protocol.objects_per_run)
+    c += " --objects-per-run " + r["objects_per_run"].dump();
+  c += " --seed " + r["seed"].dump();
+  if (r["tree"] != protocol.tree) c += " --tree " + shell_word(r["tree"]);
   if (r["noise"] != "tree") c += " --noise " + shell_word(r["noise"]);
   return "```sh\n" + c + set_options(r) + " --jobs 2 --report " + name + ".json\n```\n\n";
 }
 
-std::string headline(const Json& s) {
-  return markdown_table(
-      {"", "antipode (simulated cell)", "the paper (real Baxter)"},
-      {{"grasp success (successes / attempts)", rate_with_interval(s["successes"], s["attempts"]),
-        "73%"},
-       {"objects removed", rate_with_interval(s["removed"], s["objects"]), "85%"}});
+std::string headline(const Json& r) {
+  const Json& s = r["summary"];
+  const ClutterProtocol& protocol = protocol_of(r);
+  const auto pct = [](double v) {
+    char text[16];
+    std::snprintf(text, sizeof text, "%.1f%%", v);
+    return v < 0 ? std::string("-") : std::string(text);
+  };
+  std::vector<std::vector<std::string>> rows = {{"antipode (simulated cell)",
+                                                 rate_with_interval(s["successes"], s["attempts"]),
+                                                 rate_with_interval(s["removed"], s["objects"])}};
+  for (const auto& p : protocol.published)
+    rows.push_back({p.who, pct(p.success_pct), pct(p.removed_pct)});
+  return markdown_table({"", protocol.success_name + " (successes / attempts)",
+                         protocol.removed_name + " (removed / placed)"},
+                        rows);
 }
 
 std::string failures(const Json& s) {
@@ -95,10 +114,14 @@ std::string per_run(const Json& r, const PlotPlace& plots, const std::string& na
 ReportSection clutter_section(const Json& report, const std::string& name, const PlotPlace& plots) {
   const Json& s = report["summary"];
   ReportSection section;
-  section.title = "Dense clutter: " + object_set_name(report["objects"]);
-  if (report["tree"] != "trees/clear_box.yaml" || report["noise"] != "tree")
-    section.title += ", " + setting_words(report, "", "", "trees/clear_box.yaml", "");
-  section.markdown = settings_text(report) + command_text(report, name) + headline(s) + "\n" +
+  const ClutterProtocol& protocol = protocol_of(report);
+  section.title = (protocol.name == "paper"      ? std::string("Dense clutter: ")
+                   : protocol.name == "vgn-pile" ? std::string("VGN pile: ")
+                                                 : std::string("VGN packed: ")) +
+                  object_set_name(report["objects"]);
+  if (report["tree"] != protocol.tree || report["noise"] != "tree")
+    section.title += ", " + setting_words(report, "", "", protocol.tree, "");
+  section.markdown = settings_text(report) + command_text(report, name) + headline(report) + "\n" +
                      failures(s) + per_run(report, plots, name);
   return section;
 }

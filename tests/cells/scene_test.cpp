@@ -44,6 +44,25 @@ TEST(Scene, PileSettlesInsideTheBoxWithoutInterpenetration) {
   }
 }
 
+// VGN's pile: the box is lifted away once the objects have settled; no wall is left and
+// the objects stay on the table.
+TEST(Scene, ABoxRemovedAfterTheDropLeavesThePileOnTheTable) {
+  const SceneSpec spec =
+      read_scene(std::string(ANTIPODE_TEST_SOURCE_DIR) + "/scenes/vgn_pile.yaml");
+  ASSERT_TRUE(spec.box.removed_after_drop);
+  PhysicsWorld world(PhysicsOptions{});
+  MeshCache meshes;
+  const std::vector<int> ids = build_scene(spec, 3, meshes, world);
+  EXPECT_EQ(ids.size(), 5u);
+  int walls = 0;
+  for (int id = 0; id < 64; ++id) walls += world.has(id) && world.name(id) == "box wall";
+  EXPECT_EQ(walls, 0);
+  for (int id : ids) {
+    EXPECT_GT(world.pose(id).translation().z(), spec.table.top_z_m);
+    EXPECT_LT(world.body(id).getLinearVelocity().length(), 0.05);
+  }
+}
+
 TEST(Scene, SameSeedSameSceneOtherSeedOtherScene) {
   const SceneSpec spec = parse(kPile);
   auto poses = [&](std::uint64_t seed) {

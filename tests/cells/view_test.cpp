@@ -5,6 +5,7 @@
 
 #include "antipode/core/parameters.hpp"
 #include "bullet_cell.hpp"
+#include "dexnet_noise.hpp"
 #include "sensor_random.hpp"
 
 namespace antipode::cells {
@@ -120,6 +121,42 @@ cameras: { down: { position_m: [0.725, -0.135, 0.5], look_at_m: [0.725, -0.135, 
   EXPECT_NEAR(sum / double(n), 0.0, 0.01);
   EXPECT_NEAR(sum2 / double(n), 1.0, 0.02);
   EXPECT_NEAR(double(beyond_two) / double(n), 0.0455, 0.0025);  // P(|N(0,1)| > 2)
+}
+
+// Dex-Net's noise (GIGA's benchmark): over many images the gain has mean 1 and standard
+// deviation 1 / sqrt(1000); within an image the additive field has a 5 mm deviation, is
+// smooth between neighbouring pixels and independent far apart; the same seed gives the
+// same noise; scale 0 is the ideal sensor.
+TEST(DexNetNoise, GainAndFieldHaveTheModelsStatistics) {
+  SensorModel model;
+  model.kind = SensorKind::kDexNet;
+  double gain_sum = 0.0, gain_sum2 = 0.0;
+  const int images = 4000;
+  for (int i = 0; i < images; ++i) {
+    const double g = DexNetNoise(model, 64, 48, std::uint64_t(i)).gain();
+    gain_sum += g, gain_sum2 += g * g;
+  }
+  const double mean = gain_sum / images, sd = std::sqrt(gain_sum2 / images - mean * mean);
+  EXPECT_NEAR(mean, 1.0, 0.002);
+  EXPECT_NEAR(sd, 1.0 / std::sqrt(1000.0), 0.002);
+
+  const DexNetNoise noise(model, 640, 480, 7);
+  double sum2 = 0.0, neighbour = 0.0, far = 0.0;
+  int n = 0;
+  for (int v = 0; v < 480; v += 4)
+    for (int u = 0; u + 40 < 640; u += 4) {  // grid nodes: the field's own values
+      const double f = noise.apply(0.0, u, v), g = noise.apply(0.0, u + 1, v);
+      sum2 += f * f, neighbour += (f - g) * (f - g), far += f * noise.apply(0.0, u + 40, v);
+      ++n;
+    }
+  EXPECT_NEAR(std::sqrt(sum2 / n), 0.005, 0.0003);
+  EXPECT_LT(std::sqrt(neighbour / n), 0.35 * 0.005);  // a quarter of the way to the next node
+  EXPECT_NEAR(far / n, 0.0, 0.1 * 0.005 * 0.005);
+  EXPECT_DOUBLE_EQ(noise.apply(0.5, 100, 100),
+                   DexNetNoise(model, 640, 480, 7).apply(0.5, 100, 100));
+  EXPECT_NE(noise.apply(0.5, 100, 100), DexNetNoise(model, 640, 480, 8).apply(0.5, 100, 100));
+  model.scale = 0.0;
+  EXPECT_EQ(DexNetNoise(model, 640, 480, 7).apply(0.5, 100, 100), 0.5);
 }
 
 TEST(SensorRandom, NormalsHaveTheMomentsAndTailsOfAStandardNormal) {

@@ -141,12 +141,42 @@ TEST_F(ClutterBenchTest, MergeRefusesShardsThatAreNotOneWholeBench) {
   merge_error(file("none.json"), "cannot read the report");
 }
 
+// VGN's protocol: rounds of five objects from one noisy view; a round ends when the scene is
+// empty, after two consecutive failed attempts, or when a cycle finds no grasp.
+TEST_F(ClutterBenchTest, VgnRoundsFollowTheirRules) {
+  const auto r = report("--protocol vgn-packed --runs 2 --jobs 2", "vgn.json");
+  EXPECT_EQ(r["protocol"], "vgn-packed");
+  EXPECT_EQ(r["objects_per_run"], 5);
+  EXPECT_EQ(r["tree"], "trees/vgn_round.yaml");
+  ASSERT_EQ(r["run_records"].size(), 2u);
+  int successes = 0;
+  for (const auto& run : r["run_records"]) {
+    ASSERT_FALSE(run.contains("error")) << run.dump();
+    EXPECT_LE(run["objects"].get<int>(), 5);
+    successes += run["successes"].get<int>();
+    const auto& cycles = run["cycles"];
+    int failed_in_a_row = 0;
+    for (std::size_t c = 0; c < cycles.size(); ++c) {
+      const bool last = c + 1 == cycles.size();
+      if (cycles[c]["outcome"] == "no grasp found") {
+        EXPECT_TRUE(last) << run.dump(1);
+      }
+      failed_in_a_row = cycles[c]["outcome"] == "success" ? 0 : failed_in_a_row + 1;
+      if (!last) {
+        EXPECT_LT(failed_in_a_row, 2) << run.dump(1);
+      }
+    }
+  }
+  EXPECT_GE(successes, 1) << r["summary"].dump(1);
+}
+
 TEST_F(ClutterBenchTest, BadOptionsAreOneLineErrors) {
+  expect_error("--protocol vgn", "unknown protocol 'vgn' (paper, vgn-pile, vgn-packed)");
   expect_error("--shard 3/2 --report x.json", "--shard: '3/2' is not i/n");
   expect_error("--shard 1/0 --report x.json", "is not i/n");
   expect_error("--shard 1/2", "needs --report");
   expect_error("--runs 0", "--runs must be in 1..100000");
-  expect_error("--objects-per-run 0", "--objects-per-run must be in 1..100");
+  expect_error("--objects-per-run 101", "--objects-per-run must be in 1..100");
   expect_error("--jobs 0", "--jobs must be in 1..64");
   expect_error("--objects /no/such/folder", "neither 'procedural' nor a folder");
   expect_error("--tree trees/none.yaml", "no tree file");

@@ -184,6 +184,17 @@ TEST_F(PipelineNodesTest, ClearBoxStopsAfterConsecutiveCyclesWithoutAGrasp) {
   EXPECT_EQ(run.summary(), "cleared 0 of 4 objects; 0 of 0 attempts succeeded");
 }
 
+// VGN's rule: two consecutive failed attempts end the round.
+TEST_F(PipelineNodesTest, ClearBoxStopsAfterConsecutiveFailedAttempts) {
+  const ClearingRun run = run_clearing(
+      load(clearing_tree("{ plugin: line_cell, objects: 4 }", "max_failures: 2",
+                         R"(SetBlackboard: { key: outcome, value: "no motion plan" })")));
+  EXPECT_EQ(run.stop, ClearingStop::kFailureStreak);
+  EXPECT_EQ(run.cycles.size(), 2u);
+  EXPECT_EQ(run.trailing_failures(), 2);
+  EXPECT_EQ(std::string(to_string(run.stop)), "consecutive attempts failed");
+}
+
 TEST_F(PipelineNodesTest, ClearBoxEndsAfterItsCyclesWhenTheCellCannotCount) {
   const ClearingRun run = run_clearing(
       load(clearing_tree("{ plugin: line_cell }", "max_cycles: 4",

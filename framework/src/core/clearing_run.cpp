@@ -14,6 +14,8 @@ const char* to_string(ClearingStop stop) {
       return "consecutive cycles found no grasp";
     case ClearingStop::kCycleLimit:
       return "the run used all its cycles";
+    case ClearingStop::kFailureStreak:
+      return "consecutive attempts failed";
   }
   return "?";
 }
@@ -42,6 +44,13 @@ int ClearingRun::trailing_misses() const {
   int misses = 0;
   for (auto c = cycles.rbegin(); c != cycles.rend() && !c->chose_grasp(); ++c) ++misses;
   return misses;
+}
+
+int ClearingRun::trailing_failures() const {
+  int failures = 0;
+  for (auto c = cycles.rbegin(); c != cycles.rend() && c->chose_grasp() && !c->succeeded(); ++c)
+    ++failures;
+  return failures;
 }
 
 std::string ClearingRun::summary() const {

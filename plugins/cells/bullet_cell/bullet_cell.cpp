@@ -88,6 +88,11 @@ CellOptions read_cell_options(const Parameters& p, const SceneSpec& scene) {
   CellOptions o;
   o.seed = p.get<std::uint64_t>("seed", scene.seed);
   o.sensor.scale = in_range(p, "noise", 1.0, 0.0, 10.0);
+  const std::string sensor = p.get<std::string>("sensor", "primesense");
+  if (sensor == "dexnet")
+    o.sensor.kind = SensorKind::kDexNet;
+  else if (sensor != "primesense")
+    p.fail("sensor", "parameter 'sensor' must be primesense or dexnet, got '" + sensor + "'");
   o.render_threads = int(in_range(p, "render_threads", o.render_threads, 1, 64));
   o.physics.time_step_s = 1.0 / in_range(p, "physics_hz", 240.0, 60.0, 2000.0);
   o.physics.solver_iterations = int(in_range(p, "solver_iterations", 50, 1, 1000));

@@ -105,7 +105,8 @@ std::vector<SweepRing> arc_tube(const Eigen::Vector3f& centre, const Eigen::Vect
   };
   std::vector<SweepRing> rings;
   const int cap_steps = 6;
-  const Eigen::Vector3f start = point(a0) - lead * tangent(a0), end = point(a1) + lead * tangent(a1);
+  const Eigen::Vector3f start = point(a0) - lead * tangent(a0),
+                        end = point(a1) + lead * tangent(a1);
   if (round_ends) {
     for (int i = 0; i < cap_steps; ++i) {
       const float b = 0.5f * kPi * float(i) / float(cap_steps);
@@ -218,9 +219,9 @@ std::string unknown_shape_message(const std::string& shape) {
 }
 
 const std::vector<std::string>& procedural_shapes() {
-  static const std::vector<std::string> shapes = {
-      "box", "cylinder", "sphere", "capsule", "ellipsoid", "bottle", "mug", "banana", "l_shape",
-      "t_shape"};
+  static const std::vector<std::string> shapes = {"box",       "cylinder", "sphere", "capsule",
+                                                  "ellipsoid", "bottle",   "mug",    "banana",
+                                                  "l_shape",   "t_shape"};
   return shapes;
 }
 
@@ -307,8 +308,7 @@ ObjectModel make_random_object(const std::string& shape, const ProceduralRanges&
     size = {width, random.uniform(0.06, 0.11)};
   else if (shape == "banana") {
     const double length = width + random.uniform(0.08, 0.17);
-    size = {width, length,
-            std::max({random.uniform(0.08, 0.2), (length - width) / 2.5, width})};
+    size = {width, length, std::max({random.uniform(0.08, 0.2), (length - width) / 2.5, width})};
   } else if (shape == "l_shape")
     size = {width, width + random.uniform(0.04, 0.1), width + random.uniform(0.03, 0.08),
             random.uniform(0.025, 0.08)};

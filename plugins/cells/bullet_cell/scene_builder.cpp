@@ -14,23 +14,26 @@ Eigen::Isometry3d translation(double x, double y, double z) {
   return Eigen::Isometry3d(Eigen::Translation3d(x, y, z));
 }
 
-void add_table_and_box(const SceneSpec& spec, PhysicsWorld& world) {
+// Adds the table and the box; returns the box walls' ids.
+std::vector<int> add_table_and_box(const SceneSpec& spec, PhysicsWorld& world) {
   const TableSpec& t = spec.table;
   world.add_fixture_box("table", translation(t.center_m.x(), t.center_m.y(), t.top_z_m - 0.025),
                         {t.size_m.x() / 2, t.size_m.y() / 2, 0.025}, t.friction);
-  if (!spec.box.present) return;
+  std::vector<int> walls;
+  if (!spec.box.present) return walls;
   const BoxSpec& b = spec.box;
   const double hx = b.inner_size_m.x() / 2, hy = b.inner_size_m.y() / 2;
   const double th = b.wall_thickness_m / 2, hz = b.wall_height_m / 2;
   const double z = t.top_z_m + hz;
   for (int side : {-1, 1}) {
-    world.add_fixture_box("box wall",
-                          translation(b.center_m.x() + side * (hx + th), b.center_m.y(), z),
-                          {th, hy + 2 * th, hz}, t.friction);
-    world.add_fixture_box("box wall",
-                          translation(b.center_m.x(), b.center_m.y() + side * (hy + th), z),
-                          {hx, th, hz}, t.friction);
+    walls.push_back(world.add_fixture_box(
+        "box wall", translation(b.center_m.x() + side * (hx + th), b.center_m.y(), z),
+        {th, hy + 2 * th, hz}, t.friction));
+    walls.push_back(world.add_fixture_box(
+        "box wall", translation(b.center_m.x(), b.center_m.y() + side * (hy + th), z), {hx, th, hz},
+        t.friction));
   }
+  return walls;
 }
 
 Eigen::Matrix3d random_rotation(RandomStream& random) {
@@ -148,7 +151,7 @@ std::vector<ObjectModel> scene_objects(const SceneSpec& spec, std::uint64_t seed
 
 std::vector<int> build_scene(const SceneSpec& spec, std::uint64_t seed, MeshCache& meshes,
                              PhysicsWorld& world) {
-  add_table_and_box(spec, world);
+  const std::vector<int> walls = add_table_and_box(spec, world);
   const std::vector<ObjectModel> models = scene_objects(spec, seed, meshes);
   RandomStream random = RandomStream(seed).derive(2);
   std::vector<int> ids;
@@ -173,6 +176,10 @@ std::vector<int> build_scene(const SceneSpec& spec, std::uint64_t seed, MeshCach
     if (spec.placement == Placement::kPile) world.settle(1.5);
   }
   world.settle(2.0);
+  if (spec.box.removed_after_drop) {
+    for (int wall : walls) world.remove_body(wall);
+    world.settle(2.0);
+  }
   remove_fallen(spec, world, ids);
   return ids;
 }

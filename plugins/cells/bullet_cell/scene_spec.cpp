@@ -52,6 +52,7 @@ BoxSpec parse_box(const Parameters& p, const TableSpec& table) {
   b.inner_size_m = vector_at(p, "inner_size_m", 2, b.inner_size_m);
   b.wall_height_m = positive(p, "wall_height_m", b.wall_height_m);
   b.wall_thickness_m = positive(p, "wall_thickness_m", b.wall_thickness_m);
+  b.removed_after_drop = p.get<bool>("removed_after_drop", false);
   p.reject_unknown();
   return b;
 }

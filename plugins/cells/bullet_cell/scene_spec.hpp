@@ -32,6 +32,8 @@ struct BoxSpec {
   Eigen::Vector2d inner_size_m{0.3, 0.3};
   double wall_height_m = 0.06;
   double wall_thickness_m = 0.01;
+  /// Lifted away once a pile has settled, as in VGN's "pile" scenes: the objects spread.
+  bool removed_after_drop = false;
 };
 
 /// One listed object: a primitive (`shape` + `size_m`) or a mesh object (`mesh` in `folder`).

@@ -42,6 +42,9 @@ class ClearBox final : public bt::DecoratorNode {
                                  "the cell cannot count them)"),
              bt::input_port<int>("max_misses", 3,
                                  "stop after this many consecutive cycles without a grasp"),
+             bt::input_port<int>("max_failures", 0,
+                                 "stop after this many consecutive failed attempts; 0 = never "
+                                 "(VGN's protocol: 2)"),
              bt::output_port<ClearingRun>("run", "the record of the run, cycle by cycle")},
             1,
             1,
@@ -81,10 +84,14 @@ class ClearBox final : public bt::DecoratorNode {
     cycle_started_ = false;
     const int given = get_input<int>("max_cycles");
     const int misses = get_input<int>("max_misses");
+    const int failures = get_input<int>("max_failures");
     if (given < 0) fail("max_cycles", "port 'max_cycles' of " + describe() + " must be 0 or more");
     if (misses < 1) fail("max_misses", "port 'max_misses' of " + describe() + " must be 1 or more");
+    if (failures < 0)
+      fail("max_failures", "port 'max_failures' of " + describe() + " must be 0 or more");
     max_cycles_ = given > 0 ? given : run_.objects_at_start >= 0 ? 2 * run_.objects_at_start : 20;
     max_misses_ = misses;
+    max_failures_ = failures;
     log("clearing " + (run_.objects_at_start >= 0 ? std::to_string(run_.objects_at_start) : "?") +
         " objects, at most " + std::to_string(max_cycles_) + " cycles");
     set_output("run", run_);
@@ -93,6 +100,8 @@ class ClearBox final : public bt::DecoratorNode {
   ClearingStop stop_rule() const {
     if (run_.objects_left() == 0) return ClearingStop::kCleared;
     if (run_.trailing_misses() >= max_misses_) return ClearingStop::kMissStreak;
+    if (max_failures_ > 0 && run_.trailing_failures() >= max_failures_)
+      return ClearingStop::kFailureStreak;
     if (int(run_.cycles.size()) >= max_cycles_) return ClearingStop::kCycleLimit;
     return ClearingStop::kRunning;
   }
@@ -135,6 +144,7 @@ class ClearBox final : public bt::DecoratorNode {
     set_output("run", run_);
     std::string why = to_string(stop);
     if (stop == ClearingStop::kMissStreak) why = std::to_string(max_misses_) + " " + why;
+    if (stop == ClearingStop::kFailureStreak) why = std::to_string(max_failures_) + " " + why;
     log("stopped: " + why);
     log(run_.summary());
     return bt::Status::kSuccess;
@@ -143,6 +153,7 @@ class ClearBox final : public bt::DecoratorNode {
   ClearingRun run_;
   int max_cycles_ = 0;
   int max_misses_ = 3;
+  int max_failures_ = 0;
   bool cycle_started_ = false;
   int objects_before_ = -1;
   std::chrono::steady_clock::time_point cycle_start_;

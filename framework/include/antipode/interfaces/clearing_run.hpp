@@ -44,10 +44,11 @@ struct ClearingCycle {
 
 /// Why a run ended.
 enum class ClearingStop : std::uint8_t {
-  kRunning,     ///< not ended yet
-  kCleared,     ///< no object is left
-  kMissStreak,  ///< that many consecutive cycles found no grasp
-  kCycleLimit,  ///< the run used all its cycles
+  kRunning,        ///< not ended yet
+  kCleared,        ///< no object is left
+  kMissStreak,     ///< that many consecutive cycles found no grasp
+  kCycleLimit,     ///< the run used all its cycles
+  kFailureStreak,  ///< that many consecutive attempts failed (VGN's rule)
 };
 
 const char* to_string(ClearingStop stop);
@@ -65,6 +66,8 @@ struct ClearingRun {
   int objects_lost() const;
   /// Consecutive cycles at the end of the run that found no grasp.
   int trailing_misses() const;
+  /// Consecutive attempts (cycles that chose a grasp) at the end of the run that failed.
+  int trailing_failures() const;
   /// "cleared X of Y objects; Z of W attempts succeeded" (Y "?" when unknown).
   std::string summary() const;
 };
