@@ -262,7 +262,11 @@ int main(int argc, char** argv) {
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& error) {
-    return app.exit(error) == 0 ? kExitSuccess : kExitInvalidInput;
+    if (error.get_exit_code() == 0) return app.exit(error);  // --help, --version
+    // One line, as every other error: what CLI11 found wrong, and where to look.
+    std::cerr << "antipode: error: " << error.what()
+              << " (see antipode --help, or the command's --help)\n";
+    return kExitInvalidInput;
   }
   try {
     return dispatch(app, commands);

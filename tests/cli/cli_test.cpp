@@ -161,6 +161,22 @@ TEST_F(CliTest, MissingTreeFileIsOneLineError) {
   EXPECT_NE(result.out.find("/nonexistent/tree.yaml"), std::string::npos) << result.out;
 }
 
+// Command-line mistakes CLI11 finds are one "antipode: error:" line too, exit 2.
+TEST_F(CliTest, CommandLineParseErrorsAreOneLineErrors) {
+  for (const auto& [arguments, words] :
+       {std::pair<std::string, std::string>{"frobnicate", "frobnicate"},
+        {"bench clutter --runz 3", "--runz"},
+        {"run --seed abc x.yaml", "--seed = abc"},
+        {"validate", "tree is required"}}) {
+    const Result result = run(arguments);
+    EXPECT_EQ(result.exit_code, 2) << arguments << ": " << result.out;
+    EXPECT_EQ(std::count(result.out.begin(), result.out.end(), '\n'), 1) << result.out;
+    EXPECT_EQ(result.out.rfind("antipode: error: ", 0), 0u) << result.out;
+    EXPECT_NE(result.out.find(words), std::string::npos) << arguments << ": " << result.out;
+  }
+  EXPECT_EQ(run("--help").exit_code, 0);
+}
+
 TEST_F(CliTest, MalformedSetIsRejected) {
   const std::string tree = write("ok.yaml", "main: t\ntrees:\n  t:\n    AlwaysSuccess: {}\n");
   const Result result = run("run " + tree + " --set novalue");
