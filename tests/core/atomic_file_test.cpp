@@ -1,6 +1,7 @@
 #include "antipode/core/atomic_file.hpp"
 
 #include <gtest/gtest.h>
+#include <sys/stat.h>
 
 #include <filesystem>
 #include <fstream>
@@ -57,6 +58,31 @@ TEST_F(AtomicFileTest, MissingDirectoryIsAnError) {
   } catch (const Error& error) {
     EXPECT_NE(std::string(error.what()).find("does not exist"), std::string::npos);
   }
+}
+
+// The rename would replace the target: a FIFO (as a device like /dev/null) or a folder there
+// is refused before anything is written, and stays what it was.
+TEST_F(AtomicFileTest, ATargetThatIsNotARegularFileIsRefusedAndKept) {
+  const fs::path fifo = dir_ / "pipe.json", folder = dir_ / "folder.json";
+  ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+  fs::create_directories(folder);
+  for (const fs::path& target : {fifo, folder}) {
+    bool wrote = false;
+    try {
+      write_file_atomically(target.string(), [&](const std::string& temp) {
+        wrote = true;
+        std::ofstream(temp) << "{}";
+      });
+      FAIL() << target;
+    } catch (const Error& error) {
+      EXPECT_NE(std::string(error.what()).find("is not a regular file"), std::string::npos)
+          << error.what();
+    }
+    EXPECT_FALSE(wrote);
+  }
+  EXPECT_TRUE(fs::is_fifo(fifo));
+  EXPECT_TRUE(fs::is_directory(folder));
+  EXPECT_EQ(files(), 2u);
 }
 
 }  // namespace

@@ -5,9 +5,12 @@
 #include <limits>
 
 #include <gtest/gtest.h>
+#include <sys/stat.h>
+
 #include <pcl/io/pcd_io.h>
 #include <pcl/io/ply_io.h>
 #include <pcl/point_types.h>
+#include <filesystem>
 
 #include "antipode/core/error.hpp"
 #include "antipode/io/load_cloud.hpp"
@@ -61,6 +64,16 @@ TEST(MalformedCloudTest, MissingFileEmptyFileAndUnknownExtension) {
   write_bytes(dir.file("cloud.xyz"), "1 2 3\n");
   expect_error(dir.file("cloud.xyz"), "unknown extension '.xyz'");
   expect_error(dir.file(""), "no extension");
+}
+
+// A folder or a FIFO named like a cloud: one clear error, not a crash or a read that never
+// ends.
+TEST(MalformedCloudTest, AFolderOrAFifoIsNotACloud) {
+  TempDir dir;
+  std::filesystem::create_directories(dir.file("folder.pcd"));
+  expect_error(dir.file("folder.pcd"), "not a regular file (a folder)");
+  ASSERT_EQ(::mkfifo(dir.file("pipe.ply").c_str(), 0600), 0);
+  expect_error(dir.file("pipe.ply"), "not a regular file (a device or FIFO)");
 }
 
 TEST(MalformedCloudTest, GarbageIsNotAPcdOrPly) {

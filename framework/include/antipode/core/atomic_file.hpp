@@ -11,7 +11,9 @@ namespace antipode {
 /// Calls `write(temporary_path)` to produce the file, then renames the temporary file (in the
 /// same directory, so the rename is atomic) to `path`. If `write` throws, or produces no
 /// file, the temporary file is removed, `path` is left as it was, and an antipode::Error
-/// naming `path` is thrown (the original message is kept).
+/// naming `path` is thrown (the original message is kept). `path` must be absent or a regular
+/// file: a folder, device, FIFO or socket there is an antipode::Error before anything is
+/// written (the rename would replace it).
 void write_file_atomically(const std::string& path,
                            const std::function<void(const std::string& temporary_path)>& write);
 
