@@ -51,12 +51,24 @@ struct Commands {
   std::string node_type;  ///< `antipode nodes [TYPE]`
 };
 
+// A seed: a whole number in 0 .. 2^64-1, written in digits (CLI11 alone takes "-1" as
+// 2^64-1 and "" as 0).
+const CLI::Validator kSeed(
+    [](std::string& text) -> std::string {
+      const bool digits = !text.empty() && text.size() <= 20 &&
+                          text.find_first_not_of("0123456789") == std::string::npos;
+      if (digits && (text.size() < 20 || text <= "18446744073709551615")) return "";
+      return "a seed is a whole number from 0 to 18446744073709551615, got '" + text + "'";
+    },
+    "SEED");
+
 // --set, --seed and -v: the options of every command that runs a tree.
 void add_tree_run_options(CLI::App& command, antipode::cli::TreeRunSettings& settings) {
   command.add_option("--set", settings.set,
                      "Override: component.parameter=value, or key=value for a blackboard entry "
                      "of the main tree (repeatable)");
-  command.add_option("--seed", settings.seed, "Seed of every random stream (default 0)");
+  command.add_option("--seed", settings.seed, "Seed of every random stream (default 0)")
+      ->check(kSeed);
   command.add_flag("-v,--verbose", settings.verbose, "Print every node's status changes");
 }
 
@@ -119,7 +131,7 @@ void add_bench_reach(CLI::App& bench, antipode::cli::ReachBenchOptions& o) {
   reach->add_option("--base", o.base_link, "Base link of the chain")->capture_default_str();
   reach->add_option("--tip", o.tip_link, "Tip link of the chain")->capture_default_str();
   reach->add_option("--ik-poses", o.ik_poses, "Random reachable poses")->capture_default_str();
-  reach->add_option("--seed", o.seed, "Seed of the poses")->capture_default_str();
+  reach->add_option("--seed", o.seed, "Seed of the poses")->capture_default_str()->check(kSeed);
   reach->add_option("--solvers", o.solvers, "Any of dls,kdl")->delimiter(',');
   reach->add_option("--timeout-ms", o.timeout_ms, "Time limit per pose")->capture_default_str();
   reach->add_option("--tolerance", o.tolerance, "m and rad per component")->capture_default_str();
@@ -147,7 +159,8 @@ void add_bench_clutter(CLI::App& bench, antipode::cli::ClutterBenchOptions& o) {
   clutter->add_option("--objects-per-run", o.objects_per_run,
                       "Objects dumped into the box (default: the protocol's, 10 or 5)");
   clutter->add_option("--seed", o.seed, "Cell seed of run 0 (run i: seed + i)")
-      ->capture_default_str();
+      ->capture_default_str()
+      ->check(kSeed);
   clutter->add_option("--jobs", o.jobs, "Processes (the same results for any number)")
       ->capture_default_str();
   clutter->add_option("--report", o.report_path, "Write the report as JSON");
@@ -179,7 +192,9 @@ void add_bench(CLI::App& app, Commands& commands) {
       ->capture_default_str();
   isolation->add_option("--first", o.first, "Number of the first attempt (e.g. to rerun one)")
       ->capture_default_str();
-  isolation->add_option("--seed", o.seed, "Cell seed of attempt 0")->capture_default_str();
+  isolation->add_option("--seed", o.seed, "Cell seed of attempt 0")
+      ->capture_default_str()
+      ->check(kSeed);
   isolation->add_option("--jobs", o.jobs, "Processes (the same results for any number)")
       ->capture_default_str();
   isolation->add_option("--report", o.report_path, "Write the report as JSON");

@@ -219,6 +219,44 @@ trees:
   EXPECT_EQ(tree.component_names(), std::vector<std::string>{"sampler"});
 }
 
+// A nested parameter set from the command line: the siblings in the file stay, a missing
+// level is made, and an unknown one is reported as the component's.
+TEST_F(EntryTest, NestedSetOverridesReachNestedParameters) {
+  const std::string file = R"(
+components:
+  sampler: { plugin: fake_sampler, samples: 3, extra: { add: 1, more: 10 } }
+main: t
+trees:
+  t:
+    UseSampler: { sampler: sampler, out: "{n}" }
+)";
+  options.overrides = {{"sampler.extra.add", "5"}};
+  Tree tree = load(file);
+  EXPECT_EQ(tree.tick_once(), Status::kSuccess);
+  EXPECT_EQ(tree.blackboard().get<int>("n"), 18);  // 3 + 5 + 10
+
+  options.overrides = {{"sampler.extra.more", "20"}, {"sampler.extra.add", "2"}};
+  Tree again = load(R"(
+components:
+  sampler: { plugin: fake_sampler, samples: 3 }
+main: t
+trees:
+  t:
+    UseSampler: { sampler: sampler, out: "{n}" }
+)");
+  EXPECT_EQ(again.tick_once(), Status::kSuccess);
+  EXPECT_EQ(again.blackboard().get<int>("n"), 25);
+
+  options.overrides = {{"sampler.a.b.c", "3"}};
+  try {
+    load(file);
+    FAIL() << "an unknown nested parameter was accepted";
+  } catch (const Error& error) {
+    EXPECT_NE(std::string(error.what()).find("unknown parameter 'a'"), std::string::npos)
+        << error.what();
+  }
+}
+
 TEST_F(EntryTest, SettingAComponentsPluginStartsItsParametersAfresh) {
   // `classifier` was written for another plugin; its parameters mean nothing to the new one.
   options.overrides = {{"sampler.plugin", "fake_sampler"}, {"sampler.samples", "9"}};

@@ -147,7 +147,12 @@ std::optional<ComponentKind> FakeComponentSource::kind_of(const std::string& typ
 std::shared_ptr<Component> FakeComponentSource::create(const std::string& type,
                                                        const Parameters& params) const {
   if (type != "fake_sampler") throw Error("cannot make '" + type + "' in tests");
-  const int samples = params.get<int>("samples", 100);
+  int samples = params.get<int>("samples", 100);
+  if (params.has("extra")) {  // a nested parameter: `extra: { add, more }` add to samples
+    const Parameters extra = params.child("extra");
+    samples += extra.get<int>("add", 0) + extra.get<int>("more", 0);
+    extra.reject_unknown();
+  }
   params.reject_unknown();
   ++created;
   return std::make_shared<FakeSampler>(samples);

@@ -166,8 +166,11 @@ TEST_F(CliTest, CommandLineParseErrorsAreOneLineErrors) {
   for (const auto& [arguments, words] :
        {std::pair<std::string, std::string>{"frobnicate", "frobnicate"},
         {"bench clutter --runz 3", "--runz"},
-        {"run --seed abc x.yaml", "--seed = abc"},
-        {"validate", "tree is required"}}) {
+        {"run --seed abc x.yaml", "got 'abc'"},
+        {"validate", "tree is required"},
+        {"run --seed -1 x.yaml", "a seed is a whole number from 0 to 18446744073709551615"},
+        {"run --seed '' x.yaml", "got ''"},
+        {"bench clutter --seed 123456789012345678901234", "a seed is a whole number"}}) {
     const Result result = run(arguments);
     EXPECT_EQ(result.exit_code, 2) << arguments << ": " << result.out;
     EXPECT_EQ(std::count(result.out.begin(), result.out.end(), '\n'), 1) << result.out;
@@ -175,6 +178,15 @@ TEST_F(CliTest, CommandLineParseErrorsAreOneLineErrors) {
     EXPECT_NE(result.out.find(words), std::string::npos) << arguments << ": " << result.out;
   }
   EXPECT_EQ(run("--help").exit_code, 0);
+}
+
+// A folder where a file is expected (a tree, a model, a scene) is one clear error.
+TEST_F(CliTest, AFolderGivenAsAnInputFileIsOneLineError) {
+  const Result tree = run("run /tmp");
+  EXPECT_EQ(tree.exit_code, 2) << tree.out;
+  EXPECT_NE(tree.out.find("not a regular file (a folder): give a tree file"), std::string::npos)
+      << tree.out;
+  EXPECT_EQ(std::count(tree.out.begin(), tree.out.end(), '\n'), 1) << tree.out;
 }
 
 TEST_F(CliTest, MalformedSetIsRejected) {

@@ -56,13 +56,14 @@ void set_parameter(YAML::Node& document, const std::string& key, const std::stri
   if (!found.IsDefined() || !found.IsMap()) {
     throw Error(what + ": unknown component '" + path[0] + "'" + did_you_mean(path[0], names));
   }
-  YAML::Node target;
-  target.reset(found);
+  // Non-const nodes all the way down (yaml-cpp: a const lookup of a missing key gives an
+  // invalid node, and assigning to a node rebinds nothing - it replaces the value there).
+  YAML::Node target = document["components"][path[0]];
   for (std::size_t i = 1; i + 1 < path.size(); ++i) {
     if (path[i].empty()) throw Error(what + ": empty parameter name");
-    if (!std::as_const(target)[path[i]].IsMap()) target[path[i]] = YAML::Node(YAML::NodeType::Map);
-    YAML::Node next = target[path[i]];
-    target.reset(next);
+    YAML::Node child = target[path[i]];
+    if (!child.IsMap()) child = YAML::Node(YAML::NodeType::Map);  // a new or replaced entry
+    target.reset(child);
   }
   if (path.back().empty()) throw Error(what + ": empty parameter name");
   if (path.size() == 2 && path[1] == "plugin") {

@@ -3,9 +3,12 @@
 #include <fstream>
 #include <sstream>
 
+#include "antipode/core/input_file.hpp"
+
 namespace antipode::bt::detail {
 
 std::string read_text_file(const std::string& path) {
+  require_regular_file(path, "a tree file");
   std::ifstream in(path, std::ios::binary);
   if (!in) throw Error("cannot read tree file '" + path + "'", {path});
   std::ostringstream text;

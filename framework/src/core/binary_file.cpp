@@ -4,6 +4,7 @@
 #include <iterator>
 
 #include "antipode/core/atomic_file.hpp"
+#include "antipode/core/input_file.hpp"
 
 namespace antipode {
 namespace {
@@ -62,6 +63,7 @@ void BinaryWriter::write(const std::string& path) const {
 BinaryReader::BinaryReader(const std::string& path, const std::string& magic,
                            std::uint32_t newest_version, std::string what)
     : path_(path), what_(std::move(what)) {
+  require_regular_file(path, "a " + what_ + " file");
   std::ifstream in(path, std::ios::binary);
   if (!in) throw Error("cannot open " + what_ + " file", SourceLocation{path});
   std::vector<char> bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());

@@ -1,5 +1,6 @@
 list(APPEND ANTIPODE_SOURCES
   ${CMAKE_CURRENT_LIST_DIR}/atomic_file.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/input_file.cpp
   ${CMAKE_CURRENT_LIST_DIR}/binary_file.cpp
   ${CMAKE_CURRENT_LIST_DIR}/clearing_run.cpp
   ${CMAKE_CURRENT_LIST_DIR}/cloud.cpp

@@ -1,4 +1,5 @@
 #include <cmath>
+#include <sstream>
 #include <string>
 
 #include "antipode/core/error.hpp"
@@ -7,10 +8,17 @@
 namespace antipode {
 namespace {
 
+// `value` as a user wrote it: whole numbers without decimals.
+std::string shown(double value) {
+  if (std::isfinite(value) && value == std::floor(value) && std::fabs(value) < 1e15)
+    return std::to_string(static_cast<long long>(value));
+  std::ostringstream text;
+  text << value;
+  return text.str();
+}
+
 void require(bool ok, const std::string& field, const std::string& rule, double value) {
-  if (!ok) {
-    throw Error("hand search: " + field + " must be " + rule + ", got " + std::to_string(value));
-  }
+  if (!ok) throw Error("hand search: " + field + " must be " + rule + ", got " + shown(value));
 }
 
 }  // namespace
@@ -50,7 +58,7 @@ void HandSearchParameters::validate() const {
   require(support.min_above_fraction >= 0.0f && support.min_above_fraction <= 1.0f,
           "support.min_above_fraction", "in [0, 1]", support.min_above_fraction);
   require(support.iterations >= 1, "support.iterations", "at least 1", support.iterations);
-  require(threads >= 0, "threads", ">= 0", threads);
+  require(threads >= 0 && threads <= 256, "threads", "in 0..256 (0: one per core)", threads);
   require(frame.min_points >= 9, "frame.min_points", "at least 9",
           static_cast<double>(frame.min_points));
   require(frame.axis_normals >= 2, "frame.axis_normals", "at least 2",

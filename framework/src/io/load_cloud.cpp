@@ -4,29 +4,20 @@
 #include <cctype>
 #include <cerrno>
 #include <cstring>
-#include <filesystem>
 #include <fstream>
 #include <mutex>
 
 #include <pcl/console/print.h>
 
 #include "antipode/core/error.hpp"
+#include "antipode/core/input_file.hpp"
 #include "raw_points.hpp"
 
 namespace antipode {
 namespace io {
 
 std::string read_file_bytes(const std::string& path) {
-  // Only a regular file: a folder has no bytes to read, and a FIFO or device would block
-  // or never end.
-  std::error_code error;
-  const std::filesystem::file_status status = std::filesystem::status(path, error);
-  if (std::filesystem::exists(status) && !std::filesystem::is_regular_file(status)) {
-    throw Error(std::string("not a regular file (") +
-                    (std::filesystem::is_directory(status) ? "a folder" : "a device or FIFO") +
-                    "): give a .pcd or .ply file",
-                {path});
-  }
+  require_regular_file(path, "a .pcd or .ply file");
   std::ifstream file(path, std::ios::binary);
   if (!file) throw Error(std::string("cannot open cloud file: ") + std::strerror(errno), {path});
   std::string bytes;

@@ -8,6 +8,7 @@
 #include <tuple>
 
 #include "antipode/core/error.hpp"
+#include "antipode/core/input_file.hpp"
 
 namespace antipode::cells {
 namespace {
@@ -26,6 +27,7 @@ int face_index(const std::string& token, int vertex_count, const std::string& pa
 }  // namespace
 
 TriangleMesh read_obj(const std::string& path) {
+  require_regular_file(path, "an OBJ mesh file");
   std::ifstream in(path);
   if (!in) throw Error(path + ": cannot open");
   TriangleMesh mesh;
@@ -52,6 +54,7 @@ TriangleMesh read_obj(const std::string& path) {
 }
 
 TriangleMesh read_binary_stl(const std::string& path) {
+  require_regular_file(path, "an STL mesh file");
   std::ifstream in(path, std::ios::binary);
   if (!in) throw Error(path + ": cannot open");
   char header[80];

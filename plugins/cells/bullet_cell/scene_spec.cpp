@@ -4,6 +4,7 @@
 #include <filesystem>
 
 #include "antipode/core/error.hpp"
+#include "antipode/core/input_file.hpp"
 #include "antipode/core/parameters.hpp"
 #include "procedural_objects.hpp"
 
@@ -204,6 +205,7 @@ SceneSpec parse_scene(const Parameters& p) {
 }
 
 SceneSpec read_scene(const std::string& path) {
+  require_regular_file(path, "a scene file");
   YAML::Node root;
   try {
     root = YAML::LoadFile(path);

@@ -54,6 +54,9 @@ AntipodalLabellingOptions read_options(const Parameters& params) {
   o.normals.min_neighbours = static_cast<std::size_t>(
       integer_at_least(params, "min_neighbours", static_cast<int>(o.normals.min_neighbours), 9));
   o.normals.threads = integer_at_least(params, "threads", o.normals.threads, 0);
+  if (o.normals.threads > 256)
+    params.fail("threads", "parameter 'threads' must be in 0..256 (0: one per core), got " +
+                               std::to_string(o.normals.threads));
   params.reject_unknown();
   return o;
 }

@@ -38,9 +38,9 @@ class HogSvmClassifier final : public Classifier {
         threads_(params.get<int>("threads", 0)) {
     if (!std::isfinite(threshold_))
       params.fail("threshold", "parameter 'threshold' must be finite");
-    if (threads_ < 0) {
-      params.fail("threads",
-                  "parameter 'threads' must be at least 0, got " + std::to_string(threads_));
+    if (threads_ < 0 || threads_ > 256) {
+      params.fail("threads", "parameter 'threads' must be in 0..256 (0: one per core), got " +
+                                 std::to_string(threads_));
     }
     params.reject_unknown();
   }
