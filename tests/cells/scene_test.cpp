@@ -1,9 +1,11 @@
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <btBulletDynamicsCommon.h>
 
 #include <algorithm>
 #include <filesystem>
+#include <fstream>
 
 #include "antipode/core/error.hpp"
 #include "antipode/core/parameters.hpp"
@@ -117,6 +119,34 @@ TEST(Scene, ReportsBadKeysWithTheirPlace) {
   EXPECT_THROW(parse("placement: isolated\nrandom_objects: { count: 2, shapes: [box] }\n"), Error);
   EXPECT_THROW(parse("objects:\n  - { shape: box, size_m: [0.1, 0.1, 0.1], friction: 1.5 }\n"),
                Error);
+}
+
+// Sizes that no table or box can have, and a scene file with nothing in it.
+TEST(Scene, ImpossibleSizesAndAnEmptyFileAreErrors) {
+  const auto error_of = [](const std::string& text) {
+    try {
+      parse(text);
+    } catch (const Error& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  EXPECT_NE(error_of("table: { size_m: [-0.9, 1.0] }\n").find("'size_m' must be two sizes"),
+            std::string::npos);
+  EXPECT_NE(error_of("box: { inner_size_m: [0.3, 0] }\n").find("'inner_size_m'"),
+            std::string::npos);
+  EXPECT_NE(error_of("table: { top_z_m: 1e30 }\n").find("'top_z_m'"), std::string::npos);
+  const std::string empty = (std::filesystem::temp_directory_path() /
+                             ("empty_scene_" + std::to_string(::getpid()) + ".yaml"))
+                                .string();
+  std::ofstream(empty).close();
+  try {
+    read_scene(empty);
+    FAIL() << "an empty scene file was accepted";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("the file is empty"), std::string::npos) << e.what();
+  }
+  std::filesystem::remove(empty);
 }
 
 TEST(Scene, MeshPilesFromTheSharedDataSettleInTheBox) {

@@ -1,6 +1,7 @@
 #include "scene_spec.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
 
 #include "antipode/core/error.hpp"
@@ -30,6 +31,15 @@ double positive(const Parameters& p, const std::string& key, double fallback) {
   return value;
 }
 
+// A 2-vector of sizes, each in (0, max_m].
+Eigen::Vector2d sizes_at(const Parameters& p, const std::string& key,
+                         const Eigen::Vector2d& fallback, double max_m) {
+  const Eigen::Vector2d value = vector_at(p, key, 2, fallback);
+  if (!(value.minCoeff() > 0.0 && value.maxCoeff() <= max_m))
+    p.fail(key, "'" + key + "' must be two sizes in (0, " + std::to_string(int(max_m)) + "] m");
+  return value;
+}
+
 double friction_at(const Parameters& p, double fallback) {
   const double value = p.get<double>("friction", fallback);
   if (!(value > 0.0 && value <= 1.0)) p.fail("friction", "'friction' must be in (0, 1]");
@@ -39,8 +49,11 @@ double friction_at(const Parameters& p, double fallback) {
 TableSpec parse_table(const Parameters& p) {
   TableSpec t;
   t.top_z_m = p.get<double>("top_z_m", t.top_z_m);
+  if (!(std::abs(t.top_z_m) <= 10.0)) p.fail("top_z_m", "'top_z_m' must be in [-10, 10] m");
   t.center_m = vector_at(p, "center_m", 2, t.center_m);
-  t.size_m = vector_at(p, "size_m", 2, t.size_m);
+  if (!(t.center_m.cwiseAbs().maxCoeff() <= 10.0))
+    p.fail("center_m", "'center_m' must be within 10 m of the base");
+  t.size_m = sizes_at(p, "size_m", t.size_m, 10.0);
   t.friction = friction_at(p, t.friction);
   p.reject_unknown();
   return t;
@@ -50,7 +63,7 @@ BoxSpec parse_box(const Parameters& p, const TableSpec& table) {
   BoxSpec b;
   b.present = true;
   b.center_m = vector_at(p, "center_m", 2, table.center_m);
-  b.inner_size_m = vector_at(p, "inner_size_m", 2, b.inner_size_m);
+  b.inner_size_m = sizes_at(p, "inner_size_m", b.inner_size_m, 10.0);
   b.wall_height_m = positive(p, "wall_height_m", b.wall_height_m);
   b.wall_thickness_m = positive(p, "wall_thickness_m", b.wall_thickness_m);
   b.removed_after_drop = p.get<bool>("removed_after_drop", false);
@@ -212,6 +225,10 @@ SceneSpec read_scene(const std::string& path) {
   } catch (const YAML::Exception& e) {
     throw Error("scene '" + path + "': " + e.what());
   }
+  if (!root.IsMap())
+    throw Error("scene '" + path + "': " +
+                (root.IsNull() ? std::string("the file is empty") : "not a map of scene keys") +
+                " (see docs/cell.md, \"Scene files\")");
   return parse_scene(Parameters(root, "scene '" + path + "'", path));
 }
 
