@@ -1,11 +1,14 @@
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <cmath>
 #include <filesystem>
+#include <fstream>
 #include <map>
 #include <utility>
 
 #include "antipode/core/error.hpp"
+#include "mesh_io.hpp"
 #include "mesh_objects.hpp"
 #include "primitive_meshes.hpp"
 #include "procedural_objects.hpp"
@@ -171,6 +174,32 @@ TEST(ProceduralShapes, UnknownNamesSuggestTheNearestShape) {
     EXPECT_NE(std::string(e.what()).find("did you mean 'bottle'"), std::string::npos) << e.what();
     EXPECT_NE(std::string(e.what()).find("t_shape"), std::string::npos) << e.what();
   }
+}
+
+// Mesh files a user may get wrong: a face index past what an int holds, a vertex at 1e30, a
+// face naming a vertex that does not exist - each one clear error naming the file.
+TEST(MeshObjects, BadObjFilesAreClearErrors) {
+  const std::string path =
+      (std::filesystem::temp_directory_path() / ("bad_mesh_" + std::to_string(::getpid()) + ".obj"))
+          .string();
+  const auto error_of = [&](const std::string& text) {
+    std::ofstream(path) << text;
+    try {
+      read_obj(path);
+    } catch (const Error& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  const std::string triangle = "v 0 0 0\nv 1 0 0\nv 0 1 0\n";
+  EXPECT_EQ(error_of(triangle + "f 1 2 3\n"), "no error");
+  EXPECT_NE(
+      error_of(triangle + "f 1 2 99999999999\n").find("face refers to vertex 99999999999 of 3"),
+      std::string::npos);
+  EXPECT_NE(error_of(triangle + "f 1 2 x\n").find("is not a vertex number"), std::string::npos);
+  EXPECT_NE(error_of("v 1e30 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n").find("beyond 1000 m"),
+            std::string::npos);
+  std::filesystem::remove(path);
 }
 
 TEST(MeshObjects, LoadsYcbAndBlobsWhenTheDataIsThere) {

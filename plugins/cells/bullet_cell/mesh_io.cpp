@@ -1,5 +1,8 @@
 #include "mesh_io.hpp"
 
+#include <algorithm>
+#include <charconv>
+#include <cmath>
 #include <cstdint>
 #include <cstring>
 #include <fstream>
@@ -16,13 +19,19 @@ namespace {
 // The vertex index of an OBJ face token "v", "v/vt", "v//vn" or "v/vt/vn" (1-based or
 // negative = relative to the end), as a 0-based index.
 int face_index(const std::string& token, int vertex_count, const std::string& path) {
-  const int raw = std::stoi(token.substr(0, token.find('/')));
-  const int index = raw < 0 ? vertex_count + raw : raw - 1;
+  const std::string number = token.substr(0, token.find('/'));
+  long long raw = 0;
+  const auto [end, error] = std::from_chars(number.data(), number.data() + number.size(), raw);
+  if (error != std::errc() || end != number.data() + number.size())
+    throw Error(path + ": face vertex '" + token + "' is not a vertex number");
+  const long long index = raw < 0 ? vertex_count + raw : raw - 1;
   if (index < 0 || index >= vertex_count)
-    throw Error(path + ": face refers to vertex " + std::to_string(raw) + " of " +
-                std::to_string(vertex_count));
-  return index;
+    throw Error(path + ": face refers to vertex " + number + " of " + std::to_string(vertex_count));
+  return int(index);
 }
+
+// Vertex coordinates beyond this (metres) are no object the cell can hold.
+constexpr float kMaxCoordinate = 1000.0f;
 
 }  // namespace
 
@@ -40,6 +49,8 @@ TriangleMesh read_obj(const std::string& path) {
       Eigen::Vector3f v;
       if (!(fields >> v.x() >> v.y() >> v.z()))
         throw Error(path + ": bad vertex line '" + line + "'");
+      if (!(v.cwiseAbs().maxCoeff() <= kMaxCoordinate))
+        throw Error(path + ": vertex '" + line + "' lies beyond 1000 m (or is not finite)");
       mesh.vertices.push_back(v);
     } else if (tag == "f") {
       std::vector<int> face;
@@ -70,6 +81,9 @@ TriangleMesh read_binary_stl(const std::string& path) {
     for (int k = 0; k < 3; ++k) {
       float xyz[3];
       std::memcpy(xyz, record + 12 + 12 * k, 12);
+      if (!(std::max({std::abs(xyz[0]), std::abs(xyz[1]), std::abs(xyz[2])}) <= kMaxCoordinate))
+        throw Error(path + ": triangle " + std::to_string(i) +
+                    " has a vertex beyond 1000 m (or not finite)");
       const auto key = std::make_tuple(xyz[0], xyz[1], xyz[2]);
       auto [it, inserted] = welded.emplace(key, int(mesh.vertices.size()));
       if (inserted) mesh.vertices.emplace_back(xyz[0], xyz[1], xyz[2]);
