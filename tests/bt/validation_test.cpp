@@ -295,6 +295,42 @@ trees:
             "'_') nor component.parameter");
 }
 
+// Inputs that would cost hours or gigabytes are refused with the limit named: aliases that
+// expand a --set value or a tree file to millions of nodes, subtrees nested 200 deep, a file
+// of 1,500 trees.
+TEST_F(ValidationTest, OversizedInputsAreRefusedWithTheLimit) {
+  std::string bomb = "[&a0 [x, x, x, x, x, x, x, x, x, x]";
+  for (int i = 1; i < 7; ++i) {
+    bomb += ", &a" + std::to_string(i) + " [";
+    for (int k = 0; k < 10; ++k) bomb += std::string(k ? ", " : "") + "*a" + std::to_string(i - 1);
+    bomb += "]";
+  }
+  bomb += "]";
+  const std::string small =
+      "components:\n  sampler: { plugin: fake_sampler }\nmain: t\n"
+      "trees:\n  t:\n    AlwaysSuccess: {}\n";
+  options.overrides = {{"sampler.samples", bomb}};
+  EXPECT_NE(validation_error(small).find("more than 1000000 YAML nodes"), std::string::npos)
+      << validation_error(small);
+  options.overrides = {};
+  EXPECT_NE(validation_error(small + "extra: " + bomb + "\n").find("more than 1000000 YAML nodes"),
+            std::string::npos);
+
+  std::string deep = "main: t0\ntrees:\n";
+  for (int i = 0; i < 200; ++i)
+    deep +=
+        "  t" + std::to_string(i) + ":\n    SubTree: { tree: t" + std::to_string(i + 1) + " }\n";
+  deep += "  t200:\n    AlwaysSuccess: {}\n";
+  EXPECT_NE(validation_error(deep).find("subtrees nest deeper than 64"), std::string::npos)
+      << validation_error(deep);
+
+  std::string many = "main: t0\ntrees:\n";
+  for (int i = 0; i < 1500; ++i) many += "  t" + std::to_string(i) + ":\n    AlwaysSuccess: {}\n";
+  EXPECT_NE(validation_error(many).find("1500 trees, more than the 1000 a file may hold"),
+            std::string::npos)
+      << validation_error(many);
+}
+
 TEST_F(ValidationTest, MissingFileIsAnError) {
   try {
     validate_tree_file("/nonexistent/tree.yaml", options);

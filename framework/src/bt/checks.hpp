@@ -1,6 +1,7 @@
 #pragma once
 // Whole-file checks that run after parsing: subtree cycles and blackboard entry types.
 
+#include <cstddef>
 #include <string>
 #include <utility>
 #include <vector>
@@ -10,7 +11,12 @@
 
 namespace antipode::bt::detail {
 
-// Throws "subtree cycle: a -> b -> a" located at the SubTree node that closes a cycle.
+// How deep SubTree nodes may nest, and how many trees a file may hold.
+inline constexpr std::size_t kMaxSubtreeDepth = 64;
+inline constexpr std::size_t kMaxTrees = 1000;
+
+// Throws "subtree cycle: a -> b -> a" located at the SubTree node that closes a cycle, and an
+// Error when subtrees nest deeper than kMaxSubtreeDepth.
 void check_subtree_cycles(const FileSpec& spec);
 
 // Every port that names an entry (across trees connected by SubTree remapping) must agree on

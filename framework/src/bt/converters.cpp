@@ -6,6 +6,8 @@
 #include <stdexcept>
 #include <vector>
 
+#include "antipode/core/yaml_limits.hpp"
+
 namespace antipode::bt {
 namespace {
 
@@ -149,6 +151,7 @@ std::optional<std::any> LiteralConverters::parse_text(std::type_index type,
   } catch (const YAML::Exception&) {
     as_yaml = YAML::Node(text);
   }
+  check_yaml_size(as_yaml, "the value '" + text.substr(0, 40) + "'");
   if (!as_yaml.IsScalar()) {
     if (auto value = parse(type, as_yaml)) return value;
     as_yaml = YAML::Node(text);

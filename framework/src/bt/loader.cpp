@@ -32,6 +32,10 @@ CheckedFile check_file(const std::string& yaml, const std::string& file_name,
   context.registry = &registry_of(options);
   context.components = options.components;
   checked.spec = detail::parse_document(document, context);
+  if (checked.spec.trees.size() > detail::kMaxTrees) {
+    throw Error(file_name + ": " + std::to_string(checked.spec.trees.size()) +
+                " trees, more than the " + std::to_string(detail::kMaxTrees) + " a file may hold");
+  }
   if (!options.main_tree.empty()) {
     if (checked.spec.tree(options.main_tree) == nullptr) {
       std::vector<std::string> names;

@@ -2,6 +2,7 @@
 
 #include "antipode/bt/blackboard.hpp"
 #include "antipode/core/error.hpp"
+#include "antipode/core/yaml_limits.hpp"
 
 namespace antipode::bt::detail {
 namespace {
@@ -34,18 +35,21 @@ YAML::Node unmarked(const YAML::Node& value) {
   return YAML::Node(YAML::NodeType::Null);
 }
 
-YAML::Node read_value(const std::string& text) {
+YAML::Node read_value(const std::string& text, const std::string& what) {
+  YAML::Node value;
   try {
-    const YAML::Node value = YAML::Load(text);
-    if (value.IsDefined() && !value.IsNull()) return unmarked(value);
+    value = YAML::Load(text);
   } catch (const YAML::Exception&) {
-    // Not YAML: take it as plain text.
+    return YAML::Node(text);  // not YAML: take it as plain text
   }
-  return YAML::Node(text);
+  if (!value.IsDefined() || value.IsNull()) return YAML::Node(text);
+  check_yaml_size(value, what);  // before unmarked() copies every alias
+  return unmarked(value);
 }
 
 void set_parameter(YAML::Node& document, const std::string& key, const std::string& text) {
-  const std::string what = "--set " + key + "=" + text;
+  const std::string what =
+      "--set " + key + "=" + (text.size() > 60 ? text.substr(0, 57) + "..." : text);
   const auto path = split_path(key);
   const YAML::Node components = std::as_const(document)["components"];
   std::vector<std::string> names;
@@ -71,7 +75,7 @@ void set_parameter(YAML::Node& document, const std::string& key, const std::stri
     target.reset(YAML::Node(YAML::NodeType::Map));
     document["components"][path[0]] = target;
   }
-  target[path.back()] = read_value(text);
+  target[path.back()] = read_value(text, what);
 }
 
 }  // namespace

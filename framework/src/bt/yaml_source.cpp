@@ -4,6 +4,7 @@
 #include <sstream>
 
 #include "antipode/core/input_file.hpp"
+#include "antipode/core/yaml_limits.hpp"
 
 namespace antipode::bt::detail {
 
@@ -11,6 +12,13 @@ std::string read_text_file(const std::string& path) {
   require_regular_file(path, "a tree file");
   std::ifstream in(path, std::ios::binary);
   if (!in) throw Error("cannot read tree file '" + path + "'", {path});
+  in.seekg(0, std::ios::end);
+  if (in.tellg() > std::streamoff(kMaxTreeFileBytes)) {
+    throw Error(
+        "the tree file is larger than " + std::to_string(kMaxTreeFileBytes >> 20) + " MB; split it",
+        {path});
+  }
+  in.seekg(0, std::ios::beg);
   std::ostringstream text;
   text << in.rdbuf();
   if (in.bad()) throw Error("cannot read tree file '" + path + "'", {path});
@@ -19,7 +27,9 @@ std::string read_text_file(const std::string& path) {
 
 YAML::Node parse_yaml(const std::string& text, const std::string& file) {
   try {
-    return YAML::Load(text);
+    YAML::Node document = YAML::Load(text);
+    check_yaml_size(document, file);
+    return document;
   } catch (const YAML::ParserException& error) {
     const SourceLocation where{file, error.mark.line + 1, error.mark.column + 1};
     throw Error("YAML syntax error: " + error.msg,

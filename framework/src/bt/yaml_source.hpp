@@ -1,6 +1,7 @@
 #pragma once
 // Reading YAML tree files and locating their nodes for messages.
 
+#include <cstddef>
 #include <string>
 
 #include <yaml-cpp/yaml.h>
@@ -9,10 +10,14 @@
 
 namespace antipode::bt::detail {
 
-// The contents of `path`; throws Error when it cannot be read.
+// The largest tree file read.
+inline constexpr std::size_t kMaxTreeFileBytes = std::size_t(4) << 20;
+
+// The contents of `path`; throws Error when it cannot be read or is over kMaxTreeFileBytes.
 std::string read_text_file(const std::string& path);
 
-// Parses `text`; a syntax error becomes Error "file:line:column: YAML syntax error: ...".
+// Parses `text`; a syntax error becomes Error "file:line:column: YAML syntax error: ...", and
+// a document that expands to more than kMaxYamlNodes nodes an Error too.
 YAML::Node parse_yaml(const std::string& text, const std::string& file);
 
 // Where `node` starts in `file` (1-based), or just `file` when yaml-cpp has no mark.

@@ -7,6 +7,7 @@
 #include "antipode/core/error.hpp"
 #include "antipode/core/input_file.hpp"
 #include "antipode/core/parameters.hpp"
+#include "antipode/core/yaml_limits.hpp"
 #include "procedural_objects.hpp"
 
 namespace fs = std::filesystem;
@@ -225,6 +226,7 @@ SceneSpec read_scene(const std::string& path) {
   } catch (const YAML::Exception& e) {
     throw Error("scene '" + path + "': " + e.what());
   }
+  check_yaml_size(root, "scene '" + path + "'");
   if (!root.IsMap())
     throw Error("scene '" + path + "': " +
                 (root.IsNull() ? std::string("the file is empty") : "not a map of scene keys") +
