@@ -74,7 +74,9 @@ std::string headline(const Json& r) {
   std::vector<std::vector<std::string>> rows = {{"graspable attempts"},
                                                 {"every attempt"},
                                                 {"graspable, held-out objects"},
+                                                {"not graspable"},
                                                 {"where a grasp was found"},
+                                                {"executed on graspable objects: held"},
                                                 {"the paper (real Baxter, 30 objects)"}};
   for (const auto& v : variants_of(r)) {
     header.push_back(variant_name(v));
@@ -83,10 +85,17 @@ std::string headline(const Json& r) {
     rows[1].push_back(rate_with_interval(s[v]["successes"], s[v]["attempts"]));
     rows[2].push_back(rate_with_interval(g["held_out"]["successes"], g["held_out"]["attempts"]));
     rows[3].push_back(
+        rate_with_interval(g["not_graspable"]["successes"], g["not_graspable"]["attempts"]));
+    rows[4].push_back(
         rate_with_interval(s[v]["found_grasp"]["successes"], s[v]["found_grasp"]["attempts"]));
-    rows[4].push_back(paper_rate(v));
+    const Json& f = s[v]["fidelity"];
+    rows[5].push_back(rate_with_interval(f["held"], f["executed"]) + ", " +
+                      f["as_detected"].dump() + " as detected");
+    rows[6].push_back(paper_rate(v));
   }
-  if (rows[2][1] == "-") rows.erase(rows.begin() + 2);
+  // Rows no attempt falls in say nothing.
+  for (std::size_t row : {3u, 2u})
+    if (rows[row][1] == "-") rows.erase(rows.begin() + std::ptrdiff_t(row));
   return markdown_table(header, rows) + "\n";
 }
 

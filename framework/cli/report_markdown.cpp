@@ -41,7 +41,8 @@ std::string machine_phrase(const nlohmann::ordered_json& report) {
 
 std::string noise_phrase(const nlohmann::ordered_json& report) {
   const std::string noise = report.value("noise", "tree");
-  return noise == "tree" ? "the tree's sensor noise" : "sensor noise x" + noise;
+  if (noise == "tree") return "the tree's sensor noise";
+  return noise == "0" ? "a noise-free sensor" : "sensor noise x" + noise;
 }
 
 std::string setting_words(const nlohmann::ordered_json& report, const std::string& tree_a,
