@@ -78,18 +78,15 @@ std::vector<std::int32_t> candidates(const Cloud& cloud, const std::optional<Axi
                                      std::size_t& on_support) {
   std::vector<std::int32_t> indices;
   indices.reserve(cloud.size());
-  bool in_region = false;
   for (std::size_t i = 0; i < cloud.size(); ++i) {
     const Eigen::Vector3f& p = cloud.points_m[i];
     if (region && !region->contains(p)) continue;
-    in_region = true;
     if (support != nullptr && support->distance(p) <= support_distance_m) {
       ++on_support;
       continue;
     }
     indices.push_back(static_cast<std::int32_t>(i));
   }
-  if (!in_region) throw Error("hand search: no point of the cloud lies in the sample region");
   return indices;
 }
 

@@ -139,8 +139,8 @@ struct HandSearchResult {
 /// supplies a configurable origin instead).
 ///
 /// Deterministic: the result depends on the cloud, the parameters (not `threads`) and
-/// `random`'s seed only. Throws antipode::Error for invalid parameters, an empty or invalid
-/// cloud (Cloud::validate) or a sample region without points.
+/// `random`'s seed only. Throws antipode::Error for invalid parameters or an empty or invalid
+/// cloud (Cloud::validate); a sample region without points gives no hands (stats.samples 0).
 HandSearchResult search_hands(const Cloud& cloud, const HandSearchParameters& parameters,
                               const RandomStream& random);
 
