@@ -12,7 +12,7 @@
 namespace antipode::cli {
 namespace {
 
-constexpr int kLeft = 60, kRight = 20, kTop = 50, kBottom = 150;  // margins, pixels
+constexpr int kLeft = 60, kRight = 20, kTop = 50, kBottom = 175;  // margins, pixels
 constexpr int kHeight = 420;                                      // of the plot area
 constexpr int kGroupWidth = 70;                                   // per group, pixels
 

@@ -15,7 +15,7 @@ using Json = nlohmann::ordered_json;
 
 std::string settings_text(const Json& r) {
   const int runs = r["runs"], first = r["seed"];
-  return std::to_string(runs) + " clear-the-box runs of " + r["objects_per_run"].dump() +
+  return std::to_string(runs) + " runs of " + r["objects_per_run"].dump() +
          " objects (" + object_set_name(r["objects"]) + "), seeds " + std::to_string(first) + "-" +
          std::to_string(first + runs - 1) + ", tree `" + r["tree"].get<std::string>() + "`, " +
          noise_phrase(r) + "; " + machine_phrase(r) + ", " + r["jobs"].dump() + " process(es), " +
@@ -75,7 +75,7 @@ std::string failures(const Json& s) {
   char seconds[160];
   std::snprintf(seconds, sizeof seconds,
                 "Median cycle (capture to outcome) %.2f s, median run %.1f s; %d of %d cycles "
-                "found no grasp; %d objects lost off the table.\n\n",
+                "found no grasp; objects lost off the table: %d.\n\n",
                 s["cycle_s_median"].get<double>(), s["run_s_median"].get<double>(),
                 s["no_grasp"].get<int>(), s["cycles"].get<int>(), s["lost"].get<int>());
   return "Failures as the paper groups them (share of attempts):\n\n" +
@@ -84,7 +84,26 @@ std::string failures(const Json& s) {
          ". " + seconds;
 }
 
+// More runs than this get one line about them instead of a row and a bar each.
+constexpr std::size_t kRunsShownOneByOne = 20;
+
+std::string runs_in_short(const Json& r) {
+  int cleared = 0, errors = 0;
+  for (const Json& run : r["run_records"]) {
+    if (run.contains("error")) {
+      ++errors;
+      continue;
+    }
+    cleared += run["left"].get<int>() == 0 ? 1 : 0;
+  }
+  return std::to_string(r["run_records"].size()) + " runs: " + std::to_string(cleared) +
+         " ended with every object removed" +
+         (errors ? ", " + std::to_string(errors) + " with an error" : std::string()) +
+         " (each run's cycles are in the JSON report).\n";
+}
+
 std::string per_run(const Json& r, const PlotPlace& plots, const std::string& name) {
+  if (r["run_records"].size() > kRunsShownOneByOne) return runs_in_short(r);
   BarChart chart;
   chart.title = "clear the box, per run: " + object_set_name(r["objects"]);
   chart.value_label = "% of the run's objects / attempts";
