@@ -137,7 +137,7 @@ TEST_F(HogSvmTest, BadModelsAndParametersAreErrorsAtTheirKeys) {
             std::string::npos);
   EXPECT_NE(error_of([&] {
               create(model_yaml() + "\nthreads: -1");
-            }).find("parameter 'threads' must be at least 0, got -1"),
+            }).find("parameter 'threads' must be in 0..256 (0: one per core), got -1"),
             std::string::npos);
   EXPECT_NE(error_of([&] { create(model_yaml() + "\nthreshold: .nan"); }).find("finite"),
             std::string::npos);

@@ -118,7 +118,7 @@ TEST_F(AntipodalSamplerTest, BadParametersAreLocatedErrors) {
             "tree.yaml:1:8: unknown parameter 'depht_m' of component 'sampler'.hand (did you "
             "mean 'depth_m'?)");
   EXPECT_EQ(creation_error("min_bite_m: 0.5"),
-            "tree.yaml:1:1: hand search: min_bite_m must be in [0, depth_m], got 0.500000");
+            "tree.yaml:1:1: hand search: min_bite_m must be in [0, depth_m], got 0.5");
   EXPECT_EQ(creation_error("support_plane: table"),
             "tree.yaml:1:1: parameter 'support_plane' must be 'auto' or 'none', got 'table'");
   EXPECT_EQ(creation_error("support_distance_m: 0"),
