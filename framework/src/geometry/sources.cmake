@@ -17,5 +17,6 @@ list(APPEND ANTIPODE_SOURCES
   ${CMAKE_CURRENT_LIST_DIR}/sample_hands.cpp
   ${CMAKE_CURRENT_LIST_DIR}/slab_grid.cpp
   ${CMAKE_CURRENT_LIST_DIR}/support_plane.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/depth_scale.cpp
   ${CMAKE_CURRENT_LIST_DIR}/voxel_grid.cpp)
 list(APPEND ANTIPODE_PRIVATE_LIBS TBB::tbb nanoflann::nanoflann)

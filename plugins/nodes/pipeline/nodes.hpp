@@ -21,5 +21,6 @@ void register_select_views(bt::NodeRegistry& registry);
 void register_record_outcome(bt::NodeRegistry& registry);
 void register_clear_box(bt::NodeRegistry& registry);
 void register_avoid_failed_grasps(bt::NodeRegistry& registry);
+void register_correct_depth_scale(bt::NodeRegistry& registry);
 
 }  // namespace antipode::pipeline

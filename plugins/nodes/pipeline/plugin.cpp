@@ -22,6 +22,8 @@ const antipode::PluginFactory kFactories[] = {
     {"node", "ClearBox", "picks until the box is empty", nullptr, &register_clear_box},
     {"node", "AvoidFailedGrasps", "drops hands where a grasp just failed", nullptr,
      &register_avoid_failed_grasps},
+    {"node", "CorrectDepthScale", "corrects depth scale against the support", nullptr,
+     &register_correct_depth_scale},
 };
 
 }  // namespace
