@@ -1,8 +1,12 @@
 #include "antipode/core/atomic_file.hpp"
 
 #include <gtest/gtest.h>
+#include <signal.h>
 #include <sys/stat.h>
+#include <sys/wait.h>
+#include <unistd.h>
 
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
@@ -82,6 +86,35 @@ TEST_F(AtomicFileTest, ATargetThatIsNotARegularFileIsRefusedAndKept) {
   }
   EXPECT_TRUE(fs::is_fifo(fifo));
   EXPECT_TRUE(fs::is_directory(folder));
+  EXPECT_EQ(files(), 2u);
+}
+
+// A process killed while writing (SIGTERM) leaves no temporary file; one killed so that it
+// could not clean up (its file is left behind, as after SIGKILL) has it swept by the next
+// write to the same path.
+TEST_F(AtomicFileTest, NoTemporaryFileOutlivesAKilledWriter) {
+  const std::string path = (dir_ / "out.json").string();
+  const pid_t child = ::fork();
+  ASSERT_GE(child, 0);
+  if (child == 0) {
+    write_file_atomically(path, [](const std::string& temp) {
+      std::ofstream(temp) << "half";
+      ::kill(::getpid(), SIGTERM);
+      ::pause();
+    });
+    std::_Exit(0);
+  }
+  int status = 0;
+  ::waitpid(child, &status, 0);
+  EXPECT_TRUE(WIFSIGNALED(status) && WTERMSIG(status) == SIGTERM);
+  EXPECT_EQ(files(), 0u);  // neither the file nor its temporary
+
+  // A dead process's leftover: a pid that cannot be running (above the kernel's maximum).
+  std::ofstream(dir_ / ".out.partial-99999999.json") << "left behind";
+  std::ofstream(dir_ / ".other.partial-99999999.json") << "not ours to sweep";
+  write_file_atomically(path, [](const std::string& temp) { std::ofstream(temp) << "{}"; });
+  EXPECT_FALSE(fs::exists(dir_ / ".out.partial-99999999.json"));
+  EXPECT_TRUE(fs::exists(dir_ / ".other.partial-99999999.json"));
   EXPECT_EQ(files(), 2u);
 }
 

@@ -14,6 +14,11 @@ namespace antipode {
 /// naming `path` is thrown (the original message is kept). `path` must be absent or a regular
 /// file: a folder, device, FIFO or socket there is an antipode::Error before anything is
 /// written (the rename would replace it).
+///
+/// The temporary file is `.STEM.partial-PID.EXT` beside `path`. It is removed when the
+/// process receives SIGINT or SIGTERM while writing (the handler is installed only where the
+/// program has none of its own), and files of that name left by processes that no longer run
+/// (killed with SIGKILL) are removed by the next write to `path`.
 void write_file_atomically(const std::string& path,
                            const std::function<void(const std::string& temporary_path)>& write);
 
