@@ -408,6 +408,25 @@ TEST(SvmTest, DamagedModelFilesAreClearErrors) {
   std::memcpy(nan.data() + nan.size() - 48, &not_a_number, sizeof(double));
   fix_checksum(nan);
   EXPECT_NE(load_error(nan).find("non-finite number"), std::string::npos) << load_error(nan);
+  // An image size no descriptor needs (a model asking for 200 x 200 px cells would take
+  // gigabytes per hand): refused when the file is read.
+  // The image options follow the descriptor's name as int32s: cells along, across, cell px.
+  std::vector<char> huge = good;
+  const HandImageOptions image = trained().descriptor.image;
+  std::string options(12, '\0');
+  for (int k = 0; k < 3; ++k) {
+    const std::int32_t value = k == 0   ? image.cells_along
+                               : k == 1 ? image.cells_across
+                                        : image.cell_px;
+    std::memcpy(options.data() + 4 * k, &value, 4);
+  }
+  const std::size_t at = find(huge, options);
+  ASSERT_LT(at, huge.size());
+  const std::int32_t cell_px = 200;
+  std::memcpy(huge.data() + at + 8, &cell_px, 4);
+  fix_checksum(huge);
+  EXPECT_NE(load_error(huge).find("at most 256 x 256 pixels"), std::string::npos)
+      << load_error(huge);
   fs::remove(path);
   EXPECT_NE(error_of([&] { SvmModel::load(path); }).find("cannot open classifier model file"),
             std::string::npos);

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdint>
 #include <memory>
 #include <string>
 
@@ -178,6 +179,16 @@ void HandImageOptions::validate() const {
   if (block_cells > cells_along || block_cells > cells_across) {
     throw Error("hand image: block_cells (" + std::to_string(block_cells) +
                 ") exceeds cells_along or cells_across");
+  }
+  // Bounds no descriptor needs to pass: an image of at most 256 x 256 pixels and 64 bins
+  // (the shipped model's is 60 x 72, 9 bins), so that a damaged or hostile model file cannot
+  // ask for gigabytes per hand.
+  if (cells_along > 256 || cells_across > 256 || cell_px > 64 || bins > 64 ||
+      std::int64_t(cells_along) * cell_px > 256 || std::int64_t(cells_across) * cell_px > 256) {
+    throw Error("hand image: at most 256 x 256 pixels and 64 bins, got " +
+                std::to_string(std::int64_t(cells_along) * cell_px) + " x " +
+                std::to_string(std::int64_t(cells_across) * cell_px) + " pixels and " +
+                std::to_string(bins) + " bins");
   }
 }
 

@@ -493,6 +493,11 @@ SvmModel SvmModel::load(const std::string& path) {
            "; retrain with `antipode train`");
   }
   m.descriptor.image = detail::get_image_options(r);
+  try {
+    m.descriptor.image.validate();  // a damaged file must not ask for a gigabyte image
+  } catch (const Error& e) {
+    r.fail(e.message());
+  }
   m.descriptor.depth_m = r.get<double>();
   m.descriptor.max_aperture_m = r.get<double>();
   m.descriptor.height_m = r.get<double>();
