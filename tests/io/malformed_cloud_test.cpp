@@ -2,6 +2,7 @@
 // hang or an allocation the file's size does not justify.
 #include <algorithm>
 #include <chrono>
+#include <cstring>
 #include <limits>
 
 #include <gtest/gtest.h>
@@ -196,6 +197,28 @@ TEST(MalformedCloudTest, TruncatedAndHeaderlessPly) {
   expect_every_cut_fails(dir.file("a.ply"), read_bytes(dir.file("a.ply")).size() / 2);
   write_bytes(dir.file("n.ply"), "ply\nformat ascii 1.0\nelement face 0\nend_header\n");
   expect_error(dir.file("n.ply"), "no vertex element");
+}
+
+// A binary vertex list that declares more items than the file holds (PCL's reader aborted the
+// process on it): an error naming the list, and a well-formed list still loads.
+TEST(MalformedCloudTest, BinaryPlyListsMustFitTheFile) {
+  TempDir dir;
+  const std::string header =
+      "ply\nformat binary_little_endian 1.0\nelement vertex 2\nproperty float x\n"
+      "property float y\nproperty float z\nproperty list uchar int extra\nend_header\n";
+  const auto record = [](float x, unsigned char items) {
+    std::string bytes(12, '\0');
+    const float xyz[3] = {x, 0.5f, 1.0f};
+    std::memcpy(bytes.data(), xyz, 12);
+    bytes += char(items);
+    return bytes + std::string(4 * std::size_t(items), '\0');
+  };
+  write_bytes(dir.file("good.ply"), header + record(0.1f, 1) + record(0.2f, 0));
+  EXPECT_EQ(load_cloud(dir.file("good.ply")).size(), 2u);
+  std::string bad = header + record(0.1f, 1) + record(0.2f, 0);
+  bad[header.size() + 12] = char(200);  // the first list claims 200 ints
+  write_bytes(dir.file("bad.ply"), bad);
+  expect_error(dir.file("bad.ply"), "the list 'extra' of element 'vertex' record 0 declares 200");
 }
 
 }  // namespace

@@ -16,16 +16,25 @@ namespace {
 constexpr std::uint64_t kMaxPoints = std::numeric_limits<std::int32_t>::max();
 constexpr std::size_t kMaxHeaderBytes = 64 * 1024;
 
+// One property of an element: a scalar of `size` bytes, or a list whose length is a
+// `size`-byte unsigned count followed by that many `item_size`-byte items.
+struct PlyProperty {
+  std::string name;
+  std::uint64_t size = 0;
+  std::uint64_t item_size = 0;  // 0: not a list
+};
+
 struct PlyElement {
   std::string name;
   std::uint64_t count = 0;
   std::uint64_t min_record_bytes = 0;  // binary: scalars plus the count of each list
   std::uint64_t values = 0;            // ascii: values per record at least
-  std::vector<std::string> properties;
+  std::vector<PlyProperty> properties;
 };
 
 struct PlyHeader {
   bool ascii = true;
+  bool big_endian = false;
   std::vector<PlyElement> elements;
   std::size_t data_offset = 0;
 };
@@ -83,7 +92,7 @@ class PlyHeaderParser {
     if (words[1] == "ascii")
       header_.ascii = true;
     else if (words[1] == "binary_little_endian" || words[1] == "binary_big_endian")
-      header_.ascii = false;
+      header_.ascii = false, header_.big_endian = words[1] == "binary_big_endian";
     else
       fail("format " + quote_for_message(words[1]) + " is unknown");
   }
@@ -104,9 +113,11 @@ class PlyHeaderParser {
     if (!list && words.size() != 3) fail("property needs a type and a name");
     const std::uint64_t size = scalar_size(list ? words[2] : words[1]);
     if (size == 0 || (list && scalar_size(words[3]) == 0)) fail("property type is unknown");
+    if (list && size > 4) fail("a list's count must be an integer of at most 4 bytes");
     element.min_record_bytes += size;
     element.values += 1;
-    element.properties.emplace_back(words.back());
+    element.properties.push_back(
+        {std::string(words.back()), size, list ? scalar_size(words[3]) : 0});
   }
 
   const std::string& path_;
@@ -125,7 +136,7 @@ void check_ply(const std::string& path, const std::string& bytes, const PlyHeade
   if (vertex == nullptr) throw Error("the PLY file has no vertex element", {path});
   for (const char* name : {"x", "y", "z"}) {
     bool found = false;
-    for (const auto& property : vertex->properties) found = found || property == name;
+    for (const auto& property : vertex->properties) found = found || property.name == name;
     if (!found)
       throw Error(std::string("the PLY vertices have no '") + name + "' property", {path});
   }
@@ -137,11 +148,49 @@ void check_ply(const std::string& path, const std::string& bytes, const PlyHeade
   }
 }
 
+// The unsigned `size`-byte count at `at` in the file's byte order.
+std::uint64_t list_count(const std::string& bytes, std::size_t at, std::uint64_t size,
+                         bool big_endian) {
+  std::uint64_t value = 0;
+  for (std::uint64_t k = 0; k < size; ++k) {
+    const auto byte = static_cast<unsigned char>(bytes[at + (big_endian ? k : size - 1 - k)]);
+    value = (value << 8) | byte;
+  }
+  return value;
+}
+
+// Walks a binary file's records, list lengths included, and throws unless they all lie in
+// the file (PCL's reader aborts the process on a list that runs past the end).
+void check_binary_records(const std::string& path, const std::string& bytes,
+                          const PlyHeader& header) {
+  std::uint64_t at = header.data_offset;
+  const std::uint64_t end = bytes.size();
+  for (const auto& element : header.elements)
+    for (std::uint64_t record = 0; record < element.count; ++record)
+      for (const auto& property : element.properties) {
+        if (at + property.size > end) {
+          throw Error("truncated PLY file: element '" + element.name + "' record " +
+                          std::to_string(record) + " runs past the end of the file",
+                      {path});
+        }
+        const std::uint64_t items =
+            property.item_size == 0 ? 0 : list_count(bytes, at, property.size, header.big_endian);
+        at += property.size + items * property.item_size;
+        if (at > end) {
+          throw Error("truncated PLY file: the list '" + property.name + "' of element '" +
+                          element.name + "' record " + std::to_string(record) + " declares " +
+                          std::to_string(items) + " items, past the end of the file",
+                      {path});
+        }
+      }
+}
+
 }  // namespace
 
 RawPoints read_ply(const std::string& path, const std::string& bytes) {
   const PlyHeader header = PlyHeaderParser(path, bytes).parse();
   check_ply(path, bytes, header);
+  if (!header.ascii) check_binary_records(path, bytes, header);
   RawPoints raw;
   for (const auto& element : header.elements) {
     if (element.name == "vertex" && element.count == 0) return raw;
