@@ -1,6 +1,11 @@
 #include "antipode/plugin/plugin_host.hpp"
 
 #include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <cstdio>
+#include <fstream>
+#include <iterator>
 
 #include <optional>
 
@@ -105,6 +110,22 @@ TEST(PluginHostTest, NonLibraryFileIsRefused) {
   const PluginRecord& record = host.load_library(bad("not_elf"));
   EXPECT_EQ(record.state, PluginRecord::State::kRefused);
   EXPECT_TRUE(contains(record.reason, bad("not_elf"))) << record.reason;  // dlerror names it
+}
+
+// A real plugin library cut short (an interrupted copy): refused before dlopen maps it, with
+// the reason, instead of a SIGBUS when the missing part is touched.
+TEST(PluginHostTest, TruncatedLibraryIsRefusedNotMapped) {
+  std::ifstream in(kGood, std::ios::binary);
+  const std::string bytes((std::istreambuf_iterator<char>(in)), {});
+  ASSERT_GT(bytes.size(), 4096u);
+  const std::string path =
+      ::testing::TempDir() + "libantipode_cut_" + std::to_string(::getpid()) + ".so";
+  std::ofstream(path, std::ios::binary) << bytes.substr(0, bytes.size() / 3);
+  PluginHost host(std::vector<std::string>{});
+  const PluginRecord& record = host.load_library(path);
+  EXPECT_EQ(record.state, PluginRecord::State::kRefused);
+  EXPECT_TRUE(contains(record.reason, "the file is truncated")) << record.reason;
+  std::remove(path.c_str());
 }
 
 TEST(PluginHostTest, UndefinedSymbolIsRefusedWithDlerrorText) {

@@ -10,6 +10,7 @@
 
 #include "antipode/config.hpp"
 #include "antipode/core/error.hpp"
+#include "elf_check.hpp"
 #include "plugin_kind.hpp"
 
 namespace antipode {
@@ -158,6 +159,11 @@ std::string PluginHost::refuse_reason(const PluginDescriptor& descriptor) const 
 
 const PluginRecord& PluginHost::load_library(const std::string& path) {
   PluginRecord record{path, PluginRecord::State::kRefused, "", "", "", {}};
+  if (std::string problem = detail::elf_problem(path); !problem.empty()) {
+    record.reason = std::move(problem);
+    records_.push_back(std::move(record));
+    return records_.back();
+  }
   dlerror();  // clear any stale error
   void* handle = dlopen(path.c_str(), RTLD_NOW | RTLD_LOCAL);
   if (handle == nullptr) {
