@@ -136,6 +136,11 @@ TEST(Scene, ImpossibleSizesAndAnEmptyFileAreErrors) {
   EXPECT_NE(error_of("box: { inner_size_m: [0.3, 0] }\n").find("'inner_size_m'"),
             std::string::npos);
   EXPECT_NE(error_of("table: { top_z_m: 1e30 }\n").find("'top_z_m'"), std::string::npos);
+  std::string crowd = "objects:\n";
+  for (int i = 0; i < 101; ++i) crowd += "  - { shape: sphere, size_m: [0.05] }\n";
+  EXPECT_NE(error_of(crowd).find("'objects' lists 101 objects; a scene holds at most 100"),
+            std::string::npos)
+      << error_of(crowd);
   const std::string empty = (std::filesystem::temp_directory_path() /
                              ("empty_scene_" + std::to_string(::getpid()) + ".yaml"))
                                 .string();

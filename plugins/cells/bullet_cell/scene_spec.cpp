@@ -198,12 +198,19 @@ SceneSpec parse_scene(const Parameters& p) {
     const YAML::Node list = p.yaml()["objects"];
     p.get<YAML::Node>("objects", {});
     if (!list.IsSequence()) p.fail("objects", "'objects' must be a list");
+    if (list.size() > 100)
+      p.fail("objects", "'objects' lists " + std::to_string(list.size()) +
+                            " objects; a scene holds at most 100");
     for (std::size_t i = 0; i < list.size(); ++i)
       s.objects.push_back(parse_object(
           Parameters(list[i], "object " + std::to_string(i + 1) + " of the scene", s.file),
           s.file));
   }
   if (p.has("random_objects")) s.random = parse_random(p.child("random_objects"), s.file);
+  if (s.objects.size() + std::size_t(s.random.count) > 100)
+    p.fail("random_objects", "the scene holds " + std::to_string(s.objects.size()) +
+                                 " listed and " + std::to_string(s.random.count) +
+                                 " random objects; at most 100 in all");
   if (p.has("cameras")) {
     const Parameters cams = p.child("cameras");
     for (const auto& item : cams.yaml())
