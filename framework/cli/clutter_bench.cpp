@@ -32,6 +32,7 @@ using Json = nlohmann::ordered_json;
 struct RunSettings {
   std::string tree_path;
   std::string tree_yaml;
+  std::string pictures_dir;  ///< failed attempts drawn here as seed-S-cycle-NN.png ("" = none)
   int threads = 2;
   std::vector<std::pair<std::string, std::string>> entries;  ///< the same for every run
 };
@@ -50,6 +51,8 @@ void check_options(const ClutterBenchOptions& o) {
     throw Error("--objects-per-run must be in 1..100");
   if (o.jobs < 1 || o.jobs > 64) throw Error("--jobs must be in 1..64");
   if (!fs::is_regular_file(o.tree_path)) throw Error("--tree: no tree file '" + o.tree_path + "'");
+  if (!o.pictures_dir.empty() && fs::exists(o.pictures_dir) && !fs::is_directory(o.pictures_dir))
+    throw Error("--pictures: '" + o.pictures_dir + "' is not a folder");
   if (o.objects != "procedural" && !fs::is_directory(o.objects))
     throw Error("--objects: '" + o.objects + "' is neither 'procedural' nor a folder of meshes");
   parse_overrides(o.set);  // throws for an entry without '='
@@ -80,6 +83,11 @@ bt::Tree load_run_tree(const Session& session, const RunSettings& settings, std:
   load.components = session.host.get();
   load.seed = seed;
   load.overrides = {{"cell.seed", std::to_string(seed)}};
+  if (!settings.pictures_dir.empty()) {
+    load.overrides.emplace_back(
+        "picture_prefix",
+        (fs::path(settings.pictures_dir) / ("seed-" + std::to_string(seed) + "-")).string());
+  }
   for (const auto& entry : settings.entries) load.overrides.push_back(entry);
   return bt::load_tree_string(settings.tree_yaml, settings.tree_path, load);
 }
@@ -262,6 +270,8 @@ int bench_clutter_command(const ClutterBenchOptions& options) {
   const std::vector<std::size_t> tasks = shard_tasks(std::size_t(o.runs), shard);
   RunSettings settings;
   settings.tree_path = o.tree_path;
+  settings.pictures_dir = o.pictures_dir;
+  if (!o.pictures_dir.empty()) fs::create_directories(o.pictures_dir);
   std::ifstream tree_file(o.tree_path);
   settings.tree_yaml.assign(std::istreambuf_iterator<char>(tree_file), {});
   const int cores = int(std::max(1u, std::thread::hardware_concurrency()));

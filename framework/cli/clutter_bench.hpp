@@ -25,6 +25,7 @@ struct ClutterBenchOptions {
   std::string noise;      ///< the cell's sensor noise scale ("" = the tree's)
   std::vector<std::string> set;  ///< --set overrides of the tree, applied last
   std::string shard;             ///< "i/n": run only that shard of the runs ("" = all)
+  std::string pictures_dir;      ///< failed attempts drawn as seed-S-cycle-NN.png ("" = none)
 };
 
 /// Runs the clear-the-box runs in `jobs` processes (the same results for any number), prints

@@ -169,6 +169,8 @@ void add_bench_clutter(CLI::App& bench, antipode::cli::ClutterBenchOptions& o) {
                       "trees/vgn_round.yaml)");
   clutter->add_option("--noise", o.noise, "The cell's sensor noise scale (default: the tree's)");
   clutter->add_option("--set", o.set, "Override a tree entry or component parameter");
+  clutter->add_option("--pictures", o.pictures_dir,
+                      "Draw every failed attempt into this folder (seed-S-cycle-NN.png)");
   clutter->add_option("--shard", o.shard,
                       "i/n: run every n-th run from the i-th (then bench merge)");
 }

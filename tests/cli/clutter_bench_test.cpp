@@ -3,8 +3,11 @@
 // processes, and one-line errors for bad options.
 #include <gtest/gtest.h>
 
+#include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <set>
 
 #include "support/bench_command.hpp"
 
@@ -168,6 +171,27 @@ TEST_F(ClutterBenchTest, VgnRoundsFollowTheirRules) {
     }
   }
   EXPECT_GE(successes, 1) << r["summary"].dump(1);
+}
+
+// --pictures draws every attempt the cell executed and that failed, named by seed and cycle,
+// and nothing else.
+TEST_F(ClutterBenchTest, PicturesShowEveryFailedAttempt) {
+  const std::string folder = file("pictures");
+  const auto r = report("--runs 1 --seed 2003 --pictures " + folder, "pictured.json");
+  ASSERT_EQ(r["run_records"].size(), 1u);
+  std::set<std::string> expected;
+  const auto& cycles = r["run_records"][0]["cycles"];
+  for (std::size_t c = 0; c < cycles.size(); ++c) {
+    if (!cycles[c].contains("record") || cycles[c]["outcome"] == "success") continue;
+    char name[64];
+    std::snprintf(name, sizeof name, "seed-2003-cycle-%02zu.png", c + 1);
+    expected.insert(name);
+  }
+  std::set<std::string> drawn;
+  for (const auto& entry : std::filesystem::directory_iterator(folder))
+    drawn.insert(entry.path().filename().string());
+  EXPECT_EQ(drawn, expected);
+  EXPECT_FALSE(expected.empty()) << "seed 2003 no longer fails an attempt: pick another seed";
 }
 
 TEST_F(ClutterBenchTest, BadOptionsAreOneLineErrors) {

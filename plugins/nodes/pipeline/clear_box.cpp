@@ -45,6 +45,12 @@ class ClearBox final : public bt::DecoratorNode {
              bt::input_port<int>("max_failures", 0,
                                  "stop after this many consecutive failed attempts; 0 = never "
                                  "(VGN's protocol: 2)"),
+             bt::input_port<std::string>("picture_prefix", std::string(),
+                                         "names each cycle's picture: PREFIXcycle-NN.png "
+                                         "(\"\" = no pictures)"),
+             bt::output_port<std::string>("picture",
+                                          "the file the cycle about to run may draw itself to "
+                                          "(\"\" when picture_prefix is empty)"),
              bt::output_port<ClearingRun>("run", "the record of the run, cycle by cycle")},
             1,
             1,
@@ -107,6 +113,10 @@ class ClearBox final : public bt::DecoratorNode {
   }
 
   void begin_cycle() {
+    const std::string prefix = get_input<std::string>("picture_prefix");
+    char number[16];
+    std::snprintf(number, sizeof number, "%02zu", run_.cycles.size() + 1);
+    set_output("picture", prefix.empty() ? std::string() : prefix + "cycle-" + number + ".png");
     cycle_started_ = true;
     cycle_start_ = std::chrono::steady_clock::now();
     objects_before_ = run_.objects_left();
