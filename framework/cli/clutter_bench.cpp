@@ -1,7 +1,10 @@
 #include "clutter_bench.hpp"
 
+#include <malloc.h>
 #include <algorithm>
+
 #include <chrono>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <iomanip>
@@ -108,6 +111,16 @@ Json cycle_json(const ClearingCycle& cycle) {
   return out;
 }
 
+// This process's resident memory (MB, from /proc/self/status; 0 where there is none), after
+// handing freed memory back to the system: a process that runs many episodes must not grow.
+double resident_mb() {
+  ::malloc_trim(0);  // what the process holds, not what the allocator keeps for reuse
+  std::ifstream status("/proc/self/status");
+  for (std::string line; std::getline(status, line);)
+    if (line.rfind("VmRSS:", 0) == 0) return std::strtod(line.c_str() + 6, nullptr) / 1024.0;
+  return 0.0;
+}
+
 Json run_one(const Session& session, const RunSettings& settings, std::size_t index,
              std::uint64_t seed) {
   Json out = {{"task", index}, {"seed", seed}};
@@ -135,6 +148,7 @@ Json run_one(const Session& session, const RunSettings& settings, std::size_t in
   } catch (const std::exception& error) {
     out["error"] = error.what();
   }
+  out["rss_mb"] = resident_mb();
   out["stage_s"] = timer.seconds();
   out["wall_s"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   tree.remove_observer(&timer);
