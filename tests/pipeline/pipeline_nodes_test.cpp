@@ -82,6 +82,39 @@ trees:
   EXPECT_NEAR(board.get<Hand>("executed").position_m().z(), 0.04, 1e-6);
 }
 
+// A classifier that throws or returns something that is not a classification of the hands
+// given fails ClassifyHands with the reason: nothing wrong is passed on, nothing crashes.
+TEST_F(PipelineNodesTest, AMisbehavingClassifierFailsItsNodeWithTheReason) {
+  for (const auto& [garbage, reason] :
+       {std::pair<std::string, std::string>{"nan", "gave hand 0 a score that is not a number"},
+        {"drop", "returned 4 hands for 5"},
+        {"throw", "the classifier failed: the model file vanished"}}) {
+    bt::Tree tree = load(R"(
+components:
+  cell: { plugin: line_cell, points: 5 }
+  sampler: { plugin: point_sampler }
+  classifier: { plugin: garbage_classifier, garbage: )" +
+                         garbage + R"( }
+main: t
+trees:
+  t:
+    Sequence:
+      - CaptureCloud: { cell: cell, cloud: "{cloud}" }
+      - SampleHands: { sampler: sampler, cloud: "{cloud}", hands: "{hands}" }
+      - ClassifyHands:
+          { name: classify, classifier: classifier, hands: "{hands}", classified: "{scored}" }
+)");
+    tree.set_log_sink([](const bt::Node&, const std::string&) {});
+    EXPECT_EQ(tree.tick_while_running(), bt::Status::kFailure) << garbage;
+    EXPECT_FALSE(tree.blackboard().has("scored")) << garbage;
+    std::string failure;
+    tree.visit([&](const bt::Node& node, int) {
+      if (node.name() == "classify") failure = node.failure_reason();
+    });
+    EXPECT_NE(failure.find(reason), std::string::npos) << garbage << ": " << failure;
+  }
+}
+
 TEST_F(PipelineNodesTest, LoopOverScenesCountsSeedsAndOutcomes) {
   bt::Tree tree = load(std::string(kComponents) + R"(
 trees:

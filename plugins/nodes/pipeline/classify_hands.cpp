@@ -1,11 +1,29 @@
 #include <algorithm>
+#include <cmath>
+#include <string>
 
 #include "antipode/bt/action_node.hpp"
+#include "antipode/core/error.hpp"
 #include "antipode/interfaces/classifier.hpp"
 #include "nodes.hpp"
 
 namespace antipode::pipeline {
 namespace {
+
+// What is wrong with `out` as a classification of `in`: other hands, or scores that are
+// not numbers. "" when nothing is.
+std::string classification_problem(const HandSet& in, const HandSet& out) {
+  if (out.hands.size() != in.hands.size())
+    return "returned " + std::to_string(out.hands.size()) + " hands for " +
+           std::to_string(in.hands.size());
+  for (std::size_t i = 0; i < out.hands.size(); ++i) {
+    if (!std::isfinite(out.hands[i].score))
+      return "gave hand " + std::to_string(i) + " a score that is not a number";
+    if (!out.hands[i].X_FrameHand.matrix().isApprox(in.hands[i].X_FrameHand.matrix()))
+      return "moved hand " + std::to_string(i);
+  }
+  return "";
+}
 
 /// Scores and labels hands with a classifier; fails when no hand is labelled a grasp.
 class ClassifyHands final : public bt::SyncActionNode {
@@ -25,8 +43,22 @@ class ClassifyHands final : public bt::SyncActionNode {
 
  protected:
   bt::Status tick() override {
-    auto classified = std::make_shared<HandSet>(*get_input<HandSetPtr>("hands"));
-    component<Classifier>("classifier").classify(*classified, stop_token());
+    const HandSetPtr in = get_input<HandSetPtr>("hands");
+    auto classified = std::make_shared<HandSet>(*in);
+    // A classifier's fault (it threw, or gave back something that is not a classification of
+    // these hands) fails this node with the reason; nothing wrong is passed on.
+    try {
+      component<Classifier>("classifier").classify(*classified, stop_token());
+    } catch (const InternalError&) {
+      throw;
+    } catch (const Error& error) {
+      set_failure_reason(std::string("the classifier failed: ") + error.what());
+      return bt::Status::kFailure;
+    }
+    if (const std::string problem = classification_problem(*in, *classified); !problem.empty()) {
+      set_failure_reason("the classifier " + problem);
+      return bt::Status::kFailure;
+    }
     const auto grasps =
         std::count_if(classified->hands.begin(), classified->hands.end(),
                       [](const Hand& hand) { return hand.label == HandLabel::kPositive; });
