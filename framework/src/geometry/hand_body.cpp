@@ -52,4 +52,8 @@ std::vector<std::int32_t> points_in_closing_region(const HandBody& body,
                       [&body](const Eigen::Vector3d& p) { return body.in_closing_region(p); });
 }
 
+Eigen::Vector3d grasp_centre(const Hand& hand, const HandGeometry& geometry) {
+  return hand.X_FrameHand * Eigen::Vector3d(geometry.depth_m / 2, 0.0, 0.0);
+}
+
 }  // namespace antipode

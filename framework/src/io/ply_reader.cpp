@@ -148,6 +148,15 @@ void check_ply(const std::string& path, const std::string& bytes, const PlyHeade
   }
 }
 
+// True when some element has a list property: only then can records vary in length (without
+// lists check_ply's size test is exact).
+bool has_lists(const PlyHeader& header) {
+  for (const auto& element : header.elements)
+    for (const auto& property : element.properties)
+      if (property.item_size != 0) return true;
+  return false;
+}
+
 // The unsigned `size`-byte count at `at` in the file's byte order.
 std::uint64_t list_count(const std::string& bytes, std::size_t at, std::uint64_t size,
                          bool big_endian) {
@@ -190,7 +199,7 @@ void check_binary_records(const std::string& path, const std::string& bytes,
 RawPoints read_ply(const std::string& path, const std::string& bytes) {
   const PlyHeader header = PlyHeaderParser(path, bytes).parse();
   check_ply(path, bytes, header);
-  if (!header.ascii) check_binary_records(path, bytes, header);
+  if (!header.ascii && has_lists(header)) check_binary_records(path, bytes, header);
   RawPoints raw;
   for (const auto& element : header.elements) {
     if (element.name == "vertex" && element.count == 0) return raw;

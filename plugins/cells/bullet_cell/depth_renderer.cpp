@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 #include <map>
+#include <optional>
 #include <thread>
 
 #include <embree3/rtcore.h>
@@ -144,7 +145,7 @@ void cast_tile(RTCScene scene, const std::vector<Eigen::Matrix3f>& rotations,
 // draw only where the dropout probability is not zero (beyond dropout_start_rad), then three
 // standard normals (axial, and lateral in x and y).
 void row_to_points(const std::vector<Hit>& image, int v, const CameraSpec& camera,
-                   const SensorModel& sensor, const DexNetNoise& dexnet,
+                   const SensorModel& sensor, const DexNetNoise* dexnet,
                    const Eigen::Isometry3d& X_BaseCamera, std::uint64_t row_seed,
                    std::uint32_t mask, Cloud& cloud) {
   SensorRandom random(row_seed);
@@ -158,8 +159,8 @@ void row_to_points(const std::vector<Hit>& image, int v, const CameraSpec& camer
     if (hit.depth < camera.min_range_m || hit.depth > camera.max_range_m) continue;
     const double ray_x = (u - camera.cx_px) * inv_fx;
     double z = hit.depth, x = ray_x * z, y = ray_y * z;
-    if (sensor.kind == SensorKind::kDexNet) {
-      z = dexnet.apply(z, u, v);
+    if (dexnet != nullptr) {
+      z = dexnet->apply(z, u, v);
       x = ray_x * z, y = ray_y * z;
     } else if (sensor.scale > 0.0) {
       const double theta = fast_acos(std::min(1.0, double(hit.cos_incidence)));
@@ -219,11 +220,14 @@ void DepthRenderer::render(const CameraSpec& camera, const SensorModel& sensor,
       for (int u0 = 0; u0 < camera.width_px; u0 += kTile)
         cast_tile(impl_->scene, impl_->rotations, camera, X_BaseCamera_f, u0, v0, image);
   };
-  const DexNetNoise dexnet(sensor, camera.width_px, camera.height_px,
-                           mix_seed(random.seed() ^ 0xde7e70000ULL));
+  // Dex-Net's noise is drawn once per image, before the rows: only for that model.
+  std::optional<DexNetNoise> dexnet;
+  if (sensor.kind == SensorKind::kDexNet)
+    dexnet.emplace(sensor, camera.width_px, camera.height_px,
+                   mix_seed(random.seed() ^ 0xde7e70000ULL));
   auto noise = [&](int t) {
     for (int v = t; v < camera.height_px; v += threads)
-      row_to_points(image, v, camera, sensor, dexnet, X_BaseCamera,
+      row_to_points(image, v, camera, sensor, dexnet ? &*dexnet : nullptr, X_BaseCamera,
                     mix_seed(random.seed() ^ mix_seed(0x5e750000ULL + std::uint64_t(v))),
                     1u << view_index, rows[v]);
   };

@@ -63,9 +63,9 @@ class DrawAttempt final : public bt::SyncActionNode {
     if (!set->cloud) fail("grasps", "the hand set has no cloud to draw");
     const int size_px = get_input<int>("size_px");
     if (size_px < 64 || size_px > 4096) fail("size_px", "size_px must be in [64, 4096]");
-    const Eigen::Vector3d target =
-        attempt.X_BaseHand_planned *
-        Eigen::Vector3d(set->geometry.depth_m / 2, 0.0, 0.0);  // the middle of the fingers
+    Hand planned;
+    planned.X_FrameHand = attempt.X_BaseHand_planned;
+    const Eigen::Vector3d target = grasp_centre(planned, set->geometry);
     const OrthoView sensor_view =
         view_from_sensor(*set->cloud, target, default_up(*set->cloud), 0.15, size_px);
     cv::Mat image(size_px, 2 * size_px, CV_8UC3, cv::Scalar(255, 255, 255));

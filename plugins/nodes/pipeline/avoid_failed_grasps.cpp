@@ -2,17 +2,13 @@
 #include <vector>
 
 #include "antipode/bt/action_node.hpp"
+#include "antipode/geometry/hand_body.hpp"
 #include "antipode/interfaces/clearing_run.hpp"
 #include "antipode/interfaces/hand_set.hpp"
 #include "nodes.hpp"
 
 namespace antipode::pipeline {
 namespace {
-
-// The middle of the closing region of `hand`: what its fingers close on.
-Eigen::Vector3d grasp_centre(const Hand& hand, const HandGeometry& geometry) {
-  return hand.X_FrameHand * Eigen::Vector3d(geometry.depth_m / 2, 0.0, 0.0);
-}
 
 // The grasps of `run` the cell executed and that failed, since the last cycle that removed an
 // object: the scene they failed in is the scene now (a removal changes it - the neighbour

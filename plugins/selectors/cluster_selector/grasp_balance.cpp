@@ -1,5 +1,7 @@
 #include "grasp_balance.hpp"
 
+#include "antipode/geometry/hand_body.hpp"
+
 #include <cmath>
 
 namespace antipode::selectors {
@@ -26,10 +28,6 @@ std::optional<Eigen::Vector3d> centroid_near(const std::vector<Eigen::Vector3f>&
     }
   if (n == 0) return std::nullopt;
   return Eigen::Vector3d(sum / double(n));
-}
-
-Eigen::Vector3d grasp_centre(const Hand& hand, const HandGeometry& geometry) {
-  return hand.X_FrameHand * Eigen::Vector3d(geometry.depth_m / 2, 0.0, 0.0);
 }
 
 double torque_arm_m(const Hand& hand, const HandGeometry& geometry, const Eigen::Vector3d& centroid,

@@ -27,9 +27,6 @@ std::vector<Eigen::Vector3f> object_points(const Cloud& cloud,
 std::optional<Eigen::Vector3d> centroid_near(const std::vector<Eigen::Vector3f>& points,
                                              const Eigen::Vector3d& centre, double radius_m);
 
-/// The middle of the hand's closing region (where the object is held).
-Eigen::Vector3d grasp_centre(const Hand& hand, const HandGeometry& geometry);
-
 /// The lever arm of gravity about the hand's closing axis through its grasp centre, for a
 /// mass at `centroid` and "up" along `up` (unit): |(centroid - centre) . (up x closing)|.
 /// Zero when the fingers close along the vertical (gravity then has no torque about them).

@@ -19,6 +19,7 @@
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 
+#include "antipode/core/hand.hpp"
 #include "antipode/core/hand_geometry.hpp"
 
 namespace antipode {
@@ -59,6 +60,10 @@ HandBody make_hand_body(const HandGeometry& geometry);
 
 /// The same with another palm thickness (0: the fingers and closing region alone).
 HandBody make_hand_body(const HandGeometry& geometry, double palm_thickness_m);
+
+/// The middle of the closing region of `hand` (where the fingers hold an object), in the
+/// hand's frame's parent (`hand.frame`).
+Eigen::Vector3d grasp_centre(const Hand& hand, const HandGeometry& geometry);
 
 /// Indices of the points of `points` (in the frame of `X_FrameHand`) that lie in the body
 /// of the hand at pose `X_FrameHand`. Exact for the box model; a brute-force reference for
