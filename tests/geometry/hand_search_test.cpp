@@ -203,6 +203,45 @@ TEST(HandSearchTest, TheSupportStopsTheHandAboveALowObject) {
   for (const Hand& hand : strict.result.hands) EXPECT_LT(hand.approach().dot(-up), 0.95);
 }
 
+// Hands that come down at about `tilt_deg` from level and close level (within 6 degrees).
+std::size_t tilted_level_closing(const Search& s, const Eigen::Vector3d& up, double tilt_deg) {
+  std::size_t count = 0;
+  for (const Hand& hand : s.result.hands) {
+    const double down = -std::asin(hand.approach().dot(up)) * 180.0 / M_PI;
+    count += std::abs(down - tilt_deg) < 6.0 && std::abs(hand.closing().dot(up)) < 0.1;
+  }
+  return count;
+}
+
+TEST(HandSearchTest, TiltedFramesComeDownOnAStandingCanAndCloseLevel) {
+  // The can's curvature axis is vertical, so the paper's hands approach it level only; a
+  // tilted frame turns the approach down by the tilt and keeps the fingers closing level.
+  const Eigen::Vector3d up = Eigen::Vector3d(0.0, -1.0, -1.0).normalized();
+  const Eigen::Vector3d on_table(0.0, 0.0, 0.7);
+  Cloud cloud = testing::plane_cloud(on_table, up, 0.3);
+  testing::append(cloud, testing::cylinder_cloud(on_table + 0.06 * up, up, 0.05, 0.12));
+  HandSearchParameters parameters = small_search();
+  parameters.samples = 1000;
+  const Search level = search(cloud, parameters);
+  EXPECT_EQ(level.result.stats.tilted_hands, 0u);
+  EXPECT_EQ(tilted_level_closing(level, up, 30.0), 0u);
+
+  parameters.approach_tilts_deg = {30.0};
+  const Search tilted = search(cloud, parameters);
+  EXPECT_GE(tilted_level_closing(tilted, up, 30.0), 20u);
+  EXPECT_GT(tilted.result.stats.tilted_hands, 0u);
+  EXPECT_EQ(tilted.result.stats.hands, tilted.result.hands.size());
+  EXPECT_EQ(tilted.result.hands.size(),
+            level.result.hands.size() + tilted.result.stats.tilted_hands);
+  for (const Hand& hand : tilted.result.hands) {
+    EXPECT_GE(lowest_point(hand, parameters, up, on_table), parameters.support_clearance_m - 1e-3);
+  }
+
+  // Without a support there is no "down": no tilted hands.
+  parameters.support_plane = SupportPlaneMode::kNone;
+  EXPECT_EQ(search(cloud, parameters).result.stats.tilted_hands, 0u);
+}
+
 TEST(HandSearchTest, ResultDoesNotDependOnThreadCount) {
   const Cloud cloud = preprocess(
       testing::cylinder_cloud(kCentre, kAxis, 0.05, 0.15, with_noise(0.001)), PreprocessOptions{});
@@ -252,6 +291,14 @@ TEST(HandSearchTest, InvalidInputIsAnError) {
   parameters.hand.min_aperture_m = 0.1;
   EXPECT_THROW(search_hands(cloud, parameters, RandomStream(1)), Error);
   EXPECT_THROW(search_hands(Cloud{}, HandSearchParameters{}, RandomStream(1)), Error);
+  parameters = HandSearchParameters{};
+  parameters.approach_tilts_deg = {30.0, 90.0};
+  try {
+    search_hands(cloud, parameters, RandomStream(1));
+    ADD_FAILURE() << "a 90-degree tilt was accepted";
+  } catch (const Error& e) {
+    EXPECT_EQ(std::string(e.what()), "hand search: approach_tilts_deg must be in (0, 80], got 90");
+  }
 }
 
 // A sample region without points (a box whose objects have all been picked) gives no hands:

@@ -9,6 +9,7 @@
 #include "closing_tilt.hpp"
 #include "hand_clearance.hpp"
 #include "hand_clusters.hpp"
+#include "held_width.hpp"
 
 namespace antipode {
 namespace {
@@ -178,6 +179,53 @@ TEST_F(ClusterSelectorTest, TheApertureCriterionRanksBeforeTheScore) {
   EXPECT_DOUBLE_EQ(selection.hands[0].score, 2.0);
   EXPECT_DOUBLE_EQ(selection.hands[1].score, 1.0);
   EXPECT_DOUBLE_EQ(selection.hands[2].score, 9.0) << "1 mm from the open gripper ranks last";
+}
+
+// A 2.7 cm neck between the fingers of top_down(x, 0, z): 100 points evenly over its width
+// 3 cm below the palm face, and `strays` points each side 3 cm out (depth errors at its
+// silhouette), in `cloud`; the hand's closing points and full extent set from them.
+Hand over_neck(double x, double z, int strays, Cloud& cloud) {
+  Hand hand = top_down(x, 0.0, z);
+  hand.closing_points.clear();
+  const auto add = [&](double y) {
+    cloud.points_m.emplace_back(float(x), float(y), float(z - 0.03));
+    hand.closing_points.push_back(std::int32_t(cloud.size() - 1));
+  };
+  for (int i = 0; i < 100; ++i) add(-0.0135 + 0.027 * i / 99.0);
+  for (int i = 0; i < strays; ++i) add(-0.03), add(0.03);
+  hand.width_m = strays > 0 ? 0.06 : 0.027;
+  return hand;
+}
+
+TEST(HeldWidth, TrimsStrayPointsAlongTheClosingDirection) {
+  Cloud cloud;
+  const Hand hand = over_neck(0.0, 0.1, 2, cloud);
+  EXPECT_NEAR(selectors::held_width_m(hand, cloud, 0.0), 0.06, 1e-6);
+  // 5% of 104 points trimmed each side: both strays and three of the neck's own; the bulk
+  // scaled back by 1 / 0.9.
+  EXPECT_NEAR(selectors::held_width_m(hand, cloud, 0.05), 0.027, 1.5e-3);
+  // On evenly spread points alone the full extent comes back.
+  Cloud clean;
+  EXPECT_NEAR(selectors::held_width_m(over_neck(0.0, 0.1, 0, clean), clean, 0.05), 0.027, 1e-3);
+  Hand made_by_hand = top_down(0, 0, 0.1, 1.0, 0.045);
+  EXPECT_DOUBLE_EQ(selectors::held_width_m(made_by_hand, cloud, 0.05), 0.045);
+}
+
+TEST_F(ClusterSelectorTest, ANeckNarrowerThanTheClosedGripperIsNotAGraspWhateverItsStrays) {
+  // Full extent 6 cm (inside the 3-7.2 cm aperture), the neck itself 2.7 cm: the fingers
+  // would close on nothing.
+  auto cloud = std::make_shared<Cloud>();
+  HandSet set = on_table({over_neck(0.0, 0.1, 2, *cloud), top_down(0.3, 0, 0.1, 0.5, 0.05)});
+  set.cloud = cloud;
+  const HandSet trimmed = create("min_cluster_size: 1\nunseen_is_free: true")->select(set, {});
+  ASSERT_EQ(grasp_count(trimmed), 1u);
+  EXPECT_NEAR(trimmed.hands[0].position_m().x(), 0.3, 1e-12);
+  EXPECT_EQ(trimmed.hands[1].rejection, Rejection::kApertureLimit);
+  // Judged on the full extent, as before width_trim, the neck is the better-scored grasp.
+  const HandSet full =
+      create("min_cluster_size: 1\nunseen_is_free: true\nwidth_trim: 0")->select(set, {});
+  ASSERT_EQ(grasp_count(full), 2u);
+  EXPECT_NEAR(full.hands[0].position_m().x(), 0.0, 1e-12);
 }
 
 // A hand approaching along +x at height z, its closing direction turned `tilt_deg` from

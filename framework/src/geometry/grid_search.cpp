@@ -303,6 +303,13 @@ GridSpec::GridSpec(const HandSearchParameters& p) {
     const double phi = -M_PI / 2.0 + M_PI * k / p.orientations;
     cos_phi.push_back(static_cast<float>(std::cos(phi)));
     sin_phi.push_back(static_cast<float>(std::sin(phi)));
+    all_orientations.push_back(static_cast<std::size_t>(k));
+    if (std::fabs(phi) <= p.tilted_orientation_range_deg * M_PI / 180.0 + 1e-9) {
+      tilted_orientations.push_back(static_cast<std::size_t>(k));
+    }
+  }
+  for (const double tilt : p.approach_tilts_deg) {
+    tilts_rad.push_back(static_cast<float>(tilt * M_PI / 180.0));
   }
   // Offsets of the hand centre from the sample along closing, centred in the aperture so
   // that the sample is between the fingers in every position.
@@ -322,7 +329,7 @@ void grid_search(const SampleContext& context, const GridSpec& spec, GridScratch
                  std::vector<Hand>& hands, HandSearchStats& stats) {
   collect_slab(context.cloud, context.frame, g);
   g.poses.resize(spec.offsets_m.size());
-  for (std::size_t k = 0; k < spec.cos_phi.size(); ++k) {
+  for (const std::size_t k : context.tilted ? spec.tilted_orientations : spec.all_orientations) {
     const float c = spec.cos_phi[k], s = spec.sin_phi[k];
     const Eigen::Vector3f back = c * context.frame.normal + s * context.frame.binormal;
     if (!context.toward_viewer.isZero() && back.dot(context.toward_viewer) < spec.min_view_cosine) {
@@ -352,6 +359,7 @@ void grid_search(const SampleContext& context, const GridSpec& spec, GridScratch
       if (make_hand(context, c, s, spec.offsets_m[p], g.poses[p], spec, g, hand)) {
         hands.push_back(std::move(hand));
         ++stats.hands;
+        if (context.tilted) ++stats.tilted_hands;
       }
     }
   }

@@ -32,7 +32,11 @@ struct GridSpec {
   float support_clearance_m;                   ///< how close the body may come to the support plane
   std::vector<Eigen::Vector3f> finger_probes;  ///< hand-frame points tested for occlusion
   std::vector<float> cos_phi, sin_phi;         ///< per orientation
-  std::vector<float> offsets_m;                ///< per position: hand centre along closing
+  std::vector<std::size_t> all_orientations;   ///< 0 .. orientations - 1
+  /// The orientations searched in a tilted frame: within tilted_orientation_range_deg of 0.
+  std::vector<std::size_t> tilted_orientations;
+  std::vector<float> tilts_rad;  ///< approach_tilts_deg
+  std::vector<float> offsets_m;  ///< per position: hand centre along closing
 };
 
 /// Cell size of the SlabGrid that finds each sample's hand neighbourhood: about the hand's
@@ -72,6 +76,7 @@ struct SampleContext {
   Eigen::Vector3f toward_viewer;  ///< unit direction to the sensors that saw it (or zero)
   const OcclusionMap* occlusion;  ///< null: no occlusion test
   const SupportPlane* support;    ///< null: no support plane
+  bool tilted = false;            ///< a tilted frame: search spec.tilted_orientations only
 };
 
 /// Searches the orientation x position grid around the sample's frame using the cloud points

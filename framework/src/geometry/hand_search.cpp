@@ -2,6 +2,8 @@
 #include "antipode/geometry/hand_search.hpp"
 
 #include <algorithm>
+#include <cmath>
+#include <optional>
 
 #include <tbb/blocked_range.h>
 #include <tbb/enumerable_thread_specific.h>
@@ -39,6 +41,26 @@ struct SearchContext {
   const SupportPlane* support;
 };
 
+// Samples whose curvature axis is within this angle of level get no tilted frames: turning
+// their frame about the binormal would swing the approach sideways rather than down.
+const float kMinTiltAxisSine = std::sin(15.0f * static_cast<float>(M_PI) / 180.0f);
+
+// The frame `f` turned about its binormal by `tilt_rad`, in the direction that lowers the
+// approach at phi = 0 (-normal) relative to `up`; nullopt when its axis is about level.
+// With (normal, binormal, axis) right-handed, a turn by t about the binormal gives
+// normal' = cos t normal - sin t axis and axis' = sin t normal + cos t axis, so the approach
+// -normal' gains sin t (axis . up) along up: t takes the sign opposite to axis . up.
+std::optional<LocalFrame> tilted_frame(const LocalFrame& f, const Eigen::Vector3f& up,
+                                       float tilt_rad) {
+  const float axis_up = f.axis.dot(up);
+  if (std::fabs(axis_up) < kMinTiltAxisSine) return std::nullopt;
+  const float t = axis_up > 0.0f ? -tilt_rad : tilt_rad;
+  LocalFrame turned = f;
+  turned.normal = (std::cos(t) * f.normal - std::sin(t) * f.axis).normalized();
+  turned.axis = (std::sin(t) * f.normal + std::cos(t) * f.axis).normalized();
+  return turned;
+}
+
 void search_sample(const SearchContext& search, std::int32_t sample, geometry::GridScratch& scratch,
                    SampleOutput& out) {
   const Cloud& cloud = search.cloud;
@@ -66,9 +88,20 @@ void search_sample(const SearchContext& search, std::int32_t sample, geometry::G
   }
   search.slabs.query(point, frame.axis, search.spec.slab_half_thickness_m, search.spec.reach_m,
                      scratch.hand_neighbours);
-  const geometry::SampleContext context{cloud,  frame,           sample,
-                                        viewer, search.occlusion, search.support};
+  const geometry::SampleContext context{cloud,         frame, sample, viewer, search.occlusion,
+                                        search.support};
   geometry::grid_search(context, search.spec, scratch, out.hands, out.stats);
+  if (search.support == nullptr) return;
+  for (const float tilt_rad : search.spec.tilts_rad) {
+    const std::optional<LocalFrame> turned = tilted_frame(frame, search.support->normal, tilt_rad);
+    if (!turned) break;
+    search.slabs.query(point, turned->axis, search.spec.slab_half_thickness_m, search.spec.reach_m,
+                       scratch.hand_neighbours);
+    geometry::SampleContext tilted{cloud,  *turned,          sample,
+                                   viewer, search.occlusion, search.support};
+    tilted.tilted = true;
+    geometry::grid_search(tilted, search.spec, scratch, out.hands, out.stats);
+  }
 }
 
 // Indices of the points samples may be drawn from: those in the region (if set) and not on
@@ -94,11 +127,13 @@ std::vector<std::int32_t> candidates(const Cloud& cloud, const std::optional<Axi
 Eigen::Vector3f sensor_position(const Cloud& cloud) {
   Eigen::Vector3f sum = Eigen::Vector3f::Zero();
   for (const auto& origin : cloud.view_origins_m) sum += origin;
-  return cloud.view_origins_m.empty() ? sum : (sum / static_cast<float>(cloud.view_origins_m.size())).eval();
+  return cloud.view_origins_m.empty()
+             ? sum
+             : (sum / static_cast<float>(cloud.view_origins_m.size())).eval();
 }
 
-HandSearchResult concatenate(std::vector<SampleOutput>& outputs,
-                             std::vector<std::int32_t> samples, HandSearchResult result) {
+HandSearchResult concatenate(std::vector<SampleOutput>& outputs, std::vector<std::int32_t> samples,
+                             HandSearchResult result) {
   result.sample_points = std::move(samples);
   std::size_t total = 0;
   for (const auto& out : outputs) total += out.hands.size();
@@ -133,10 +168,10 @@ HandSearchResult search_hands(const Cloud& cloud, const HandSearchParameters& pa
   const SupportPlane* support = result.support_plane ? &*result.support_plane : nullptr;
   const geometry::SlabGrid slabs(cloud.points_m, geometry::kSlabCell_m);
   const SearchContext search{cloud, index, slabs, parameters, spec, occlusion.get(), support};
-  std::vector<std::int32_t> samples = geometry::choose_samples(
-      candidates(cloud, parameters.sample_region, support, parameters.support.distance_m,
-                 result.stats.on_support),
-      parameters.samples, random.derive(kSampleChoiceStream));
+  std::vector<std::int32_t> samples =
+      geometry::choose_samples(candidates(cloud, parameters.sample_region, support,
+                                          parameters.support.distance_m, result.stats.on_support),
+                               parameters.samples, random.derive(kSampleChoiceStream));
   std::vector<SampleOutput> outputs(samples.size());
   tbb::enumerable_thread_specific<geometry::GridScratch> scratch;
   tbb::task_arena arena(parameters.threads > 0 ? parameters.threads : tbb::task_arena::automatic);

@@ -30,6 +30,11 @@ void HandSearchParameters::validate() const {
   require(frame_radius_m > 0.0 && std::isfinite(frame_radius_m), "frame_radius_m", "> 0",
           frame_radius_m);
   require(orientations >= 1 && orientations <= 360, "orientations", "in 1..360", orientations);
+  for (const double tilt : approach_tilts_deg) {
+    require(tilt > 0.0 && tilt <= 80.0, "approach_tilts_deg", "in (0, 80]", tilt);
+  }
+  require(tilted_orientation_range_deg >= 0.0 && tilted_orientation_range_deg <= 90.0,
+          "tilted_orientation_range_deg", "in [0, 90]", tilted_orientation_range_deg);
   require(positions >= 1 && positions <= 1000, "positions", "in 1..1000", positions);
   require(min_bite_m >= 0.0 && min_bite_m <= hand.depth_m, "min_bite_m", "in [0, depth_m]",
           min_bite_m);
@@ -85,6 +90,7 @@ HandSearchStats& HandSearchStats::operator+=(const HandSearchStats& o) {
   on_support += o.on_support;
   acceptable += o.acceptable;
   hands += o.hands;
+  tilted_hands += o.tilted_hands;
   return *this;
 }
 

@@ -96,6 +96,9 @@ HandSearchParameters search_parameters(const Parameters& params) {
   s.frame.min_points = static_cast<std::size_t>(integer(params, "min_neighbours", 10, 9));
   s.orientations = integer(params, "orientations", s.orientations, 1);
   s.positions = integer(params, "positions", s.positions, 1);
+  s.approach_tilts_deg = params.get<std::vector<double>>("approach_tilts_deg", {});
+  s.tilted_orientation_range_deg =
+      number(params, "tilted_orientation_range_deg", s.tilted_orientation_range_deg, 0.0, true);
   s.min_bite_m = number(params, "min_bite_m", s.min_bite_m, 0.0, true);
   s.clearance_m = number(params, "clearance_m", s.clearance_m, 0.0, true);
   s.support_clearance_m = number(params, "support_clearance_m", s.support_clearance_m, 0.0, true);

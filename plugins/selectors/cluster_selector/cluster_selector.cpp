@@ -11,6 +11,7 @@
 #include "grasp_balance.hpp"
 #include "hand_clearance.hpp"
 #include "hand_clusters.hpp"
+#include "held_width.hpp"
 
 namespace antipode::selectors {
 namespace {
@@ -30,15 +31,26 @@ struct Proposal {
   double arm_m = 0.0;
 };
 
+// The median of values[m] over the members m (the upper one of an even count).
+double median_of(const std::vector<double>& values, const std::vector<std::size_t>& members) {
+  std::vector<double> picked;
+  picked.reserve(members.size());
+  for (const std::size_t m : members) picked.push_back(values[m]);
+  const auto middle = picked.begin() + static_cast<std::ptrdiff_t>(picked.size() / 2);
+  std::nth_element(picked.begin(), middle, picked.end());
+  return *middle;
+}
+
 double beyond(double value, double free) {
   return value <= free ? 0.0 : (value - free) * (value - free);
 }
 
 }  // namespace
 
-double aperture_penalty(double width_m, const HandGeometry& geometry, double margin_m) {
+double aperture_penalty(double held_width_m, double width_m, const HandGeometry& geometry,
+                        double margin_m) {
   const double distance =
-      std::min(width_m - geometry.min_aperture_m, geometry.max_aperture_m - width_m);
+      std::min(held_width_m - geometry.min_aperture_m, geometry.max_aperture_m - width_m);
   return distance >= margin_m ? 0.0 : (margin_m - distance) * (margin_m - distance);
 }
 
@@ -66,20 +78,22 @@ HandSet ClusterSelector::select(const HandSet& in, const SelectionContext& conte
   const HandBody body = make_hand_body(g);
   std::optional<BinWalls> bin_walls;
   if (options_.bin) bin_walls.emplace(*options_.bin, body);
-  const auto feasible = [&](const Hand& hand) {
+  const auto feasible = [&](const Hand& hand, double held_width_m) {
     if (support && !clears_support(hand, g, *support, options_.standoff_m, options_.clearance_m))
       return Rejection::kBelowSupport;
     if (bin_walls && bin_walls->reached_by(hand)) return Rejection::kInCollision;
-    if (hand.width_m < g.min_aperture_m || hand.width_m > g.max_aperture_m)
+    if (held_width_m < g.min_aperture_m || hand.width_m > g.max_aperture_m)
       return Rejection::kApertureLimit;
     return Rejection::kNone;
   };
 
   std::vector<Hand> hands = in.hands;
+  std::vector<double> held(hands.size(), 0.0);
   std::vector<std::size_t> order;
   for (std::size_t i = 0; i < hands.size(); ++i) {
     if (!candidate(hands[i])) continue;
-    hands[i].rejection = feasible(hands[i]);
+    held[i] = held_width_m(hands[i], *in.cloud, options_.width_trim);
+    hands[i].rejection = feasible(hands[i], held[i]);
     if (hands[i].rejection == Rejection::kNone) order.push_back(i);
   }
   std::stable_sort(order.begin(), order.end(),
@@ -97,12 +111,13 @@ HandSet ClusterSelector::select(const HandSet& in, const SelectionContext& conte
     }
     Proposal p;
     p.grasp = mean_hand(hands, members);
-    if (feasible(p.grasp) != Rejection::kNone ||
+    const double held_width = median_of(held, members);
+    if (feasible(p.grasp, held_width) != Rejection::kNone ||
         !approach_is_free(p.grasp, g, *in.cloud, options_.standoff_m))
       p.grasp.X_FrameHand = hands[members.front()].X_FrameHand;  // the seed passed them
     p.members = std::move(members);
     p.tilt = tilt_penalty(closing_tilt_rad(p.grasp, up), options_.tilt_free_deg * M_PI / 180.0);
-    p.penalty = aperture_penalty(p.grasp.width_m, g, options_.aperture_margin_m);
+    p.penalty = aperture_penalty(held_width, p.grasp.width_m, g, options_.aperture_margin_m);
     if (const auto centroid =
             centroid_near(objects, grasp_centre(p.grasp, g), options_.object_radius_m)) {
       p.arm_m = torque_arm_m(p.grasp, g, *centroid, up);

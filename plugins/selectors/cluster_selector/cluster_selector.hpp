@@ -13,9 +13,11 @@
 
 namespace antipode::selectors {
 
-/// Criterion 2 of the paper: zero while `width_m` is at least `margin_m` from both aperture
-/// limits of `geometry`, (margin - distance)^2 closer to them.
-double aperture_penalty(double width_m, const HandGeometry& geometry, double margin_m);
+/// Criterion 2 of the paper: zero while the object is at least `margin_m` from both
+/// aperture limits of `geometry` - `held_width_m` (held_width.hpp) from the narrow one,
+/// `width_m` (the full extent) from the wide one - and (margin - distance)^2 closer to them.
+double aperture_penalty(double held_width_m, double width_m, const HandGeometry& geometry,
+                        double margin_m);
 
 class ClusterSelector final : public GraspSelector {
  public:

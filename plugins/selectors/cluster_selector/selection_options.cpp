@@ -68,6 +68,7 @@ SelectionOptions read_selection_options(const Parameters& params) {
   o.point_radius_m = in_range(params, "point_radius_m", o.point_radius_m, 0.0005, 0.02);
   o.unseen_is_free = params.get<bool>("unseen_is_free", o.unseen_is_free);
   o.aperture_margin_m = in_range(params, "aperture_margin_m", o.aperture_margin_m, 0.0, 0.1);
+  o.width_trim = in_range(params, "width_trim", o.width_trim, 0.0, 0.45);
   o.balance_free_m = in_range(params, "balance_free_m", o.balance_free_m, 0.0, 1.0);
   o.max_torque_arm_m = in_range(params, "max_torque_arm_m", o.max_torque_arm_m, 0.0, 1.0);
   o.object_radius_m = in_range(params, "object_radius_m", o.object_radius_m, 0.01, 2.0);

@@ -44,6 +44,10 @@ struct SelectionOptions {
   /// Criterion 2: the penalty of a grasp is zero while the object's width stays this far
   /// from both aperture limits, and grows quadratically closer to them.
   double aperture_margin_m = 0.005;
+  /// The narrow side of the aperture is judged on the width the fingers will meet: the
+  /// closing-region points' extent between this quantile and its complement (held_width.hpp);
+  /// the wide side on the full extent.
+  double width_trim = 0.05;
   /// Then balance: the penalty is zero while gravity's lever arm about the closing axis
   /// (from the centroid of the object points within `object_radius_m`) is at most this,
   /// and grows quadratically beyond (grasp_balance.hpp).

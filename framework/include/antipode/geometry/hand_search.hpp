@@ -43,6 +43,18 @@ struct HandSearchParameters {
   /// Hand orientations about the curvature axis, evenly spaced over [-90, 90) degrees from
   /// approaching against the surface normal.
   int orientations = 8;
+  /// Tilted approaches, for a robot arm that cannot put its wrist low beside an object (a
+  /// flange wider than the hand's height above the support): with a support plane, the
+  /// sample's frame is also turned about its binormal by each of these angles (degrees, in
+  /// (0, 80]), in the direction that lowers the approach, and searched over the orientations
+  /// within `tilted_orientation_range_deg` of phi = 0. At phi = 0 the fingers still close along
+  /// the binormal, so on an upright cylinder the hand comes down at the angle and closes
+  /// level across it; the paper's hands (the axis along the curvature axis) approach such a
+  /// cylinder only level. Samples whose curvature axis is within 15 degrees of level (a
+  /// tilt would turn the approach sideways, not down) and clouds without a support plane
+  /// get no tilted hands. Empty: the paper's search alone.
+  std::vector<double> approach_tilts_deg;
+  double tilted_orientation_range_deg = 25.0;
   /// Hand positions along the closing direction, evenly spaced so that the sample lies
   /// between the fingers in all of them.
   int positions = 20;
@@ -114,6 +126,7 @@ struct HandSearchStats {
   std::size_t on_support = 0;           ///< cloud points not sampled: on or below the support
   std::size_t acceptable = 0;           ///< poses meeting every condition
   std::size_t hands = 0;                ///< hands returned
+  std::size_t tilted_hands = 0;         ///< of which in a tilted frame (approach_tilts_deg)
 
   HandSearchStats& operator+=(const HandSearchStats& other);
 };
