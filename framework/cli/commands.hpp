@@ -30,6 +30,9 @@ struct DetectOptions {
   std::string image_path;  ///< PNG picture; "" for none
   TreeRunSettings settings;
   std::string hands_entry = "grasps";  ///< the entry whose hands are summarised
+  /// Also print the scene found (support, objects), the hands per stage and per object, and
+  /// how many of the 12 best grasps lie on objects.
+  bool explain = false;
 };
 
 /// `antipode train` (trees/train.yaml) and `antipode eval-classifier`

@@ -1,9 +1,13 @@
 #include <algorithm>
 #include <cstdio>
 #include <iostream>
+#include <map>
+#include <string>
+#include <vector>
 
 #include "antipode/bt/loader.hpp"
 #include "antipode/core/error.hpp"
+#include "antipode/geometry/scene_layout.hpp"
 #include "antipode/interfaces/hand_set.hpp"
 #include "commands.hpp"
 #include "exit_codes.hpp"
@@ -38,6 +42,62 @@ void print_summary(const HandSet& set, std::size_t count) {
   }
 }
 
+const HandSet* hand_set(const bt::Tree& tree, const std::string& entry) {
+  if (const auto* value = tree.blackboard().find(entry)) {
+    if (const auto* set = std::any_cast<HandSetPtr>(value); set != nullptr && *set)
+      return set->get();
+  }
+  return nullptr;
+}
+
+// "#0 120, #1 40, no object 3": hands per object id.
+std::string per_object(const HandSet& set, bool grasps_only) {
+  std::map<std::int32_t, std::size_t> count;
+  for (const Hand& hand : set.hands) {
+    if (!grasps_only || hand.label == HandLabel::kPositive) ++count[hand.object];
+  }
+  std::string text;
+  for (const auto& [object, n] : count) {
+    text += (text.empty() ? "" : ", ") +
+            (object < 0 ? std::string("no object") : "#" + std::to_string(object)) + " " +
+            std::to_string(n);
+  }
+  return text.empty() ? "none" : text;
+}
+
+// What --explain prints: the scene the sampler found, how many hands each stage kept (per
+// object) and where the best grasps lie.
+void print_explanation(const HandSet* sampled, const HandSet* classified, std::size_t best) {
+  if (sampled == nullptr) {
+    std::cout << "explain: the tree stopped before sampling\n";
+    return;
+  }
+  SceneLayout layout;
+  layout.support = sampled->support;
+  layout.objects = sampled->objects;
+  std::cout << "scene: "
+            << (sampled->objects.empty()
+                    ? (sampled->support ? "a support plane, no segmentation (objects: all)"
+                                        : "no support surface: the whole cloud is used")
+                    : layout.summary())
+            << "\n";
+  std::cout << "hypotheses: " << sampled->hands.size()
+            << " (per object: " << per_object(*sampled, false) << ")\n";
+  if (classified == nullptr) return;
+  std::vector<const Hand*> grasps;
+  for (const Hand& hand : classified->hands) {
+    if (hand.label == HandLabel::kPositive) grasps.push_back(&hand);
+  }
+  std::cout << "classified as grasps: " << grasps.size()
+            << " (per object: " << per_object(*classified, true) << ")\n";
+  std::stable_sort(grasps.begin(), grasps.end(),
+                   [](const Hand* a, const Hand* b) { return a->score > b->score; });
+  grasps.resize(std::min(best, grasps.size()));
+  const auto on_objects = std::count_if(grasps.begin(), grasps.end(),
+                                        [](const Hand* hand) { return hand->object >= 0; });
+  std::cout << "the " << grasps.size() << " best grasps: " << on_objects << " on objects\n";
+}
+
 }  // namespace
 
 int detect_command(const DetectOptions& options) {
@@ -46,11 +106,9 @@ int detect_command(const DetectOptions& options) {
       load_tree_for(session, options.tree_path, detect_entries(options), options.settings);
   const Tracing tracing = attach_tracers(tree, options.settings.verbose, "");
   const bt::Status status = tree.tick_while_running();
-  if (const auto* hands = tree.blackboard().find(options.hands_entry)) {
-    if (const auto* set = std::any_cast<HandSetPtr>(hands); set != nullptr && *set) {
-      print_summary(**set, 5);
-    }
-  }
+  if (const HandSet* set = hand_set(tree, options.hands_entry)) print_summary(*set, 5);
+  if (options.explain)
+    print_explanation(hand_set(tree, "hands"), hand_set(tree, options.hands_entry), 12);
   std::cout << options.tree_path << ": " << bt::to_string(status) << "\n";
   return status == bt::Status::kSuccess ? kExitSuccess : kExitTreeFailed;
 }

@@ -90,6 +90,9 @@ void add_detect(CLI::App& app, Commands& commands) {
   detect->add_option("--tree", options.tree_path, "Detection tree")->capture_default_str();
   detect->add_option("--out", options.out_path, "Write the grasps as JSON");
   detect->add_option("--image", options.image_path, "Draw the cloud and grasps into a PNG");
+  detect->add_flag("--explain", options.explain,
+                   "Print the support and objects found, the hands each stage kept per object "
+                   "and how many of the 12 best grasps lie on objects");
   add_tree_run_options(*detect, options.settings);
 }
 

@@ -253,6 +253,32 @@ TEST_F(DetectTest, WritesGraspsAndPicture) {
   EXPECT_EQ(std::string(magic + 1, 3), "PNG");
 }
 
+// --explain on the table-top cloud: the table is the support, the mug the one object, and
+// the best grasps are on it.
+TEST_F(DetectTest, ExplainNamesTheSupportTheObjectsAndWhereTheBestGraspsLie) {
+  const std::string mug = std::string(ANTIPODE_TEST_DATA_DIR) + "/clouds/table_mug.pcd";
+  if (!fs::exists(mug)) GTEST_SKIP() << "no " << mug << " (../shared/data is absent)";
+  const Result result = run(detect(mug, "--explain --set sampler.samples=1000"));
+  ASSERT_EQ(result.exit_code, 0) << result.out;
+  EXPECT_NE(result.out.find("scene: support plane"), std::string::npos) << result.out;
+  EXPECT_NE(result.out.find(", 1 object: #0: "), std::string::npos) << result.out;
+  EXPECT_NE(result.out.find("hypotheses: "), std::string::npos) << result.out;
+  EXPECT_NE(result.out.find("the 12 best grasps: 12 on objects"), std::string::npos) << result.out;
+  std::ifstream in(dir_ / "g.json");
+  const auto document = nlohmann::json::parse(in);
+  for (const auto& hand : document["hands"]) EXPECT_EQ(hand["object"], 0);
+}
+
+// A single object without a table: no support surface, the whole cloud is searched.
+TEST_F(DetectTest, ExplainSaysWhenThereIsNoSupport) {
+  if (!fs::exists(krylon_)) GTEST_SKIP() << "no " << krylon_ << " (../shared/data is absent)";
+  const Result result = run(detect(krylon_, "--explain --set sampler.samples=300"));
+  ASSERT_EQ(result.exit_code, 0) << result.out;
+  EXPECT_NE(result.out.find("scene: no support surface: the whole cloud is used"),
+            std::string::npos)
+      << result.out;
+}
+
 TEST_F(DetectTest, TruncatedCloudIsOneLineErrorAndNoOutput) {
   if (!fs::exists(krylon_)) GTEST_SKIP() << "no " << krylon_ << " (../shared/data is absent)";
   std::ifstream in(krylon_, std::ios::binary);

@@ -115,6 +115,93 @@ trees:
   }
 }
 
+// The failure reason of the node named `name` after running `tree`, which must fail.
+std::string failure_of(bt::Tree& tree, const std::string& name) {
+  tree.set_log_sink([](const bt::Node&, const std::string&) {});
+  EXPECT_EQ(tree.tick_while_running(), bt::Status::kFailure);
+  std::string failure;
+  tree.visit([&](const bt::Node& node, int) {
+    if (node.name() == name) failure = node.failure_reason();
+  });
+  return failure;
+}
+
+// A tree capture -> sample -> select -> plan with the given sampler, selector and planner
+// parameters (each a YAML flow map).
+std::string pipeline_tree(const std::string& sampler, const std::string& selector,
+                          const std::string& planner) {
+  return R"(
+components:
+  cell: { plugin: line_cell, points: 5 }
+  sampler: )" +
+         sampler +
+         R"(
+  selector: )" +
+         selector +
+         R"(
+  planner: )" +
+         planner +
+         R"(
+main: t
+trees:
+  t:
+    Sequence:
+      - CaptureCloud: { cell: cell, cloud: "{cloud}" }
+      - SampleHands: { name: sample, sampler: sampler, cloud: "{cloud}", hands: "{hands}" }
+      - SelectGrasps: { name: select, selector: selector, hands: "{hands}", grasps: "{grasps}" }
+      - PlanReach: { name: plan, planner: planner, cell: cell, grasps: "{grasps}", trajectory: "{path}" }
+)";
+}
+
+// A sampler whose hands are broken fails SampleHands with the reason; nothing is passed on.
+TEST_F(PipelineNodesTest, AMisbehavingSamplerFailsItsNodeWithTheReason) {
+  for (const auto& [garbage, reason] :
+       {std::pair<std::string, std::string>{"nan",
+                                            "the sampler gave hand 0 a pose that is not finite"},
+        {"frame", "the sampler put hand 0 in frame 'camera', not its cloud's 'base'"},
+        {"index", "the sampler gave hand 0 closing point 5 of a cloud of 5"},
+        {"cloud", "the sampler returned hands without the cloud they index"}}) {
+    bt::Tree tree = load(pipeline_tree("{ plugin: garbage_sampler, garbage: " + garbage + " }",
+                                       "{ plugin: best_first }", "{ plugin: still_planner }"));
+    EXPECT_EQ(failure_of(tree, "sample"), reason) << garbage;
+    EXPECT_FALSE(tree.blackboard().has("hands")) << garbage;
+  }
+}
+
+// A selector that throws or chooses what it was not given fails SelectGrasps with the reason.
+TEST_F(PipelineNodesTest, AMisbehavingSelectorFailsItsNodeWithTheReason) {
+  for (const auto& [garbage, reason] :
+       {std::pair<std::string, std::string>{"throw",
+                                            "the selector failed: the robot file vanished"},
+        {"far",
+         "the selector chose grasp 0 at (0, 0, 1), away from every hand it was given to choose "
+         "from"},
+        {"cloud", "the selector returned its selection with another cloud"},
+        {"nan", "the selector gave grasp 0 a pose that is not finite"}}) {
+    bt::Tree tree = load(pipeline_tree("{ plugin: point_sampler }",
+                                       "{ plugin: garbage_selector, garbage: " + garbage + " }",
+                                       "{ plugin: still_planner }"));
+    EXPECT_EQ(failure_of(tree, "select"), reason) << garbage;
+    EXPECT_FALSE(tree.blackboard().has("grasps")) << garbage;
+  }
+}
+
+// A planner that throws or solves with a broken trajectory fails PlanReach: a broken
+// trajectory never reaches the arm.
+TEST_F(PipelineNodesTest, AMisbehavingPlannerFailsItsNodeWithTheReason) {
+  for (const auto& [garbage, reason] :
+       {std::pair<std::string, std::string>{"throw",
+                                            "the planner failed: the collision world vanished"},
+        {"nan", "the planner returned waypoint 1 with a position that is not finite"},
+        {"times", "the planner returned 1 times for 2 waypoints"},
+        {"empty", "the planner returned a solved plan without waypoints"}}) {
+    bt::Tree tree = load(pipeline_tree("{ plugin: point_sampler }", "{ plugin: best_first }",
+                                       "{ plugin: garbage_planner, garbage: " + garbage + " }"));
+    EXPECT_EQ(failure_of(tree, "plan"), reason) << garbage;
+    EXPECT_FALSE(tree.blackboard().has("path")) << garbage;
+  }
+}
+
 TEST_F(PipelineNodesTest, LoopOverScenesCountsSeedsAndOutcomes) {
   bt::Tree tree = load(std::string(kComponents) + R"(
 trees:

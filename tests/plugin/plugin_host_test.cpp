@@ -40,12 +40,12 @@ TEST(PluginHostTest, LoadsGoodPluginAndDescribesIt) {
   ASSERT_EQ(record.state, PluginRecord::State::kLoaded) << record.reason;
   EXPECT_EQ(record.name, "test_fixtures");
   EXPECT_EQ(record.version, "1.2.3");
-  EXPECT_EQ(record.offers.size(), 8u);
+  EXPECT_EQ(record.offers.size(), 11u);
   EXPECT_EQ(host.kind_of("point_sampler"), ComponentKind::kSampler);
   EXPECT_EQ(host.kind_of("line_cell"), ComponentKind::kCell);
   EXPECT_EQ(host.kind_of("CountTicks"), std::nullopt);  // a node, not a component
   EXPECT_EQ(host.kind_of("nothing"), std::nullopt);
-  EXPECT_EQ(host.component_types().size(), 7u);
+  EXPECT_EQ(host.component_types().size(), 10u);
   EXPECT_EQ(host.node_types(), std::vector<std::string>{"CountTicks"});
 }
 

@@ -95,6 +95,13 @@ threads: 1
 view_origin: [0, 0, 0]
 support_plane: auto
 support_distance_m: 0.008
+approach_tilts_deg: [30]
+tilted_orientation_range_deg: 20
+objects: auto
+max_range_m: 3.0
+scene: {max_planes: 3, max_object_height_m: 0.3, max_object_size_m: 0.4, max_gap_m: 0.02,
+        cluster_tolerance_m: 0.005, min_object_points: 20, up: [0, -1, 0], max_tilt_deg: 40,
+        fixtures: [[-1, -1, -1, -0.9, -0.9, -0.9]]}
 )";
   const auto sampler = create(yaml);
   ASSERT_NE(sampler, nullptr);
@@ -121,6 +128,10 @@ TEST_F(AntipodalSamplerTest, BadParametersAreLocatedErrors) {
             "tree.yaml:1:1: hand search: min_bite_m must be in [0, depth_m], got 0.5");
   EXPECT_EQ(creation_error("support_plane: table"),
             "tree.yaml:1:1: parameter 'support_plane' must be 'auto' or 'none', got 'table'");
+  EXPECT_EQ(creation_error("objects: some"),
+            "tree.yaml:1:1: parameter 'objects' must be 'auto' or 'all', got 'some'");
+  EXPECT_EQ(creation_error("scene: {max_planes: 0}"),
+            "tree.yaml:1:9: parameter 'max_planes' must be at least 1, got 0");
   EXPECT_EQ(creation_error("support_distance_m: 0"),
             "tree.yaml:1:1: parameter 'support_distance_m' must be > 0.000000, got 0.000000");
   EXPECT_EQ(creation_error("support_distance_m: 0.5"),
@@ -147,6 +158,38 @@ TEST_F(AntipodalSamplerTest, SupportPlaneModes) {
   ASSERT_FALSE(automatic.hands.empty());
   EXPECT_EQ(on_the_table(automatic), 0u);
   EXPECT_GT(on_the_table(none), 0u);  // the table's cut border looks like a plate's edge
+}
+
+TEST_F(AntipodalSamplerTest, ObjectsAutoSamplesTheObjectsAndNamesThemOnEachHand) {
+  // A table seen from above at 45 degrees with two cans: only the cans are sampled, each
+  // hand names its can.
+  const Eigen::Vector3d up = Eigen::Vector3d(0.0, -1.0, -1.0).normalized();
+  const Eigen::Vector3d on_table(0.0, 0.0, 0.7);
+  Cloud cloud = testing::plane_cloud(on_table, up, 0.4);
+  for (const double x : {-0.08, 0.08}) {
+    testing::append(cloud, testing::cylinder_cloud(on_table + Eigen::Vector3d(x, 0, 0) + 0.06 * up,
+                                                   up, 0.05, 0.12));
+  }
+  const HandSet set = create("samples: 600\nobjects: auto")->sample(cloud, RandomStream(2), {});
+  ASSERT_EQ(set.objects.size(), 2u);
+  ASSERT_GT(set.hands.size(), 20u);
+  std::vector<char> on_object(set.cloud->size(), 0);
+  for (const SceneObject& object : set.objects)
+    for (const std::int32_t i : object.points) on_object[std::size_t(i)] = 1;
+  std::size_t per_object[2] = {0, 0};
+  for (const Hand& hand : set.hands) {
+    EXPECT_TRUE(on_object[std::size_t(hand.sample_index)]) << "a sample off the objects";
+    ASSERT_GE(hand.object, 0);
+    ASSERT_LT(hand.object, 2);
+    ++per_object[hand.object];
+    const double x = hand.position_m().x();
+    EXPECT_EQ(hand.object, x < 0.0 ? 0 : 1) << "hand at x = " << x;
+  }
+  EXPECT_GT(per_object[0], 5u);
+  EXPECT_GT(per_object[1], 5u);
+  const HandSet all = create("samples: 600\nobjects: all")->sample(cloud, RandomStream(2), {});
+  EXPECT_TRUE(all.objects.empty());
+  for (const Hand& hand : all.hands) EXPECT_EQ(hand.object, -1);
 }
 
 TEST_F(AntipodalSamplerTest, UnusableCloudsAreErrors) {

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <tuple>
 
 #include "antipode/core/error.hpp"
 #include "antipode/interfaces/grasp_selector.hpp"
@@ -85,6 +86,9 @@ TEST(HandClusters, SimilarHandsUpToTheClosingSign) {
   EXPECT_TRUE(selectors::similar(a, turned(a, 15.0), options));
   EXPECT_FALSE(selectors::similar(a, turned(a, 30.0), options));
   EXPECT_TRUE(selectors::similar(a, turned(a, 180.0), options)) << "a half turn is the same grasp";
+  Hand on_another = top_down(0.005, 0.0, 0.1);
+  on_another.object = 3;  // a neighbour a few millimetres away: never averaged with `a`
+  EXPECT_FALSE(selectors::similar(a, on_another, options));
 }
 
 TEST(HandClusters, TheMeanGraspAveragesPositionsAndRotations) {
@@ -226,6 +230,57 @@ TEST_F(ClusterSelectorTest, ANeckNarrowerThanTheClosedGripperIsNotAGraspWhatever
       create("min_cluster_size: 1\nunseen_is_free: true\nwidth_trim: 0")->select(set, {});
   ASSERT_EQ(grasp_count(full), 2u);
   EXPECT_NEAR(full.hands[0].position_m().x(), 0.0, 1e-12);
+}
+
+// Hands on two objects: #0 around x = 0 (scores 5, 4, 3), #1 around x = 0.3 (scores 2, 1).
+HandSet on_two_objects() {
+  std::vector<Hand> hands;
+  for (const auto& [x, score, object] : {std::tuple<double, double, int>{0.0, 5.0, 0},
+                                         {0.05, 4.0, 0},
+                                         {-0.05, 3.0, 0},
+                                         {0.3, 2.0, 1},
+                                         {0.35, 1.0, 1}}) {
+    Hand hand = top_down(x, 0, 0.1, score);
+    hand.object = object;
+    hands.push_back(hand);
+  }
+  HandSet set = on_table(hands);
+  for (const int id : {0, 1}) {
+    SceneObject object;
+    object.id = id;
+    object.centroid_m = Eigen::Vector3f(0.3f * float(id), 0.0f, 0.03f);
+    set.objects.push_back(object);
+  }
+  return set;
+}
+
+std::vector<int> chosen_objects(const HandSet& selection) {
+  std::vector<int> objects;
+  for (std::size_t i = 0; i < grasp_count(selection); ++i)
+    objects.push_back(selection.hands[i].object);
+  return objects;
+}
+
+TEST_F(ClusterSelectorTest, GraspsPerObjectAndAnObjectOfInterest) {
+  const HandSet set = on_two_objects();
+  const std::string base = "min_cluster_size: 1\nunseen_is_free: true\nmax_grasps: 5\n";
+  EXPECT_EQ(chosen_objects(create(base)->select(set, {})), (std::vector<int>{0, 0, 0, 1, 1}));
+  EXPECT_EQ(chosen_objects(create(base + "grasps_per_object: 1")->select(set, {})),
+            (std::vector<int>{0, 1}));
+  const HandSet near = create(base + "near_m: [0.28, 0.02, 0.0]")->select(set, {});
+  EXPECT_EQ(chosen_objects(near), (std::vector<int>{1, 1}));
+  EXPECT_EQ(near.hands[2].rejection, Rejection::kOtherObject);
+  EXPECT_EQ(chosen_objects(create(base + "object: 0")->select(set, {})),
+            (std::vector<int>{0, 0, 0}));
+  // Asked for an object in a scene that was not segmented: nothing is chosen, with the reason.
+  HandSet unsegmented = set;
+  unsegmented.objects.clear();
+  for (Hand& hand : unsegmented.hands) hand.object = -1;
+  const HandSet none = create(base + "near_m: [0.3, 0, 0]")->select(unsegmented, {});
+  EXPECT_EQ(grasp_count(none), 0u);
+  EXPECT_EQ(none.hands[0].rejection, Rejection::kOtherObject);
+  EXPECT_EQ(creation_error(base + "object: 1\nnear_m: [0, 0, 0]"),
+            "tree.yaml:5:1: give either 'object' or 'near_m', not both");
 }
 
 // A hand approaching along +x at height z, its closing direction turned `tilt_deg` from

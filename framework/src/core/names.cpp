@@ -54,6 +54,8 @@ const char* to_string(Rejection reason) {
       return "too far from the centre of mass";
     case Rejection::kNoIkAtPreGrasp:
       return "no inverse kinematics solution at the pre-grasp";
+    case Rejection::kOtherObject:
+      return "not on the chosen object";
   }
   return "?";
 }

@@ -108,10 +108,17 @@ void search_sample(const SearchContext& search, std::int32_t sample, geometry::G
 // or below the support (if any); `on_support` counts the points the support excluded.
 std::vector<std::int32_t> candidates(const Cloud& cloud, const std::optional<AxisBox>& region,
                                      const SupportPlane* support, float support_distance_m,
-                                     std::size_t& on_support) {
+                                     const SearchScene& scene, std::size_t& on_support) {
+  std::vector<char> allowed(cloud.size(), scene.sample_points ? 0 : 1);
+  if (scene.sample_points) {
+    for (const std::int32_t i : *scene.sample_points) {
+      if (i >= 0 && static_cast<std::size_t>(i) < cloud.size()) allowed[std::size_t(i)] = 1;
+    }
+  }
   std::vector<std::int32_t> indices;
   indices.reserve(cloud.size());
   for (std::size_t i = 0; i < cloud.size(); ++i) {
+    if (!allowed[i]) continue;
     const Eigen::Vector3f& p = cloud.points_m[i];
     if (region && !region->contains(p)) continue;
     if (support != nullptr && support->distance(p) <= support_distance_m) {
@@ -148,7 +155,7 @@ HandSearchResult concatenate(std::vector<SampleOutput>& outputs, std::vector<std
 }  // namespace
 
 HandSearchResult search_hands(const Cloud& cloud, const HandSearchParameters& parameters,
-                              const RandomStream& random) {
+                              const RandomStream& random, const SearchScene& scene) {
   parameters.validate();
   if (cloud.empty()) throw Error("hand search: the cloud has no points");
   cloud.validate();
@@ -161,17 +168,19 @@ HandSearchResult search_hands(const Cloud& cloud, const HandSearchParameters& pa
   }
   HandSearchResult result;
   const bool all_around = cloud.view_origins_m.empty() && parameters.outward_from_m;
-  if (parameters.support_plane == SupportPlaneMode::kAuto && !all_around) {
+  if (scene.support) {
+    result.support_plane = scene.support;
+  } else if (parameters.support_plane == SupportPlaneMode::kAuto && !all_around) {
     result.support_plane = find_support_plane(cloud, sensor_position(cloud), parameters.support,
                                               random.derive(kSupportPlaneStream));
   }
   const SupportPlane* support = result.support_plane ? &*result.support_plane : nullptr;
   const geometry::SlabGrid slabs(cloud.points_m, geometry::kSlabCell_m);
   const SearchContext search{cloud, index, slabs, parameters, spec, occlusion.get(), support};
-  std::vector<std::int32_t> samples =
-      geometry::choose_samples(candidates(cloud, parameters.sample_region, support,
-                                          parameters.support.distance_m, result.stats.on_support),
-                               parameters.samples, random.derive(kSampleChoiceStream));
+  std::vector<std::int32_t> samples = geometry::choose_samples(
+      candidates(cloud, parameters.sample_region, support, parameters.support.distance_m, scene,
+                 result.stats.on_support),
+      parameters.samples, random.derive(kSampleChoiceStream));
   std::vector<SampleOutput> outputs(samples.size());
   tbb::enumerable_thread_specific<geometry::GridScratch> scratch;
   tbb::task_arena arena(parameters.threads > 0 ? parameters.threads : tbb::task_arena::automatic);

@@ -1,6 +1,10 @@
 #include "antipode/geometry/sample_hands.hpp"
 
+#include <algorithm>
 #include <memory>
+#include <string>
+
+#include "antipode/core/error.hpp"
 
 namespace antipode {
 namespace {
@@ -15,6 +19,53 @@ Eigen::Vector3f centroid(const Cloud& cloud) {
   Eigen::Vector3d sum = Eigen::Vector3d::Zero();
   for (const auto& p : cloud.points_m) sum += p.cast<double>();
   return (sum / static_cast<double>(cloud.size())).cast<float>();
+}
+
+// Random stream of the scene layout: one no sample index of the search reaches.
+constexpr std::uint64_t kSceneStream = 0xFFFFFFFFFFFEull;
+
+// Where the sensors are: the mean of the view origins.
+Eigen::Vector3f sensor_position(const Cloud& cloud) {
+  Eigen::Vector3f sum = Eigen::Vector3f::Zero();
+  for (const auto& origin : cloud.view_origins_m) sum += origin;
+  return sum / static_cast<float>(std::max<std::size_t>(1, cloud.view_origins_m.size()));
+}
+
+// The points within `range_m` of the sensor that saw them (the first view in their mask).
+Cloud within_range(const Cloud& cloud, float range_m) {
+  Cloud out;
+  out.frame = cloud.frame;
+  out.view_origins_m = cloud.view_origins_m;
+  for (std::size_t i = 0; i < cloud.size(); ++i) {
+    const std::uint32_t mask = cloud.view_masks.empty() ? 1u : cloud.view_masks[i];
+    int view = 0;
+    while (view < 31 && !(mask & (1u << view))) ++view;
+    const std::size_t v = std::min<std::size_t>(std::size_t(view), cloud.view_origins_m.size() - 1);
+    if ((cloud.points_m[i] - cloud.view_origins_m[v]).norm() > range_m) continue;
+    out.points_m.push_back(cloud.points_m[i]);
+    if (cloud.has_normals()) out.normals.push_back(cloud.normals[i]);
+    if (!cloud.view_masks.empty()) out.view_masks.push_back(cloud.view_masks[i]);
+  }
+  if (out.empty())
+    throw Error("no point of the cloud lies within max_range_m " + std::to_string(range_m) +
+                " of its sensor");
+  return out;
+}
+
+// The object each hand closes on: the one holding most of its closing points (the lower id
+// on ties), or -1.
+void label_objects(const std::vector<std::int32_t>& object_of_point, std::size_t objects,
+                   std::vector<Hand>& hands) {
+  std::vector<std::size_t> votes(objects);
+  for (Hand& hand : hands) {
+    std::fill(votes.begin(), votes.end(), 0);
+    for (const std::int32_t i : hand.closing_points) {
+      const std::int32_t object = object_of_point[std::size_t(i)];
+      if (object >= 0) ++votes[std::size_t(object)];
+    }
+    const auto best = std::max_element(votes.begin(), votes.end());
+    hand.object = best == votes.end() || *best == 0 ? -1 : std::int32_t(best - votes.begin());
+  }
 }
 
 }  // namespace
@@ -34,9 +85,28 @@ HandSet sample_hands(const Cloud& cloud, const HandSamplingOptions& options,
     prepared->view_origins_m.clear();
     prepared->view_masks.clear();
   }
-  HandSearchResult result = search_hands(*prepared, search, random);
+  if (options.max_range_m > 0.0f && !prepared->view_origins_m.empty()) {
+    *prepared = within_range(*prepared, options.max_range_m);
+  }
+  SceneLayout layout;
+  SearchScene scene;
+  if (options.objects == ObjectMode::kAuto && !search.outward_from_m &&
+      search.support_plane == SupportPlaneMode::kAuto) {
+    layout = find_scene_layout(*prepared, sensor_position(*prepared), options.scene,
+                               random.derive(kSceneStream));
+    if (layout.support) {
+      scene.support = layout.support;
+      scene.sample_points.emplace();
+      for (std::size_t i = 0; i < prepared->size(); ++i) {
+        if (layout.object_of_point[i] >= 0) scene.sample_points->push_back(std::int32_t(i));
+      }
+    }
+  }
+  HandSearchResult result = search_hands(*prepared, search, random, scene);
   if (stats != nullptr) *stats = result.stats;
-  return HandSet{std::move(prepared), std::move(result.hands), search.hand, result.support_plane};
+  if (layout.support) label_objects(layout.object_of_point, layout.objects.size(), result.hands);
+  return HandSet{std::move(prepared), std::move(result.hands), search.hand, result.support_plane,
+                 std::move(layout.objects)};
 }
 
 }  // namespace antipode

@@ -4,17 +4,20 @@ find_package(TBB REQUIRED)
 find_package(nanoflann REQUIRED)
 list(APPEND ANTIPODE_SOURCES
   ${CMAKE_CURRENT_LIST_DIR}/crop.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/euclidean_clusters.cpp
   ${CMAKE_CURRENT_LIST_DIR}/grid_search.cpp
   ${CMAKE_CURRENT_LIST_DIR}/hand_body.cpp
   ${CMAKE_CURRENT_LIST_DIR}/hand_search.cpp
   ${CMAKE_CURRENT_LIST_DIR}/hand_search_parameters.cpp
   ${CMAKE_CURRENT_LIST_DIR}/local_frame.cpp
   ${CMAKE_CURRENT_LIST_DIR}/occlusion.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/plane_facing.cpp
   ${CMAKE_CURRENT_LIST_DIR}/point_index.cpp
   ${CMAKE_CURRENT_LIST_DIR}/preprocess.cpp
   ${CMAKE_CURRENT_LIST_DIR}/quadric.cpp
   ${CMAKE_CURRENT_LIST_DIR}/sample_choice.cpp
   ${CMAKE_CURRENT_LIST_DIR}/sample_hands.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/scene_layout.cpp
   ${CMAKE_CURRENT_LIST_DIR}/slab_grid.cpp
   ${CMAKE_CURRENT_LIST_DIR}/support_plane.cpp
   ${CMAKE_CURRENT_LIST_DIR}/depth_scale.cpp

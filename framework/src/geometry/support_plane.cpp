@@ -8,6 +8,8 @@
 
 #include <Eigen/Eigenvalues>
 
+#include "plane_facing.hpp"
+
 namespace antipode {
 namespace {
 
@@ -96,44 +98,6 @@ double supported_fraction(const std::vector<Eigen::Vector3f>& points, const Supp
   return above == 0 ? 1.0 : static_cast<double>(supported) / static_cast<double>(above);
 }
 
-// The fraction of the plane's inliers where the cloud's surface faces along the plane's
-// normal (the local normal of the nearby `points` within 25 degrees of it), over up to
-// kFacingProbes inliers with enough neighbours. A table is a surface seen face-on; the
-// band a plane cuts from the rim of a convex object seen from one side is not: there the
-// surface runs across the plane.
-constexpr std::size_t kFacingProbes = 128;
-constexpr float kFacingRadius_m = 0.015f;
-constexpr float kFacingCosine = 0.9f;
-
-double facing_fraction(const std::vector<Eigen::Vector3f>& points, const SupportPlane& plane,
-                       float distance_m) {
-  std::vector<std::size_t> inliers;
-  for (std::size_t i = 0; i < points.size(); ++i) {
-    if (std::fabs(plane.distance(points[i])) <= distance_m) inliers.push_back(i);
-  }
-  const std::size_t step = std::max<std::size_t>(1, inliers.size() / kFacingProbes);
-  std::size_t probes = 0, facing = 0;
-  for (std::size_t k = 0; k < inliers.size(); k += step) {
-    const Eigen::Vector3f& centre = points[inliers[k]];
-    Eigen::Vector3d sum = Eigen::Vector3d::Zero();
-    Eigen::Matrix3d moments = Eigen::Matrix3d::Zero();
-    std::size_t n = 0;
-    for (const auto& p : points) {
-      if ((p - centre).squaredNorm() > kFacingRadius_m * kFacingRadius_m) continue;
-      const Eigen::Vector3d d = (p - centre).cast<double>();
-      sum += d, moments += d * d.transpose(), ++n;
-    }
-    if (n < 6) continue;
-    const Eigen::Vector3d mean = sum / static_cast<double>(n);
-    const Eigen::Matrix3d covariance = moments / static_cast<double>(n) - mean * mean.transpose();
-    const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver(covariance);
-    ++probes;
-    facing += static_cast<std::size_t>(
-        std::fabs(solver.eigenvectors().col(0).cast<float>().dot(plane.normal)) >= kFacingCosine);
-  }
-  return probes == 0 ? 0.0 : static_cast<double>(facing) / static_cast<double>(probes);
-}
-
 }  // namespace
 
 std::optional<SupportPlane> find_support_plane(const Cloud& cloud,
@@ -181,7 +145,7 @@ std::optional<SupportPlane> find_support_plane(const Cloud& cloud,
           std::max(1.0, options.min_above_fraction * static_cast<double>(total)) ||
       supported_fraction(points, plane, options.distance_m, extent) <
           options.min_supported_fraction ||
-      facing_fraction(scoring, plane, options.distance_m) < options.min_facing_fraction) {
+      geometry::facing_fraction(scoring, plane, options.distance_m) < options.min_facing_fraction) {
     return std::nullopt;
   }
   plane.inliers = c.inliers;

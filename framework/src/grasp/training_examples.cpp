@@ -125,7 +125,9 @@ HandSet with_closing_points_in(const HandSet& set, std::shared_ptr<const Cloud> 
                                int threads) {
   if (reference == nullptr) throw Error("closing points: no reference cloud");
   reference->validate();
-  HandSet out{reference, set.hands, set.geometry, set.support};
+  // Another cloud: the objects' point indices would name other points, so they stay behind.
+  HandSet out{reference, set.hands, set.geometry, set.support, {}};
+  for (Hand& hand : out.hands) hand.object = -1;
   const HandBody body = make_hand_body(set.geometry, 0.0);
   in_arena(threads, [&] {
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, out.hands.size(), 16),

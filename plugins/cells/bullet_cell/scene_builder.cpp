@@ -14,11 +14,16 @@ Eigen::Isometry3d translation(double x, double y, double z) {
   return Eigen::Isometry3d(Eigen::Translation3d(x, y, z));
 }
 
-// Adds the table and the box; returns the box walls' ids.
+// Adds the table, the room's fixtures and the box; returns the box walls' ids.
 std::vector<int> add_table_and_box(const SceneSpec& spec, PhysicsWorld& world) {
   const TableSpec& t = spec.table;
   world.add_fixture_box("table", translation(t.center_m.x(), t.center_m.y(), t.top_z_m - 0.025),
                         {t.size_m.x() / 2, t.size_m.y() / 2, 0.025}, t.friction);
+  for (const FixtureSpec& f : spec.fixtures) {
+    Eigen::Isometry3d pose = translation(f.center_m.x(), f.center_m.y(), f.center_m.z());
+    pose.rotate(Eigen::AngleAxisd(f.yaw_rad, Eigen::Vector3d::UnitZ()));
+    world.add_fixture_box(f.name, pose, f.size_m / 2, t.friction);
+  }
   std::vector<int> walls;
   if (!spec.box.present) return walls;
   const BoxSpec& b = spec.box;

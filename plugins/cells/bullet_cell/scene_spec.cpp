@@ -180,12 +180,38 @@ std::vector<CameraSpec> default_cameras(const TableSpec& table) {
           camera("top", {0.0, 0.0, 0.75}), camera("front", {0.62, 0.0, 0.5})};
 }
 
+FixtureSpec parse_fixture(const Parameters& p) {
+  FixtureSpec f;
+  f.name = p.get<std::string>("name", f.name);
+  f.center_m = vector_at(p, "center_m", 3, f.center_m);
+  if (!(f.center_m.cwiseAbs().maxCoeff() <= 20.0))
+    p.fail("center_m", "'center_m' must be within 20 m of the base");
+  f.size_m = vector_at(p, "size_m", 3, f.size_m);
+  if (!(f.size_m.minCoeff() > 0.0 && f.size_m.maxCoeff() <= 20.0))
+    p.fail("size_m", "'size_m' must be three sizes in (0, 20] m");
+  f.yaw_rad = p.get<double>("yaw_rad", 0.0);
+  if (!(std::abs(f.yaw_rad) <= 10.0)) p.fail("yaw_rad", "'yaw_rad' must be in [-10, 10]");
+  p.reject_unknown();
+  return f;
+}
+
 SceneSpec parse_scene(const Parameters& p) {
   SceneSpec s;
   s.file = p.file();
   s.seed = p.get<std::uint64_t>("seed", 0);
   s.table = parse_table(p.child("table"));
   if (p.has("box")) s.box = parse_box(p.child("box"), s.table);
+  if (p.has("fixtures")) {
+    const YAML::Node list = p.yaml()["fixtures"];
+    p.get<YAML::Node>("fixtures", {});
+    if (!list.IsSequence()) p.fail("fixtures", "'fixtures' must be a list");
+    if (list.size() > 100)
+      p.fail("fixtures", "'fixtures' lists " + std::to_string(list.size()) +
+                             " boxes; a scene holds at most 100");
+    for (std::size_t i = 0; i < list.size(); ++i)
+      s.fixtures.push_back(parse_fixture(
+          Parameters(list[i], "fixture " + std::to_string(i + 1) + " of the scene", s.file)));
+  }
   s.placement = parse_placement(p);
   if (p.has("region")) {
     const Parameters r = p.child("region");

@@ -64,6 +64,15 @@ struct RandomObjects {
   ProceduralRanges ranges;
 };
 
+/// A static box of the room around the table (a wall, a shelf board, a cabinet): seen by
+/// the cameras and solid, never an object.
+struct FixtureSpec {
+  std::string name = "fixture";
+  Eigen::Vector3d center_m = Eigen::Vector3d::Zero();
+  Eigen::Vector3d size_m{0.1, 0.1, 0.1};
+  double yaw_rad = 0.0;  ///< about the vertical
+};
+
 enum class Placement { kIsolated, kPile, kPacked };
 
 struct SceneSpec {
@@ -71,6 +80,7 @@ struct SceneSpec {
   std::uint64_t seed = 0;
   TableSpec table;
   BoxSpec box;
+  std::vector<FixtureSpec> fixtures;
   Placement placement = Placement::kPile;
   Eigen::AlignedBox2d region{Eigen::Vector2d(0.62, -0.25), Eigen::Vector2d(0.83, -0.02)};
   double drop_height_m = 0.2;

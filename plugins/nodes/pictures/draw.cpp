@@ -35,7 +35,17 @@ void draw_box(cv::Mat& image, const OrthoView& view, const HandBox& box,
   }
 }
 
-void draw_cloud(cv::Mat& image, const OrthoView& view, const Cloud& cloud) {
+cv::Scalar object_colour(std::int32_t id) {
+  static const cv::Scalar kPalette[] = {// BGR
+                                        {40, 40, 220},  {200, 120, 30}, {40, 170, 40},
+                                        {200, 40, 200}, {0, 160, 230},  {160, 160, 0},
+                                        {120, 60, 160}, {30, 110, 180}};
+  if (id < 0) return {150, 150, 150};
+  return kPalette[id % 8];
+}
+
+void draw_cloud(cv::Mat& image, const OrthoView& view, const Cloud& cloud,
+                const std::vector<std::int32_t>& object_of_point) {
   std::vector<ProjectedPoint> projected(cloud.size());
   for (std::size_t i = 0; i < cloud.size(); ++i) {
     projected[i] = view.project(cloud.points_m[i].cast<double>());
@@ -57,8 +67,12 @@ void draw_cloud(cv::Mat& image, const OrthoView& view, const Cloud& cloud) {
     if (!(p.u_px >= 0 && p.v_px >= 0 && p.u_px < image.cols && p.v_px < image.rows)) continue;
     const double nearness = 1.0 - (p.depth_m - near_m) / range_m;  // 1 = nearest
     const double shade = 90.0 + 140.0 * nearness;
-    cv::rectangle(image, cv::Rect(static_cast<int>(p.u_px), static_cast<int>(p.v_px), 2, 2),
-                  cv::Scalar(shade, 0.85 * shade, 0.7 * shade), cv::FILLED);
+    cv::Scalar colour(shade, 0.85 * shade, 0.7 * shade);
+    if (i < object_of_point.size() && object_of_point[i] >= 0) {
+      colour = object_colour(object_of_point[i]) * (0.6 + 0.4 * nearness);
+    }
+    cv::rectangle(image, cv::Rect(static_cast<int>(p.u_px), static_cast<int>(p.v_px), 2, 2), colour,
+                  cv::FILLED);
   }
 }
 

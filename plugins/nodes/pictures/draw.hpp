@@ -13,8 +13,13 @@
 
 namespace antipode::pictures {
 
-/// Draws the points far to near (so nearer ones cover farther ones), shaded by depth.
-void draw_cloud(cv::Mat& image, const OrthoView& view, const Cloud& cloud);
+/// Draws the points far to near (so nearer ones cover farther ones), shaded by depth. With
+/// `object_of_point` (one entry per point), the points of object k take object_colour(k).
+void draw_cloud(cv::Mat& image, const OrthoView& view, const Cloud& cloud,
+                const std::vector<std::int32_t>& object_of_point = {});
+
+/// A colour per object id, eight that tell apart, repeating; grey for -1 (no object).
+cv::Scalar object_colour(std::int32_t id);
 
 /// Draws the outline of `box` (in the frame X_FrameHand places).
 void draw_box(cv::Mat& image, const OrthoView& view, const HandBox& box,

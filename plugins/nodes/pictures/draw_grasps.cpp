@@ -21,6 +21,17 @@ std::vector<const Hand*> best_hands(const HandSet& set, std::size_t count) {
   return hands;
 }
 
+// Per cloud point: the id of the object it belongs to, or -1.
+std::vector<std::int32_t> object_labels(const HandSet& set) {
+  std::vector<std::int32_t> labels(set.cloud->size(), -1);
+  for (const SceneObject& object : set.objects) {
+    for (const std::int32_t i : object.points) {
+      if (i >= 0 && std::size_t(i) < labels.size()) labels[std::size_t(i)] = object.id;
+    }
+  }
+  return labels;
+}
+
 // Where the picture looks and how much it shows: around the hands, else the whole cloud.
 std::pair<Eigen::Vector3d, double> framing(const Cloud& cloud,
                                            const std::vector<const Hand*>& hands) {
@@ -94,13 +105,18 @@ class DrawGrasps final : public bt::SyncActionNode {
 
   void render(cv::Mat& image, const OrthoView& view, const HandSet& set,
               const std::vector<const Hand*>& hands, const std::string& title) const {
-    draw_cloud(image, view, *set.cloud);
+    const bool by_object = !set.objects.empty();
+    draw_cloud(image, view, *set.cloud,
+               by_object ? object_labels(set) : std::vector<std::int32_t>{});
     const HandBody hand_body = make_hand_body(set.geometry);
-    // Worst first so the best ends on top; the best in green, the others in orange.
+    // Worst first so the best ends on top, drawn thicker. Without objects the best is green,
+    // the others orange; with objects, each hand takes its object's colour.
     for (std::size_t i = hands.size(); i-- > 0;) {
       const bool best = i == 0;
-      draw_hand(image, view, hand_body, *hands[i],
-                best ? cv::Scalar(40, 170, 40) : cv::Scalar(0, 140, 255), best ? 2 : 1);
+      const cv::Scalar colour = by_object ? object_colour(hands[i]->object)
+                                : best    ? cv::Scalar(40, 170, 40)
+                                          : cv::Scalar(0, 140, 255);
+      draw_hand(image, view, hand_body, *hands[i], colour, best ? 2 : 1);
     }
     const auto candidates = std::count_if(set.hands.begin(), set.hands.end(), [](const Hand& h) {
       return h.rejection == Rejection::kNone;

@@ -4,6 +4,7 @@
 
 #include "antipode/bt/action_node.hpp"
 #include "antipode/core/error.hpp"
+#include "antipode/core/stop_token.hpp"
 #include "antipode/interfaces/classifier.hpp"
 #include "nodes.hpp"
 
@@ -50,6 +51,8 @@ class ClassifyHands final : public bt::SyncActionNode {
     try {
       component<Classifier>("classifier").classify(*classified, stop_token());
     } catch (const InternalError&) {
+      throw;
+    } catch (const Cancelled&) {
       throw;
     } catch (const Error& error) {
       set_failure_reason(std::string("the classifier failed: ") + error.what());

@@ -1,9 +1,12 @@
 #include <algorithm>
 
 #include "antipode/bt/action_node.hpp"
+#include "antipode/core/error.hpp"
+#include "antipode/core/stop_token.hpp"
 #include "antipode/interfaces/cell.hpp"
 #include "antipode/interfaces/motion_planner.hpp"
 #include "nodes.hpp"
+#include "plugin_output_checks.hpp"
 
 namespace antipode::pipeline {
 namespace {
@@ -79,7 +82,26 @@ class PlanReach final : public bt::SyncActionNode {
       if (grasp.rejection != Rejection::kNone) continue;
       ++tried;
       problem.grasp = grasp;
-      PlanningResult result = planner.plan(problem);
+      // A planner's fault (it threw, or its solved plan is broken) fails this node: a broken
+      // trajectory must never reach the arm.
+      PlanningResult result;
+      try {
+        result = planner.plan(problem);
+      } catch (const InternalError&) {
+        throw;
+      } catch (const Cancelled&) {
+        throw;
+      } catch (const Error& error) {
+        set_failure_reason(std::string("the planner failed: ") + error.what());
+        return bt::Status::kFailure;
+      }
+      if (result.solved()) {
+        if (const std::string problem_text = plan_problem(result.X_BaseHand, result.trajectory);
+            !problem_text.empty()) {
+          set_failure_reason("the planner " + problem_text);
+          return bt::Status::kFailure;
+        }
+      }
       if (result.status == PlanningStatus::kCancelled) {
         set_failure_reason("planning cancelled");
         return bt::Status::kFailure;

@@ -26,6 +26,7 @@ Hand hand_from_json(const nlohmann::json& json) {
   hand.X_FrameHand.translation() = vector3(json, "position_m");
   hand.width_m = json.value("width_m", 0.0);
   hand.score = json.value("score", 0.0);
+  hand.object = json.value("object", -1);
   return hand;
 }
 
@@ -68,7 +69,10 @@ class ReadGrasps final : public bt::SyncActionNode {
         fail("file", "grasps in '" + file + "' are in frame '" + grasps_frame +
                          "', the cloud is in frame '" + frame + "'");
       }
-      for (const auto& json : document.at("hands")) hands.push_back(hand_from_json(json));
+      for (const auto& json : document.at("hands")) {
+        hands.push_back(hand_from_json(json));
+        hands.back().frame = frame;
+      }
     } catch (const Error&) {
       throw;
     } catch (const std::exception& error) {

@@ -1,6 +1,9 @@
+#include <string>
+
 #include "antipode/bt/action_node.hpp"
 #include "antipode/interfaces/sampler.hpp"
 #include "nodes.hpp"
+#include "plugin_output_checks.hpp"
 
 namespace antipode::pipeline {
 namespace {
@@ -24,10 +27,19 @@ class SampleHands final : public bt::SyncActionNode {
  protected:
   bt::Status tick() override {
     const CloudPtr cloud = get_input<CloudPtr>("cloud");
+    // The sampler's errors are about the cloud (no finite point, nothing in the workspace):
+    // they stop the run as input errors, located at this node. Broken hands fail the node.
     auto hands = std::make_shared<HandSet>(
         component<Sampler>("sampler").sample(*cloud, random(), stop_token()));
+    if (const std::string problem = sampling_problem(*hands); !problem.empty()) {
+      set_failure_reason("the sampler " + problem);
+      return bt::Status::kFailure;
+    }
     log(std::to_string(hands->hands.size()) + " hand hypotheses from " +
-        std::to_string(cloud->size()) + " points");
+        std::to_string(cloud->size()) + " points" +
+        (hands->objects.empty() ? std::string()
+                                : " on " + std::to_string(hands->objects.size()) +
+                                      " objects standing on the support"));
     if (hands->hands.empty()) {
       set_failure_reason("no hand hypothesis found");
       return bt::Status::kFailure;

@@ -4,8 +4,11 @@
 #include <vector>
 
 #include "antipode/bt/action_node.hpp"
+#include "antipode/core/error.hpp"
+#include "antipode/core/stop_token.hpp"
 #include "antipode/interfaces/grasp_selector.hpp"
 #include "nodes.hpp"
+#include "plugin_output_checks.hpp"
 
 namespace antipode::pipeline {
 namespace {
@@ -56,8 +59,24 @@ class SelectGrasps final : public bt::SyncActionNode {
     context.scene = get_input<CloudPtr>("scene");
     context.start = get_input<JointState>("start");
     context.stop = stop_token();
-    auto selection = std::make_shared<const HandSet>(
-        component<GraspSelector>("selector").select(*get_input<HandSetPtr>("hands"), context));
+    const HandSetPtr hands = get_input<HandSetPtr>("hands");
+    // A selector's fault (it threw, or chose grasps it was not given) fails this node.
+    std::shared_ptr<const HandSet> selection;
+    try {
+      selection = std::make_shared<const HandSet>(
+          component<GraspSelector>("selector").select(*hands, context));
+    } catch (const InternalError&) {
+      throw;
+    } catch (const Cancelled&) {
+      throw;
+    } catch (const Error& error) {
+      set_failure_reason(std::string("the selector failed: ") + error.what());
+      return bt::Status::kFailure;
+    }
+    if (const std::string problem = selection_problem(*hands, *selection); !problem.empty()) {
+      set_failure_reason("the selector " + problem);
+      return bt::Status::kFailure;
+    }
     std::size_t chosen = 0;
     while (chosen < selection->hands.size() &&
            selection->hands[chosen].rejection == Rejection::kNone)

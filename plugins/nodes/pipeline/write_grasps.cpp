@@ -24,6 +24,7 @@ nlohmann::json hand_json(const Hand& hand) {
       {"score", hand.score},
       {"label", to_string(hand.label)},
       {"sample_index", hand.sample_index},
+      {"object", hand.object},
   };
   if (hand.rejection != Rejection::kNone) json["rejection"] = to_string(hand.rejection);
   return json;

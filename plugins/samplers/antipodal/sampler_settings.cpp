@@ -122,6 +122,49 @@ HandSearchParameters search_parameters(const Parameters& params) {
   return s;
 }
 
+ObjectMode object_mode(const Parameters& params) {
+  const std::string value = params.get<std::string>("objects", "auto");
+  if (value == "auto") return ObjectMode::kAuto;
+  if (value == "all") return ObjectMode::kAll;
+  params.fail("objects", "parameter 'objects' must be 'auto' or 'all', got '" + value + "'");
+}
+
+// Boxes given as [xmin, ymin, zmin, xmax, ymax, zmax] lists.
+std::vector<AxisBox> boxes(const Parameters& params, const std::string& key) {
+  std::vector<AxisBox> out;
+  for (const auto& b : params.get<std::vector<std::vector<double>>>(key, {})) {
+    if (b.size() != 6)
+      params.fail(key, "each of '" + key + "' must be [xmin, ymin, zmin, xmax, ymax, zmax]");
+    out.push_back({Eigen::Vector3d(b[0], b[1], b[2]).cast<float>(),
+                   Eigen::Vector3d(b[3], b[4], b[5]).cast<float>()});
+  }
+  return out;
+}
+
+SceneOptions scene_options(const Parameters& params) {
+  const Parameters p = params.child("scene");
+  SceneOptions o;
+  o.max_planes = integer(p, "max_planes", o.max_planes, 1);
+  o.max_object_height_m =
+      float(number(p, "max_object_height_m", o.max_object_height_m, 0.0, false));
+  o.max_object_size_m = float(number(p, "max_object_size_m", o.max_object_size_m, 0.0, false));
+  o.max_gap_m = float(number(p, "max_gap_m", o.max_gap_m, 0.0, true));
+  o.cluster_tolerance_m =
+      float(number(p, "cluster_tolerance_m", o.cluster_tolerance_m, 0.0, false));
+  o.min_object_points = std::size_t(integer(p, "min_object_points", int(o.min_object_points), 1));
+  if (p.has("up")) o.up = vector3(p, "up", Eigen::Vector3f::UnitZ()).normalized();
+  p.get<std::vector<double>>("up", {});  // known either way
+  o.max_tilt_deg = float(number(p, "max_tilt_deg", o.max_tilt_deg, 0.0, true));
+  o.fixtures = boxes(p, "fixtures");
+  p.reject_unknown();
+  try {
+    o.validate();
+  } catch (const Error& error) {
+    params.fail("scene", error.message());
+  }
+  return o;
+}
+
 }  // namespace
 
 HandSamplingOptions read_sampler_settings(const Parameters& params) {
@@ -131,6 +174,9 @@ HandSamplingOptions read_sampler_settings(const Parameters& params) {
   options.preprocess.workspace = box(params, "workspace");
   options.search = search_parameters(params);
   options.default_view_origin_m = vector3(params, "view_origin", Eigen::Vector3f::Zero());
+  options.objects = object_mode(params);
+  options.scene = scene_options(params);
+  options.max_range_m = float(number(params, "max_range_m", 0.0, 0.0, true));
   params.reject_unknown();
   try {
     options.search.validate();

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
+#include <map>
 #include <numeric>
 #include <optional>
 
@@ -39,6 +41,22 @@ double median_of(const std::vector<double>& values, const std::vector<std::size_
   const auto middle = picked.begin() + static_cast<std::ptrdiff_t>(picked.size() / 2);
   std::nth_element(picked.begin(), middle, picked.end());
   return *middle;
+}
+
+constexpr std::int32_t kAnyObject = -2;
+
+// The object the selection is asked for: `object`, the one nearest `near_m` (-1, none,
+// when the set has no objects), or kAnyObject.
+std::int32_t object_of_interest(const HandSet& set, const SelectionOptions& o) {
+  if (o.object >= 0) return o.object;
+  if (!o.near_m) return kAnyObject;
+  std::int32_t nearest = -1;
+  double best = std::numeric_limits<double>::infinity();
+  for (const SceneObject& object : set.objects) {
+    const double d = (object.centroid_m.cast<double>() - *o.near_m).norm();
+    if (d < best) best = d, nearest = object.id;
+  }
+  return nearest;
 }
 
 double beyond(double value, double free) {
@@ -156,6 +174,17 @@ HandSet ClusterSelector::select(const HandSet& in, const SelectionContext& conte
     return arm_->check(*arm_world, grasp, options_.standoff_m, context.start);
   };
 
+  const std::int32_t target = object_of_interest(in, options_);
+  std::map<std::int32_t, std::size_t> per_object;
+  const auto object_rejection = [&](const Hand& grasp) {
+    if (target != kAnyObject && (target < 0 || grasp.object != target))
+      return Rejection::kOtherObject;
+    if (options_.grasps_per_object > 0 && grasp.object >= 0 &&
+        per_object[grasp.object] >= options_.grasps_per_object)
+      return Rejection::kNotSelected;
+    return Rejection::kNone;
+  };
+
   // The kept grasps first, then the proposals not kept, then the input hands.
   std::vector<Hand> kept, dropped;
   std::vector<std::pair<const Proposal*, bool>> placed;  // proposal, kept?
@@ -166,6 +195,8 @@ HandSet ClusterSelector::select(const HandSet& in, const SelectionContext& conte
     grasp.rejection = Rejection::kNone;
     if (unbalanced(p) && balanced_kept)
       grasp.rejection = Rejection::kUnbalanced;
+    else if (const Rejection why = object_rejection(grasp); why != Rejection::kNone)
+      grasp.rejection = why;
     else if (kept.size() >= options_.max_grasps)
       grasp.rejection = Rejection::kNotSelected;
     else if (!approach_is_free(grasp, g, *in.cloud, options_.standoff_m) || !way_in_seen(grasp))
@@ -173,6 +204,7 @@ HandSet ClusterSelector::select(const HandSet& in, const SelectionContext& conte
     else
       grasp.rejection = arm_rejection(grasp);
     balanced_kept = balanced_kept || (grasp.rejection == Rejection::kNone && !unbalanced(p));
+    if (grasp.rejection == Rejection::kNone) ++per_object[grasp.object];
     placed.emplace_back(&p, grasp.rejection == Rejection::kNone);
     (grasp.rejection == Rejection::kNone ? kept : dropped).push_back(std::move(grasp));
   }
@@ -187,7 +219,7 @@ HandSet ClusterSelector::select(const HandSet& in, const SelectionContext& conte
       hands[m].merged_into = index;
     }
   }
-  HandSet out{in.cloud, std::move(kept), g, in.support};
+  HandSet out{in.cloud, std::move(kept), g, in.support, in.objects};
   out.hands.insert(out.hands.end(), dropped.begin(), dropped.end());
   out.hands.insert(out.hands.end(), hands.begin(), hands.end());
   return out;

@@ -8,7 +8,7 @@ namespace antipode::selectors {
 
 bool similar(const Hand& a, const Hand& b, const ClusterOptions& options) {
   const double cos_max = std::cos(options.angle_deg * M_PI / 180.0);
-  return (a.position_m() - b.position_m()).norm() <= options.distance_m &&
+  return a.object == b.object && (a.position_m() - b.position_m()).norm() <= options.distance_m &&
          a.approach().dot(b.approach()) >= cos_max &&
          std::abs(a.closing().dot(b.closing())) >= cos_max;
 }
@@ -58,6 +58,7 @@ Hand mean_hand(const std::vector<Hand>& hands, const std::vector<std::size_t>& m
   mean.X_FrameHand.linear() = svd.matrixU() * fix * svd.matrixV().transpose();
   mean.X_FrameHand.translation() = position / double(members.size());
   mean.width_m = width;
+  mean.object = seed.object;
   mean.score = score;
   mean.label = seed.label;
   mean.sample_index = seed.sample_index;

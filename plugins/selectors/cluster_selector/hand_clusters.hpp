@@ -14,7 +14,8 @@ struct ClusterOptions {
   double angle_deg = 20.0;   ///< largest angle between approaches and between closing axes
 };
 
-/// True when `a` and `b` belong together: palm-face centres within the distance, approach
+/// True when `a` and `b` belong together: on the same object (Hand::object), palm-face
+/// centres within the distance, approach
 /// directions within the angle, and closing directions within the angle up to their sign
 /// (a parallel gripper turned half a turn about its approach is the same grasp).
 bool similar(const Hand& a, const Hand& b, const ClusterOptions& options);

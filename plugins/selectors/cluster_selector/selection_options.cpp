@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <string>
+#include <vector>
 
 namespace antipode::selectors {
 namespace {
@@ -69,6 +70,16 @@ SelectionOptions read_selection_options(const Parameters& params) {
   o.unseen_is_free = params.get<bool>("unseen_is_free", o.unseen_is_free);
   o.aperture_margin_m = in_range(params, "aperture_margin_m", o.aperture_margin_m, 0.0, 0.1);
   o.width_trim = in_range(params, "width_trim", o.width_trim, 0.0, 0.45);
+  o.grasps_per_object =
+      std::size_t(in_range(params, "grasps_per_object", double(o.grasps_per_object), 0, 1e6));
+  o.object = std::int32_t(in_range(params, "object", double(o.object), -1, 1e6));
+  const auto near = params.get<std::vector<double>>("near_m", {});
+  if (params.has("near_m")) {
+    if (near.size() != 3 || !std::isfinite(near[0] + near[1] + near[2]))
+      params.fail("near_m", "'near_m' must be a point [x, y, z]");
+    if (o.object >= 0) params.fail("near_m", "give either 'object' or 'near_m', not both");
+    o.near_m = Eigen::Vector3d(near[0], near[1], near[2]);
+  }
   o.balance_free_m = in_range(params, "balance_free_m", o.balance_free_m, 0.0, 1.0);
   o.max_torque_arm_m = in_range(params, "max_torque_arm_m", o.max_torque_arm_m, 0.0, 1.0);
   o.object_radius_m = in_range(params, "object_radius_m", o.object_radius_m, 0.01, 2.0);

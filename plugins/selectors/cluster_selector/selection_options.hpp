@@ -2,7 +2,10 @@
 // The parameters of cluster_selector (docs/selection.md).
 
 #include <cstddef>
+#include <cstdint>
 #include <optional>
+
+#include <Eigen/Core>
 
 #include "antipode/core/parameters.hpp"
 #include "arm_reach.hpp"
@@ -48,6 +51,13 @@ struct SelectionOptions {
   /// closing-region points' extent between this quantile and its complement (held_width.hpp);
   /// the wide side on the full extent.
   double width_trim = 0.05;
+  /// With a segmented scene (the hand set's objects): at most this many grasps per object
+  /// (0: no limit), as a clear-the-box policy wants a choice on every object.
+  std::size_t grasps_per_object = 0;
+  /// The object of interest: grasps on others are dropped (kOtherObject). By id (-1: any) or
+  /// as the object whose centroid lies nearest a point (cloud frame).
+  std::int32_t object = -1;
+  std::optional<Eigen::Vector3d> near_m;
   /// Then balance: the penalty is zero while gravity's lever arm about the closing axis
   /// (from the centroid of the object points within `object_radius_m`) is at most this,
   /// and grows quadratically beyond (grasp_balance.hpp).

@@ -33,6 +33,7 @@ enum class Rejection : std::uint8_t {
   kNotSelected,     ///< acceptable, but ranked below the grasps the selector returns
   kUnbalanced,      ///< too far from the object's centre of mass: it would turn out
   kNoIkAtPreGrasp,  ///< IK at the grasp, but none collision-free at the pre-grasp
+  kOtherObject,     ///< on another object than the one the selection was asked for
 };
 
 const char* to_string(HandLabel label);
@@ -53,6 +54,10 @@ struct Hand {
   /// Selection only: for a hand rejected as kClustered, the index (in the selection's hand
   /// list) of the grasp it was merged into; -1 otherwise.
   std::int32_t merged_into = -1;
+  /// The id of the object the hand closes on (the hand set's `objects`: the segment holding
+  /// most of its closing points); -1 when the sampler did not segment the scene or the hand
+  /// holds no object's points.
+  std::int32_t object = -1;
 
   Eigen::Vector3d approach() const { return X_FrameHand.linear().col(0); }
   Eigen::Vector3d closing() const { return X_FrameHand.linear().col(1); }

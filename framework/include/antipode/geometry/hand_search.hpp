@@ -145,6 +145,15 @@ struct HandSearchResult {
   std::optional<SupportPlane> support_plane;
 };
 
+/// What the caller already knows about the scene (see scene_layout.hpp).
+struct SearchScene {
+  /// The support to use; unset: found by the search (SupportPlaneMode::kAuto) or none.
+  std::optional<SupportPlane> support;
+  /// The only points samples are drawn from (indices into the cloud, e.g. the objects'
+  /// points); unset: every point the region and the support allow.
+  std::optional<std::vector<std::int32_t>> sample_points;
+};
+
 /// Runs the hand search on `cloud`, which should already be preprocessed (finite points,
 /// workspace, voxels: see preprocess.hpp). Normals are oriented towards the views in each
 /// point's view mask. A cloud without view masks counts as seen by view 0 alone; a cloud
@@ -152,9 +161,10 @@ struct HandSearchResult {
 /// supplies a configurable origin instead).
 ///
 /// Deterministic: the result depends on the cloud, the parameters (not `threads`) and
-/// `random`'s seed only. Throws antipode::Error for invalid parameters or an empty or invalid
-/// cloud (Cloud::validate); a sample region without points gives no hands (stats.samples 0).
+/// `random`'s seed only (and `scene`). Throws antipode::Error for invalid parameters or an empty or
+/// invalid cloud (Cloud::validate); a sample region without points gives no hands (stats.samples
+/// 0).
 HandSearchResult search_hands(const Cloud& cloud, const HandSearchParameters& parameters,
-                              const RandomStream& random);
+                              const RandomStream& random, const SearchScene& scene = {});
 
 }  // namespace antipode

@@ -9,6 +9,7 @@
 #include "antipode/core/cloud.hpp"
 #include "antipode/core/hand.hpp"
 #include "antipode/core/hand_geometry.hpp"
+#include "antipode/geometry/scene_layout.hpp"
 #include "antipode/geometry/support_plane.hpp"
 
 namespace antipode {
@@ -22,6 +23,9 @@ struct HandSet {
   std::vector<Hand> hands;
   HandGeometry geometry;
   std::optional<SupportPlane> support;
+  /// The objects the sampler found standing on the support (scene_layout.hpp), which the
+  /// hands' `object` ids name; empty when it did not segment the scene.
+  std::vector<SceneObject> objects{};
 };
 
 /// How hand sets travel between behaviour-tree nodes: shared and immutable; a stage that

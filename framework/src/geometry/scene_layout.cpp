@@ -1,0 +1,317 @@
+// The support surface and the objects on it (the contract and the method are in
+// scene_layout.hpp): candidate planes by sequential RANSAC, then the objects standing on
+// each as Euclidean clusters; the support is the candidate that holds the most.
+#include "antipode/geometry/scene_layout.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <iterator>
+#include <optional>
+
+#include <Eigen/Eigenvalues>
+
+#include "antipode/core/error.hpp"
+#include "antipode/geometry/point_index.hpp"
+#include "euclidean_clusters.hpp"
+#include "plane_facing.hpp"
+
+namespace antipode {
+namespace {
+
+// Points that score a RANSAC hypothesis: an even stride of at most this many.
+constexpr std::size_t kMaxScoringPoints = 4096;
+// A support: at most this many points (per inlier) behind it within its extent, and at least
+// this fraction of its inliers on a surface seen face-on (plane_facing.hpp).
+constexpr double kMaxBelowFraction = 0.1;
+constexpr double kMinFacingFraction = 0.6;
+// The spacing of a preprocessed cloud's points (its voxel edge).
+constexpr float kVoxel_m = 0.003f;
+
+struct Candidate {
+  SupportPlane plane;
+  std::vector<std::int32_t> inliers;
+  Eigen::Vector3f e1, e2;  // in-plane directions
+};
+
+using Points = std::vector<Eigen::Vector3f>;
+
+std::vector<std::int32_t> within(const Points& points, const std::vector<std::int32_t>& among,
+                                 const SupportPlane& plane, float distance_m) {
+  std::vector<std::int32_t> out;
+  for (const std::int32_t i : among) {
+    if (std::fabs(plane.distance(points[static_cast<std::size_t>(i)])) <= distance_m)
+      out.push_back(i);
+  }
+  return out;
+}
+
+// The RANSAC plane with the most inliers among an even stride of `among`.
+std::optional<SupportPlane> ransac_plane(const Points& points,
+                                         const std::vector<std::int32_t>& among,
+                                         const SceneOptions& o, RandomStream& random) {
+  const std::size_t stride = (among.size() + kMaxScoringPoints - 1) / kMaxScoringPoints;
+  std::vector<std::int32_t> scoring;
+  for (std::size_t k = 0; k < among.size(); k += stride) scoring.push_back(among[k]);
+  std::optional<SupportPlane> best;
+  std::size_t best_count = 0;
+  for (int iteration = 0; iteration < o.plane_iterations; ++iteration) {
+    const auto pick = [&] {
+      return points[static_cast<std::size_t>(among[random.below(among.size())])];
+    };
+    const Eigen::Vector3f a = pick(), b = pick(), c = pick();
+    const Eigen::Vector3f cross = (b - a).cross(c - a);
+    if (!(cross.norm() > 1e-4f)) continue;
+    SupportPlane plane{cross.normalized(), 0.0f, 0};
+    plane.offset = -plane.normal.dot(a);
+    const std::size_t count = within(points, scoring, plane, o.plane_distance_m).size();
+    if (count > best_count) best = plane, best_count = count;
+  }
+  return best;
+}
+
+// The least-squares plane through `inliers`, with its in-plane directions of spread.
+bool refit(const Points& points, Candidate& candidate) {
+  Eigen::Vector3d mean = Eigen::Vector3d::Zero();
+  for (const std::int32_t i : candidate.inliers) mean += points[std::size_t(i)].cast<double>();
+  mean /= static_cast<double>(candidate.inliers.size());
+  Eigen::Matrix3d scatter = Eigen::Matrix3d::Zero();
+  for (const std::int32_t i : candidate.inliers) {
+    const Eigen::Vector3d d = points[std::size_t(i)].cast<double>() - mean;
+    scatter += d * d.transpose();
+  }
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver(scatter);
+  if (solver.info() != Eigen::Success) return false;
+  Eigen::Vector3f normal = solver.eigenvectors().col(0).cast<float>().normalized();
+  if (normal.dot(candidate.plane.normal) < 0.0f) normal = -normal;
+  candidate.plane.normal = normal;
+  candidate.plane.offset = -normal.dot(mean.cast<float>());
+  candidate.e1 = solver.eigenvectors().col(2).cast<float>();
+  candidate.e2 = normal.cross(candidate.e1);
+  return true;
+}
+
+// The next candidate plane among `remaining` (whose inliers it removes from it).
+std::optional<Candidate> next_plane(const Points& points, std::vector<std::int32_t>& remaining,
+                                    const Eigen::Vector3f& toward_sensor, const SceneOptions& o,
+                                    RandomStream& random) {
+  if (remaining.size() < std::max<std::size_t>(3, o.min_plane_points)) return std::nullopt;
+  const std::optional<SupportPlane> hypothesis = ransac_plane(points, remaining, o, random);
+  if (!hypothesis) return std::nullopt;
+  Candidate candidate{
+      *hypothesis, within(points, remaining, *hypothesis, o.plane_distance_m), {}, {}};
+  if (candidate.inliers.size() < o.min_plane_points || !refit(points, candidate))
+    return std::nullopt;
+  candidate.inliers = within(points, remaining, candidate.plane, o.plane_distance_m);
+  if (candidate.inliers.size() < o.min_plane_points) return std::nullopt;
+  if (candidate.plane.distance(toward_sensor) < 0.0f) {
+    candidate.plane.normal = -candidate.plane.normal,
+    candidate.plane.offset = -candidate.plane.offset;
+    candidate.e2 = -candidate.e2;
+  }
+  candidate.plane.inliers = candidate.inliers.size();
+  std::vector<std::int32_t> rest;
+  std::set_difference(remaining.begin(), remaining.end(), candidate.inliers.begin(),
+                      candidate.inliers.end(), std::back_inserter(rest));
+  remaining = std::move(rest);
+  return candidate;
+}
+
+// Convex hull (counter-clockwise, Andrew's monotone chain) of 2-D points.
+std::vector<Eigen::Vector2f> convex_hull(std::vector<Eigen::Vector2f> p) {
+  std::sort(p.begin(), p.end(), [](const Eigen::Vector2f& a, const Eigen::Vector2f& b) {
+    return a.x() < b.x() || (a.x() == b.x() && a.y() < b.y());
+  });
+  if (p.size() < 3) return p;
+  const auto turn = [](const Eigen::Vector2f& o, const Eigen::Vector2f& a,
+                       const Eigen::Vector2f& b) {
+    return (a - o).x() * (b - o).y() - (a - o).y() * (b - o).x();
+  };
+  std::vector<Eigen::Vector2f> hull(2 * p.size());
+  std::size_t k = 0;
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    while (k >= 2 && turn(hull[k - 2], hull[k - 1], p[i]) <= 0.0f) --k;
+    hull[k++] = p[i];
+  }
+  for (std::size_t i = p.size() - 1, lower = k + 1; i > 0; --i) {
+    while (k >= lower && turn(hull[k - 2], hull[k - 1], p[i - 1]) <= 0.0f) --k;
+    hull[k++] = p[i - 1];
+  }
+  hull.resize(k - 1);
+  return hull;
+}
+
+bool inside(const std::vector<Eigen::Vector2f>& hull, const Eigen::Vector2f& q) {
+  if (hull.size() < 3) return false;
+  for (std::size_t i = 0; i < hull.size(); ++i) {
+    const Eigen::Vector2f& a = hull[i];
+    const Eigen::Vector2f& b = hull[(i + 1) % hull.size()];
+    if ((b - a).x() * (q - a).y() - (b - a).y() * (q - a).x() < 0.0f) return false;
+  }
+  return true;
+}
+
+bool in_fixture(const SceneOptions& o, const Eigen::Vector3f& p) {
+  return std::any_of(o.fixtures.begin(), o.fixtures.end(),
+                     [&](const AxisBox& box) { return box.contains(p); });
+}
+
+// The plane's extent: the largest connected patch of its inliers (an even subset of at most
+// kMaxPatchPoints, joined by steps of a few times their spacing). A plane through a table
+// top also passes through a strip of the wall behind and of every object at that height;
+// those strips are not the surface the objects stand on.
+constexpr std::size_t kMaxPatchPoints = 8192;
+
+std::vector<std::int32_t> largest_patch(const Points& points,
+                                        const std::vector<std::int32_t>& inliers, float voxel_m) {
+  const std::size_t stride = (inliers.size() + kMaxPatchPoints - 1) / kMaxPatchPoints;
+  std::vector<std::int32_t> subset;
+  for (std::size_t k = 0; k < inliers.size(); k += stride) subset.push_back(inliers[k]);
+  const float tolerance = std::max(0.02f, 3.0f * std::sqrt(float(stride)) * voxel_m);
+  std::vector<std::int32_t> best;
+  for (auto& patch : geometry::euclidean_clusters(points, subset, tolerance)) {
+    if (patch.size() > best.size()) best = std::move(patch);
+  }
+  return best;
+}
+
+// The objects standing on `c`: clusters of the points above it within its extent's footprint.
+std::vector<SceneObject> objects_on(const Points& points, const Candidate& c,
+                                    const SceneOptions& o) {
+  const auto flat = [&](const Eigen::Vector3f& p) {
+    return Eigen::Vector2f(c.e1.dot(p), c.e2.dot(p));
+  };
+  std::vector<Eigen::Vector2f> footprint;
+  for (const std::int32_t i : largest_patch(points, c.inliers, kVoxel_m))
+    footprint.push_back(flat(points[std::size_t(i)]));
+  const std::vector<Eigen::Vector2f> hull = convex_hull(std::move(footprint));
+  std::vector<std::int32_t> above;
+  std::size_t below = 0;
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    const float h = c.plane.distance(points[i]);
+    if (std::fabs(h) <= o.plane_distance_m || std::fabs(h) > o.max_object_height_m ||
+        !inside(hull, flat(points[i])))
+      continue;
+    if (h < 0.0f)
+      ++below;
+    else if (!in_fixture(o, points[i]))
+      above.push_back(static_cast<std::int32_t>(i));
+  }
+  std::vector<SceneObject> objects;
+  // A support has little behind it within its extent: a plane through an object has the
+  // object's far part there.
+  if (static_cast<double>(below) > kMaxBelowFraction * static_cast<double>(c.inliers.size()))
+    return objects;
+  for (auto& cluster : geometry::euclidean_clusters(points, above, o.cluster_tolerance_m)) {
+    if (cluster.size() < o.min_object_points) continue;
+    SceneObject object;
+    object.min_m = object.max_m = points[std::size_t(cluster.front())];
+    Eigen::Vector2f lo = flat(object.min_m), hi = lo;
+    float low = o.max_object_height_m;
+    Eigen::Vector3d sum = Eigen::Vector3d::Zero();
+    for (const std::int32_t i : cluster) {
+      const Eigen::Vector3f& p = points[std::size_t(i)];
+      object.min_m = object.min_m.cwiseMin(p), object.max_m = object.max_m.cwiseMax(p);
+      lo = lo.cwiseMin(flat(p)), hi = hi.cwiseMax(flat(p));
+      low = std::min(low, c.plane.distance(p));
+      object.height_m = std::max(object.height_m, c.plane.distance(p));
+      sum += p.cast<double>();
+    }
+    const bool standing = low <= o.max_gap_m;
+    const bool cut = object.height_m > o.max_object_height_m - 0.01f;
+    if (!standing || cut || (hi - lo).maxCoeff() > o.max_object_size_m) continue;
+    object.centroid_m = (sum / static_cast<double>(cluster.size())).cast<float>();
+    object.id = static_cast<std::int32_t>(objects.size());
+    object.points = std::move(cluster);
+    objects.push_back(std::move(object));
+  }
+  return objects;
+}
+
+std::size_t point_count(const std::vector<SceneObject>& objects) {
+  std::size_t n = 0;
+  for (const SceneObject& object : objects) n += object.points.size();
+  return n;
+}
+
+}  // namespace
+
+void SceneOptions::validate() const {
+  const auto require = [](bool ok, const std::string& what) {
+    if (!ok) throw Error("scene: " + what);
+  };
+  require(max_planes >= 1 && max_planes <= 20, "max_planes must be in 1..20");
+  require(min_plane_points >= 3, "min_plane_points must be at least 3");
+  require(plane_distance_m > 0.0f && plane_distance_m < 0.1f,
+          "plane_distance_m must be in (0, 0.1)");
+  require(plane_iterations >= 1 && plane_iterations <= 100000,
+          "plane_iterations must be in 1..100000");
+  require(max_object_height_m > plane_distance_m + 0.01f && max_object_height_m <= 5.0f,
+          "max_object_height_m must be above plane_distance_m + 0.01 and at most 5");
+  require(max_object_size_m > 0.0f && max_object_size_m <= 10.0f,
+          "max_object_size_m must be in (0, 10]");
+  require(max_gap_m >= 0.0f && max_gap_m < max_object_height_m,
+          "max_gap_m must be in [0, max_object_height_m)");
+  require(cluster_tolerance_m > 0.0f && cluster_tolerance_m < 0.1f,
+          "cluster_tolerance_m must be in (0, 0.1)");
+  require(min_object_points >= 1, "min_object_points must be at least 1");
+  require(!up || (up->allFinite() && std::fabs(up->norm() - 1.0f) < 1e-3f),
+          "up must be a unit vector");
+  require(max_tilt_deg >= 0.0f && max_tilt_deg <= 90.0f, "max_tilt_deg must be in [0, 90]");
+  for (const AxisBox& box : fixtures) box.validate("scene fixture");
+}
+
+std::string SceneLayout::summary() const {
+  if (!support) return "no support surface: the whole cloud is used";
+  char line[200];
+  std::snprintf(line, sizeof line,
+                "support plane %.3f x + %.3f y + %.3f z + %.3f = 0 (%zu points), %zu object%s",
+                double(support->normal.x()), double(support->normal.y()),
+                double(support->normal.z()), double(support->offset), support->inliers,
+                objects.size(), objects.size() == 1 ? "" : "s");
+  std::string text = line;
+  for (const SceneObject& o : objects) {
+    const Eigen::Vector3f size = (o.max_m - o.min_m) * 100.0f;
+    std::snprintf(line, sizeof line,
+                  "%s #%d: %zu points, %.1f x %.1f x %.1f cm at (%.3f, %.3f, %.3f)",
+                  o.id == 0 ? ":" : ";", o.id, o.points.size(), double(size.x()), double(size.y()),
+                  double(size.z()), double(o.centroid_m.x()), double(o.centroid_m.y()),
+                  double(o.centroid_m.z()));
+    text += line;
+  }
+  return text;
+}
+
+SceneLayout find_scene_layout(const Cloud& cloud, const Eigen::Vector3f& toward_sensor,
+                              const SceneOptions& options, RandomStream random) {
+  options.validate();
+  SceneLayout layout;
+  layout.object_of_point.assign(cloud.size(), -1);
+  std::vector<std::int32_t> remaining(cloud.size());
+  for (std::size_t i = 0; i < cloud.size(); ++i) remaining[i] = static_cast<std::int32_t>(i);
+  const float min_cosine = std::cos(options.max_tilt_deg * float(M_PI) / 180.0f);
+  const PointIndex index(cloud.points_m);
+  std::size_t best_points = 0, best_inliers = 0;
+  for (int k = 0; k < options.max_planes; ++k) {
+    const std::optional<Candidate> c =
+        next_plane(cloud.points_m, remaining, toward_sensor, options, random);
+    if (!c) break;
+    ++layout.planes;
+    if (options.up && c->plane.normal.dot(*options.up) < min_cosine) continue;
+    if (geometry::facing_fraction(cloud.points_m, index, c->inliers, c->plane) < kMinFacingFraction)
+      continue;
+    std::vector<SceneObject> objects = objects_on(cloud.points_m, *c, options);
+    const std::size_t n = point_count(objects);
+    if (n == 0 || n < best_points || (n == best_points && c->inliers.size() <= best_inliers))
+      continue;
+    best_points = n, best_inliers = c->inliers.size();
+    layout.support = c->plane;
+    layout.objects = std::move(objects);
+  }
+  for (const SceneObject& object : layout.objects) {
+    for (const std::int32_t i : object.points) layout.object_of_point[std::size_t(i)] = object.id;
+  }
+  return layout;
+}
+
+}  // namespace antipode

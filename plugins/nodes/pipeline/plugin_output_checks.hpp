@@ -1,0 +1,35 @@
+#pragma once
+// What the pipeline nodes check of a plugin's output before passing it on. A third-party
+// sampler, selector or planner that returns something broken (a pose with NaNs, a hand in
+// another frame, a grasp made of nothing it was given, a trajectory whose waypoints do not
+// match its joints) fails its node with one of these reasons instead of sending the broken
+// value down the tree, where it would surface far from its cause or move the robot.
+// Each function returns "" when nothing is wrong.
+
+#include <string>
+
+#include "antipode/core/hand.hpp"
+#include "antipode/core/trajectory.hpp"
+#include "antipode/interfaces/hand_set.hpp"
+
+namespace antipode::pipeline {
+
+/// The pose of `hand` (named `which` in the reason, e.g. "hand 3"): finite, its rotation
+/// orthonormal and right-handed (within 1e-6).
+std::string pose_problem(const Hand& hand, const std::string& which);
+
+/// A sampler's result: a cloud when there are hands, every hand in that cloud's frame with a
+/// valid pose, a finite width and closing points inside the cloud.
+std::string sampling_problem(const HandSet& hands);
+
+/// A selector's result for `given`: the same cloud, and every grasp (the leading hands
+/// without a rejection) in its frame with a valid pose, placed within the bounding box of the
+/// candidates it was given (hands without a rejection labelled positive or unknown; 1 mm
+/// slack): a grasp is one of them or a mean of some.
+std::string selection_problem(const HandSet& given, const HandSet& selection);
+
+/// A planner's solved result: a finite final pose, and a trajectory with at least one
+/// waypoint, one position per joint in each, finite values and non-decreasing times.
+std::string plan_problem(const Eigen::Isometry3d& X_BaseHand, const Trajectory& trajectory);
+
+}  // namespace antipode::pipeline
