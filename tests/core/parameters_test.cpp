@@ -31,6 +31,20 @@ TEST(ParametersTest, UnknownKeyIsLocatedAndSuggested) {
   }
 }
 
+// Found by fuzzing scene files: a key that is a list or a mapping is an error, not a crash.
+TEST(ParametersTest, AKeyThatIsNotANameIsALocatedError) {
+  const Parameters params = parse("samples: 1\n[a, b]: 2");
+  params.get<int>("samples", 0);
+  try {
+    params.reject_unknown();
+    FAIL() << "expected an error";
+  } catch (const Error& error) {
+    EXPECT_STREQ(error.what(),
+                 "trees/t.yaml:2:1: a parameter of component 'sampler' is named by a list or a "
+                 "mapping, not a name");
+  }
+}
+
 TEST(ParametersTest, BadTypeAndMissingKeyAreClearErrors) {
   const Parameters params = parse("samples: many");
   try {

@@ -189,6 +189,20 @@ TEST(MalformedCloudTest, EmptyAndNonFiniteClouds) {
   expect_error(dir.file("nan_ascii.pcd"), "no finite point");
 }
 
+// Found by fuzzing: PCL's PLY reader aborts on a list among the vertex properties.
+TEST(MalformedCloudTest, AListAmongTheVertexPropertiesIsAnError) {
+  TempDir dir;
+  for (const char* format : {"ascii", "binary_little_endian"}) {
+    write_bytes(dir.file("list.ply"),
+                std::string("ply\nformat ") + format +
+                    " 1.0\nelement vertex 1\nproperty float x\nproperty float y\n"
+                    "property float z\nproperty list uchar int ids\nend_header\n" +
+                    (std::string(format) == "ascii" ? std::string("0 0 1 1 7\n")
+                                                   : std::string(17, '\1')));
+    expect_error(dir.file("list.ply"), "the PLY vertices have a list property ('ids')");
+  }
+}
+
 TEST(MalformedCloudTest, TruncatedAndHeaderlessPly) {
   TempDir dir;
   pcl::io::savePLYFileBinary(dir.file("b.ply"), cloud_of(300));
@@ -205,20 +219,20 @@ TEST(MalformedCloudTest, BinaryPlyListsMustFitTheFile) {
   TempDir dir;
   const std::string header =
       "ply\nformat binary_little_endian 1.0\nelement vertex 2\nproperty float x\n"
-      "property float y\nproperty float z\nproperty list uchar int extra\nend_header\n";
-  const auto record = [](float x, unsigned char items) {
-    std::string bytes(12, '\0');
-    const float xyz[3] = {x, 0.5f, 1.0f};
-    std::memcpy(bytes.data(), xyz, 12);
-    bytes += char(items);
-    return bytes + std::string(4 * std::size_t(items), '\0');
+      "property float y\nproperty float z\nelement face 2\nproperty list uchar int extra\n"
+      "end_header\n";
+  std::string vertices(24, '\0');
+  const float xyz[6] = {0.1f, 0.5f, 1.0f, 0.2f, 0.5f, 1.0f};
+  std::memcpy(vertices.data(), xyz, 24);
+  const auto face = [](unsigned char items) {
+    return std::string(1, char(items)) + std::string(4 * std::size_t(items), '\0');
   };
-  write_bytes(dir.file("good.ply"), header + record(0.1f, 1) + record(0.2f, 0));
+  write_bytes(dir.file("good.ply"), header + vertices + face(1) + face(0));
   EXPECT_EQ(load_cloud(dir.file("good.ply")).size(), 2u);
-  std::string bad = header + record(0.1f, 1) + record(0.2f, 0);
-  bad[header.size() + 12] = char(200);  // the first list claims 200 ints
+  std::string bad = header + vertices + face(1) + face(0);
+  bad[header.size() + 24] = char(200);  // the first list claims 200 ints
   write_bytes(dir.file("bad.ply"), bad);
-  expect_error(dir.file("bad.ply"), "the list 'extra' of element 'vertex' record 0 declares 200");
+  expect_error(dir.file("bad.ply"), "the list 'extra' of element 'face' record 0 declares 200");
 }
 
 }  // namespace

@@ -25,7 +25,14 @@ void Parameters::reject_unknown() const {
   if (!node_.IsMap()) return;
   const std::vector<std::string> known(asked_.begin(), asked_.end());
   for (const auto& entry : node_) {
-    const auto key = entry.first.as<std::string>();
+    if (!entry.first.IsScalar()) {
+      const YAML::Mark mark = entry.first.Mark();
+      throw Error("a parameter of " + owner_ + " is named by a list or a mapping, not a name",
+                  file_.empty() || mark.is_null()
+                      ? SourceLocation{}
+                      : SourceLocation{file_, mark.line + 1, mark.column + 1});
+    }
+    const auto key = entry.first.Scalar();
     if (asked_.count(key) == 0) {
       fail(key, "unknown parameter '" + key + "' of " + owner_ + did_you_mean(key, known));
     }

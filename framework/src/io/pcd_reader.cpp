@@ -1,39 +1,79 @@
-// PCD files: the header is parsed and checked here, ascii data is parsed here, and binary or
-// binary_compressed data is handed to PCL only once its size matches the header (PCL
-// crashes on some malformed headers and allocates whatever POINTS declares before noticing
-// a short file).
-#include <pcl/io/pcd_io.h>
+// PCD files: the header is parsed and checked here, and the data decoded here in every
+// encoding, once its size matches the header. PCL's reader is not used: it parses the header
+// again, its own way, and a header that this parser accepts can make PCL's allocate
+// terabytes or crash (found by fuzzing: tests/fuzz/corpus/cloud). Only PCL's LZF decoder is
+// used, on a buffer whose sizes are checked first.
+#include <pcl/io/lzf.h>
+
+#include <cstdint>
+#include <cstring>
 
 #include "antipode/core/error.hpp"
 #include "pcd_ascii.hpp"
 #include "pcd_header.hpp"
-#include "pcl_blob.hpp"
 #include "raw_points.hpp"
 
 namespace antipode::io {
 namespace {
 
-std::vector<Eigen::Vector3f> read_binary_with_pcl(const std::string& path,
-                                                  const PcdHeader& header) {
-  silence_pcl_console();
-  pcl::PCLPointCloud2 blob;
-  Eigen::Vector4f origin;
-  Eigen::Quaternionf orientation;
-  int version = 0;
-  pcl::PCDReader reader;
-  if (reader.read(path, blob, origin, orientation, version, 0) < 0) {
-    throw Error(std::string("corrupt PCD file: its ") +
-                    (header.data == PcdData::kBinary ? "binary" : "compressed") +
-                    " data cannot be decoded",
-                {path});
+template <typename T>
+float load_as_float(const char* at) {
+  T value;
+  std::memcpy(&value, at, sizeof(T));
+  return static_cast<float>(value);
+}
+
+// The first value of `field` stored at `at`, as a float.
+float value_at(const char* at, const PcdField& field) {
+  switch (field.type) {
+    case 'F':
+      return field.size == 8 ? load_as_float<double>(at) : load_as_float<float>(at);
+    case 'I':
+      switch (field.size) {
+        case 1: return load_as_float<std::int8_t>(at);
+        case 2: return load_as_float<std::int16_t>(at);
+        case 4: return load_as_float<std::int32_t>(at);
+        default: return load_as_float<std::int64_t>(at);
+      }
+    default:
+      switch (field.size) {
+        case 1: return load_as_float<std::uint8_t>(at);
+        case 2: return load_as_float<std::uint16_t>(at);
+        case 4: return load_as_float<std::uint32_t>(at);
+        default: return load_as_float<std::uint64_t>(at);
+      }
   }
-  if (static_cast<std::uint64_t>(blob.width) * blob.height != header.points) {
-    throw Error("corrupt PCD file: the data decodes to " +
-                    std::to_string(static_cast<std::uint64_t>(blob.width) * blob.height) +
-                    " points, the header declares " + std::to_string(header.points),
-                {path});
+}
+
+// x, y, z of every point in `data`: records of point_step bytes (binary), or one block per
+// field holding that field for every point (binary_compressed, once unpacked).
+std::vector<Eigen::Vector3f> decode(const char* data, const PcdHeader& header, bool by_field) {
+  const PcdField* axes[3] = {header.field("x"), header.field("y"), header.field("z")};
+  std::vector<Eigen::Vector3f> points(header.points);
+  for (int a = 0; a < 3; ++a) {
+    const PcdField& f = *axes[a];
+    for (std::size_t i = 0; i < header.points; ++i) {
+      const std::size_t at = by_field ? f.offset * header.points + i * f.size * f.count
+                                      : i * header.point_step + f.offset;
+      points[i][a] = value_at(data + at, f);
+    }
   }
-  return coordinates_of(path, blob);
+  return points;
+}
+
+std::vector<Eigen::Vector3f> read_compressed(const std::string& path, const std::string& bytes,
+                                             const PcdHeader& header) {
+  // check_pcd_data_size() has checked both size fields against the header and the file.
+  std::uint32_t compressed = 0;
+  std::memcpy(&compressed, bytes.data() + header.data_offset, 4);
+  std::vector<char> unpacked(header.points * header.point_step);
+  const unsigned int size = pcl::lzfDecompress(bytes.data() + header.data_offset + 8, compressed,
+                                               unpacked.data(),
+                                               static_cast<unsigned int>(unpacked.size()));
+  if (size != unpacked.size()) {
+    throw Error("corrupt PCD file: its compressed data cannot be decoded", {path});
+  }
+  return decode(unpacked.data(), header, true);
 }
 
 }  // namespace
@@ -44,8 +84,17 @@ RawPoints read_pcd(const std::string& path, const std::string& bytes) {
   RawPoints raw;
   raw.origin_m = header.viewpoint_m;
   if (header.points == 0) return raw;
-  raw.points_m = header.data == PcdData::kAscii ? read_pcd_ascii_points(path, bytes, header)
-                                                : read_binary_with_pcl(path, header);
+  switch (header.data) {
+    case PcdData::kAscii:
+      raw.points_m = read_pcd_ascii_points(path, bytes, header);
+      break;
+    case PcdData::kBinary:
+      raw.points_m = decode(bytes.data() + header.data_offset, header, false);
+      break;
+    case PcdData::kBinaryCompressed:
+      raw.points_m = read_compressed(path, bytes, header);
+      break;
+  }
   return raw;
 }
 

@@ -134,6 +134,14 @@ void check_ply(const std::string& path, const std::string& bytes, const PlyHeade
     needed += element.count * (header.ascii ? element.values : element.min_record_bytes);
   }
   if (vertex == nullptr) throw Error("the PLY file has no vertex element", {path});
+  // PCL's reader aborts the process on a list among the vertex properties (found by
+  // fuzzing: tests/fuzz/corpus/cloud/ply-vertex-list); a vertex is a point here.
+  for (const auto& property : vertex->properties) {
+    if (property.item_size != 0)
+      throw Error("the PLY vertices have a list property ('" + property.name +
+                      "'): a vertex must hold only numbers",
+                  {path});
+  }
   for (const char* name : {"x", "y", "z"}) {
     bool found = false;
     for (const auto& property : vertex->properties) found = found || property.name == name;

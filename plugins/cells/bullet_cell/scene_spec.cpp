@@ -239,9 +239,11 @@ SceneSpec parse_scene(const Parameters& p) {
                                  " random objects; at most 100 in all");
   if (p.has("cameras")) {
     const Parameters cams = p.child("cameras");
-    for (const auto& item : cams.yaml())
-      s.cameras.push_back(
-          parse_camera(item.first.as<std::string>(), cams.child(item.first.as<std::string>())));
+    if (!cams.yaml().IsMap()) p.fail("cameras", "'cameras' must map camera names to cameras");
+    for (const auto& item : cams.yaml()) {
+      if (!item.first.IsScalar()) p.fail("cameras", "'cameras' must map camera names to cameras");
+      s.cameras.push_back(parse_camera(item.first.Scalar(), cams.child(item.first.Scalar())));
+    }
   } else {
     s.cameras = default_cameras(s.table);
   }
