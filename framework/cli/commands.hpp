@@ -66,6 +66,10 @@ int train_command(const TrainOptions& options);
 int eval_classifier_command(const EvalOptions& options);
 int validate_command(const std::string& tree_path);
 int plugins_command();
+/// `antipode plugins --check LIB`: loads `library` alone and prints its name, version, the
+/// plugin ABI it was built for and what it provides (exit 0), or exactly why it cannot be
+/// loaded - a missing symbol demangled, an ABI mismatch (one error line, exit 2).
+int check_plugin_command(const std::string& library);
 /// Lists every node type, or (when `type` is not empty) the ports of one.
 int nodes_command(const std::string& type);
 

@@ -30,6 +30,7 @@ constexpr const char* kExamples = R"(Examples:
   antipode train --out my.model --dataset examples.data
   antipode eval-classifier --model my.model --report eval.json
   antipode plugins
+  antipode plugins --check build/plugins/libantipode_my_sampler.so
   antipode nodes
   antipode nodes CollectExamples
 
@@ -48,7 +49,8 @@ struct Commands {
   antipode::cli::BenchMergeOptions merge;
   antipode::cli::ReportOptions report;
   std::string validate_path;
-  std::string node_type;  ///< `antipode nodes [TYPE]`
+  std::string node_type;      ///< `antipode nodes [TYPE]`
+  std::string check_library;  ///< `antipode plugins --check LIB`
 };
 
 // A seed: a whole number in 0 .. 2^64-1, written in digits (CLI11 alone takes "-1" as
@@ -251,7 +253,11 @@ int dispatch(const CLI::App& app, const Commands& commands) {
     return antipode::cli::bench_isolation_command(commands.isolation);
   }
   if (app.got_subcommand("report")) return antipode::cli::report_command(commands.report);
-  if (app.got_subcommand("plugins")) return antipode::cli::plugins_command();
+  if (app.got_subcommand("plugins")) {
+    return commands.check_library.empty()
+               ? antipode::cli::plugins_command()
+               : antipode::cli::check_plugin_command(commands.check_library);
+  }
   if (app.got_subcommand("nodes")) return antipode::cli::nodes_command(commands.node_type);
   std::cout << app.help();
   return antipode::cli::kExitInvalidInput;
@@ -274,7 +280,11 @@ int main(int argc, char** argv) {
   add_report(app, commands.report);
   CLI::App* validate = app.add_subcommand("validate", "Check a tree file without running it");
   validate->add_option("tree", commands.validate_path, "YAML tree file")->required();
-  app.add_subcommand("plugins", "List plugin libraries found, loaded and refused, and why");
+  CLI::App* plugins =
+      app.add_subcommand("plugins", "List plugin libraries found, loaded and refused, and why");
+  plugins->add_option("--check", commands.check_library,
+                      "Load one library and report its descriptor, ABI and types, or why it "
+                      "cannot load");
   CLI::App* nodes =
       app.add_subcommand("nodes", "List the node types trees can use, or one's ports");
   nodes->add_option("type", commands.node_type, "A node type, e.g. SampleHands");

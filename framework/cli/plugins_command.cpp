@@ -1,5 +1,9 @@
 #include <iostream>
+#include <string>
+#include <vector>
 
+#include "antipode/plugin/abi.hpp"
+#include "antipode/plugin/plugin_host.hpp"
 #include "commands.hpp"
 #include "exit_codes.hpp"
 #include "session.hpp"
@@ -21,6 +25,20 @@ int plugins_command() {
       std::cout << "    " << record.reason << "\n";
     }
   }
+  return kExitSuccess;
+}
+
+int check_plugin_command(const std::string& library) {
+  PluginHost host(std::vector<std::string>{});
+  const PluginRecord& record = host.load_library(library);
+  if (record.state != PluginRecord::State::kLoaded) {
+    std::cerr << "antipode: error: " << library << ": cannot be loaded: " << record.reason << "\n";
+    return kExitInvalidInput;
+  }
+  std::cout << library << ": loads\n"
+            << "  " << record.name << " " << record.version << ", plugin ABI " << record.abi
+            << " (this antipode: " << kAbiMajor << "." << kAbiMinor << ")\n";
+  for (const auto& offer : record.offers) std::cout << "  provides " << offer << "\n";
   return kExitSuccess;
 }
 

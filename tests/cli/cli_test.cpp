@@ -207,6 +207,27 @@ TEST_F(CliTest, UnknownNodeMentionsRefusedPlugins) {
       << result.out;
 }
 
+TEST_F(CliTest, PluginsCheckReportsOneLibraryOrWhyItCannotLoad) {
+  Result result =
+      run("plugins --check " + std::string(FIXTURE_DIR) + "/good/libantipode_test_fixtures.so");
+  EXPECT_EQ(result.exit_code, 0) << result.out;
+  EXPECT_NE(result.out.find("test_fixtures 1.2.3, plugin ABI "), std::string::npos) << result.out;
+  EXPECT_NE(result.out.find("provides sampler point_sampler"), std::string::npos) << result.out;
+  const std::string broken = std::string(FIXTURE_DIR) + "/bad/libantipode_undefined_symbol.so";
+  result = run("plugins --check " + broken);
+  EXPECT_EQ(result.exit_code, 2) << result.out;
+  EXPECT_EQ(result.out.rfind("antipode: error: " + broken + ": cannot be loaded: ", 0), 0u)
+      << result.out;
+  EXPECT_NE(
+      result.out.find("undefined symbol: antipode::missing::function_that_does_not_exist(int)"),
+      std::string::npos)
+      << result.out;
+  EXPECT_EQ(std::count(result.out.begin(), result.out.end(), '\n'), 1) << result.out;
+  result = run("plugins --check " + std::string(FIXTURE_DIR) + "/bad/libantipode_wrong_abi.so");
+  EXPECT_EQ(result.exit_code, 2) << result.out;
+  EXPECT_NE(result.out.find("ABI"), std::string::npos) << result.out;
+}
+
 TEST_F(CliTest, PluginsListsLoadedAndRefusedLibrariesWithReasons) {
   const Result result = run("plugins", "ANTIPODE_PLUGIN_PATH=" + std::string(FIXTURE_DIR) +
                                            "/good:" + std::string(FIXTURE_DIR) + "/bad");
@@ -214,8 +235,10 @@ TEST_F(CliTest, PluginsListsLoadedAndRefusedLibrariesWithReasons) {
   EXPECT_NE(result.out.find("test_fixtures 1.2.3"), std::string::npos) << result.out;
   EXPECT_NE(result.out.find("provides node CountTicks"), std::string::npos);
   EXPECT_NE(result.out.find("but this antipode provides ABI"), std::string::npos);
-  EXPECT_NE(result.out.find("undefined symbol: antipode_function_that_does_not_exist"),
-            std::string::npos);
+  EXPECT_NE(
+      result.out.find("undefined symbol: antipode::missing::function_that_does_not_exist(int) "
+                      "[_ZN8antipode7missing28function_that_does_not_existEi]"),
+      std::string::npos);
   EXPECT_NE(result.out.find("type 'point_sampler' is already provided by"), std::string::npos);
 }
 

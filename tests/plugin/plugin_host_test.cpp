@@ -132,7 +132,9 @@ TEST(PluginHostTest, UndefinedSymbolIsRefusedWithDlerrorText) {
   PluginHost host(std::vector<std::string>{});
   const PluginRecord& record = host.load_library(bad("undefined_symbol"));
   EXPECT_EQ(record.state, PluginRecord::State::kRefused);
-  EXPECT_TRUE(contains(record.reason, "undefined symbol: antipode_function_that_does_not_exist"))
+  EXPECT_TRUE(contains(record.reason,
+                       "undefined symbol: antipode::missing::function_that_does_not_exist(int) "
+                       "[_ZN8antipode7missing28function_that_does_not_existEi]"))
       << record.reason;
 }
 

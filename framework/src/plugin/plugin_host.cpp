@@ -10,6 +10,7 @@
 
 #include "antipode/config.hpp"
 #include "antipode/core/error.hpp"
+#include "dl_error.hpp"
 #include "elf_check.hpp"
 #include "plugin_kind.hpp"
 
@@ -117,6 +118,7 @@ void PluginHost::load_search_path() {
                             "shadowed by " + winner->second,
                             "",
                             "",
+                            "",
                             {}});
       }
     }
@@ -158,7 +160,7 @@ std::string PluginHost::refuse_reason(const PluginDescriptor& descriptor) const 
 }
 
 const PluginRecord& PluginHost::load_library(const std::string& path) {
-  PluginRecord record{path, PluginRecord::State::kRefused, "", "", "", {}};
+  PluginRecord record{path, PluginRecord::State::kRefused, "", "", "", "", {}};
   if (std::string problem = detail::elf_problem(path); !problem.empty()) {
     record.reason = std::move(problem);
     records_.push_back(std::move(record));
@@ -168,7 +170,7 @@ const PluginRecord& PluginHost::load_library(const std::string& path) {
   void* handle = dlopen(path.c_str(), RTLD_NOW | RTLD_LOCAL);
   if (handle == nullptr) {
     const char* text = dlerror();
-    record.reason = text != nullptr ? text : "dlopen failed";
+    record.reason = text != nullptr ? detail::readable_dl_error(text) : "dlopen failed";
     records_.push_back(std::move(record));
     return records_.back();
   }
@@ -185,6 +187,10 @@ const PluginRecord& PluginHost::load_library(const std::string& path) {
   }
   const auto entry = reinterpret_cast<antipode_plugin_entry_fn>(symbol);
   const PluginDescriptor* descriptor = entry();
+  if (descriptor != nullptr) {
+    record.abi =
+        std::to_string(descriptor->abi_major) + "." + std::to_string(descriptor->abi_minor);
+  }
   record.reason =
       descriptor == nullptr ? "entry symbol returned no descriptor" : refuse_reason(*descriptor);
   if (!record.reason.empty()) {

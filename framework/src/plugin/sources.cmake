@@ -1,4 +1,5 @@
 list(APPEND ANTIPODE_SOURCES
+  ${CMAKE_CURRENT_LIST_DIR}/dl_error.cpp
   ${CMAKE_CURRENT_LIST_DIR}/elf_check.cpp
   ${CMAKE_CURRENT_LIST_DIR}/plugin_host.cpp
   ${CMAKE_CURRENT_LIST_DIR}/plugin_kind.cpp

@@ -33,6 +33,7 @@ struct PluginRecord {
   std::string reason;               ///< why refused or shadowed; empty when loaded
   std::string name;                 ///< from the descriptor, when it could be read
   std::string version;              ///< from the descriptor, when it could be read
+  std::string abi;                  ///< "major.minor" it was built for, when it could be read
   std::vector<std::string> offers;  ///< "kind type" for each factory of a loaded library
 };
 
