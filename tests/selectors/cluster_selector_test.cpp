@@ -281,6 +281,8 @@ TEST_F(ClusterSelectorTest, GraspsPerObjectAndAnObjectOfInterest) {
   EXPECT_EQ(none.hands[0].rejection, Rejection::kOtherObject);
   EXPECT_EQ(creation_error(base + "object: 1\nnear_m: [0, 0, 0]"),
             "tree.yaml:5:1: give either 'object' or 'near_m', not both");
+  EXPECT_EQ(creation_error(base + "object: 1.5"),
+            "tree.yaml:4:1: parameter 'object' must be a whole number, got 1.500000");
 }
 
 // A hand approaching along +x at height z, its closing direction turned `tilt_deg` from

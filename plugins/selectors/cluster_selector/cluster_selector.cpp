@@ -188,12 +188,18 @@ HandSet ClusterSelector::select(const HandSet& in, const SelectionContext& conte
   // The kept grasps first, then the proposals not kept, then the input hands.
   std::vector<Hand> kept, dropped;
   std::vector<std::pair<const Proposal*, bool>> placed;  // proposal, kept?
+  // Whether a balanced grasp was kept: in all, or per object when grasps are chosen per
+  // object (an object whose only grasps are unbalanced still gets one).
   bool balanced_kept = false;
+  std::map<std::int32_t, bool> balanced_on;
+  const auto balanced_before = [&](const Hand& grasp) {
+    return options_.grasps_per_object > 0 ? balanced_on[grasp.object] : balanced_kept;
+  };
   for (const Proposal& p : proposals) {
     context.stop.throw_if_stop_requested("cluster_selector");
     Hand grasp = p.grasp;
     grasp.rejection = Rejection::kNone;
-    if (unbalanced(p) && balanced_kept)
+    if (unbalanced(p) && balanced_before(grasp))
       grasp.rejection = Rejection::kUnbalanced;
     else if (const Rejection why = object_rejection(grasp); why != Rejection::kNone)
       grasp.rejection = why;
@@ -203,7 +209,8 @@ HandSet ClusterSelector::select(const HandSet& in, const SelectionContext& conte
       grasp.rejection = Rejection::kInCollision;
     else
       grasp.rejection = arm_rejection(grasp);
-    balanced_kept = balanced_kept || (grasp.rejection == Rejection::kNone && !unbalanced(p));
+    if (grasp.rejection == Rejection::kNone && !unbalanced(p))
+      balanced_kept = balanced_on[grasp.object] = true;
     if (grasp.rejection == Rejection::kNone) ++per_object[grasp.object];
     placed.emplace_back(&p, grasp.rejection == Rejection::kNone);
     (grasp.rejection == Rejection::kNone ? kept : dropped).push_back(std::move(grasp));

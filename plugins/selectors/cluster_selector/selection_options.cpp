@@ -24,6 +24,16 @@ double in_range(const Parameters& params, const std::string& key, double fallbac
   return value;
 }
 
+// A whole number in [lo, hi] (a count or an id: 1.5 is an error, not 1).
+double whole(const Parameters& params, const std::string& key, double fallback, double lo,
+             double hi) {
+  const double value = in_range(params, key, fallback, lo, hi);
+  if (value != std::floor(value))
+    params.fail(key,
+                "parameter '" + key + "' must be a whole number, got " + std::to_string(value));
+  return value;
+}
+
 Eigen::Vector2d pair_at(const Parameters& p, const std::string& key) {
   const auto v = p.require<std::vector<double>>(key);
   if (v.size() != 2 || !std::isfinite(v[0]) || !std::isfinite(v[1]))
@@ -71,8 +81,8 @@ SelectionOptions read_selection_options(const Parameters& params) {
   o.aperture_margin_m = in_range(params, "aperture_margin_m", o.aperture_margin_m, 0.0, 0.1);
   o.width_trim = in_range(params, "width_trim", o.width_trim, 0.0, 0.45);
   o.grasps_per_object =
-      std::size_t(in_range(params, "grasps_per_object", double(o.grasps_per_object), 0, 1e6));
-  o.object = std::int32_t(in_range(params, "object", double(o.object), -1, 1e6));
+      std::size_t(whole(params, "grasps_per_object", double(o.grasps_per_object), 0, 1e6));
+  o.object = std::int32_t(whole(params, "object", double(o.object), -1, 1e6));
   const auto near = params.get<std::vector<double>>("near_m", {});
   if (params.has("near_m")) {
     if (near.size() != 3 || !std::isfinite(near[0] + near[1] + near[2]))
