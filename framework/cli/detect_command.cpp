@@ -72,14 +72,10 @@ void print_explanation(const HandSet* sampled, const HandSet* classified, std::s
     std::cout << "explain: the tree stopped before sampling\n";
     return;
   }
-  SceneLayout layout;
-  layout.support = sampled->support;
-  layout.objects = sampled->objects;
   std::cout << "scene: "
-            << (sampled->objects.empty()
-                    ? (sampled->support ? "a support plane, no segmentation (objects: all)"
-                                        : "no support surface: the whole cloud is used")
-                    : layout.summary())
+            << (sampled->objects.empty() && sampled->support
+                    ? "a support plane, no segmentation (objects: all)"
+                    : describe_scene(sampled->support, sampled->objects))
             << "\n";
   std::cout << "hypotheses: " << sampled->hands.size()
             << " (per object: " << per_object(*sampled, false) << ")\n";

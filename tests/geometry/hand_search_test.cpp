@@ -98,12 +98,21 @@ TEST_P(NoiseTest, InsideOfAPlaneGivesNoHand) {
 
 INSTANTIATE_TEST_SUITE_P(WithAndWithoutNoise, NoiseTest, ::testing::Values(0.0, 0.001));
 
+// A table seen from above at 45 degrees (its top through kOnTable, normal kTableUp), a
+// square of `table_side_m`, with a 5 cm can 12 cm tall standing on it.
+const Eigen::Vector3d kTableUp = Eigen::Vector3d(0.0, -1.0, -1.0).normalized();
+const Eigen::Vector3d kOnTable(0.0, 0.0, 0.7);
+
+Cloud can_on_table(double table_side_m) {
+  Cloud cloud = testing::plane_cloud(kOnTable, kTableUp, table_side_m);
+  testing::append(cloud, testing::cylinder_cloud(kOnTable + 0.06 * kTableUp, kTableUp, 0.05, 0.12));
+  return cloud;
+}
+
 TEST(HandSearchTest, CylinderStandingOnATableGivesHandsOnTheCylinderOnly) {
   // A table seen from above at 45 degrees, a 5 cm can standing on it.
-  const Eigen::Vector3d up = Eigen::Vector3d(0.0, -1.0, -1.0).normalized();
-  const Eigen::Vector3d on_table(0.0, 0.0, 0.7);
-  Cloud cloud = testing::plane_cloud(on_table, up, 0.5);
-  testing::append(cloud, testing::cylinder_cloud(on_table + 0.06 * up, up, 0.05, 0.12));
+  const Eigen::Vector3d up = kTableUp, on_table = kOnTable;
+  const Cloud cloud = can_on_table(0.5);
   HandSearchParameters parameters = small_search();
   parameters.samples = 1000;
   // Samples away from the table's border: a plate's edge can be grasped.
@@ -141,10 +150,8 @@ TEST(HandSearchTest, NoHandReachesIntoTheSupportPlane) {
   // The same scene sampled everywhere: the table is found as the support, so no sample is
   // drawn from it, and no hand reaches below it - not even past its cut border, where there
   // are no points to collide with.
-  const Eigen::Vector3d up = Eigen::Vector3d(0.0, -1.0, -1.0).normalized();
-  const Eigen::Vector3d on_table(0.0, 0.0, 0.7);
-  Cloud cloud = testing::plane_cloud(on_table, up, 0.3);
-  testing::append(cloud, testing::cylinder_cloud(on_table + 0.06 * up, up, 0.05, 0.12));
+  const Eigen::Vector3d up = kTableUp, on_table = kOnTable;
+  const Cloud cloud = can_on_table(0.3);
   HandSearchParameters parameters = small_search();
   parameters.samples = 1000;
   const Search s = search(cloud, parameters);
@@ -216,10 +223,8 @@ std::size_t tilted_level_closing(const Search& s, const Eigen::Vector3d& up, dou
 TEST(HandSearchTest, TiltedFramesComeDownOnAStandingCanAndCloseLevel) {
   // The can's curvature axis is vertical, so the paper's hands approach it level only; a
   // tilted frame turns the approach down by the tilt and keeps the fingers closing level.
-  const Eigen::Vector3d up = Eigen::Vector3d(0.0, -1.0, -1.0).normalized();
-  const Eigen::Vector3d on_table(0.0, 0.0, 0.7);
-  Cloud cloud = testing::plane_cloud(on_table, up, 0.3);
-  testing::append(cloud, testing::cylinder_cloud(on_table + 0.06 * up, up, 0.05, 0.12));
+  const Eigen::Vector3d up = kTableUp, on_table = kOnTable;
+  const Cloud cloud = can_on_table(0.3);
   HandSearchParameters parameters = small_search();
   parameters.samples = 1000;
   const Search level = search(cloud, parameters);

@@ -17,7 +17,7 @@ namespace antipode {
 namespace {
 
 class PipelineNodesTest : public ::testing::Test {
- protected:
+ public:
   void SetUp() override {
     host_ = std::make_unique<PluginHost>(
         std::vector<std::string>{std::string(FIXTURE_DIR) + "/good", ANTIPODE_TEST_PLUGIN_DIR});
@@ -33,6 +33,7 @@ class PipelineNodesTest : public ::testing::Test {
     return bt::load_tree_string(yaml, "pipeline.yaml", options);
   }
 
+ private:
   std::unique_ptr<PluginHost> host_;
   bt::NodeRegistry registry_;
 };
@@ -126,23 +127,18 @@ std::string failure_of(bt::Tree& tree, const std::string& name) {
   return failure;
 }
 
-// A tree capture -> sample -> select -> plan with the given sampler, selector and planner
-// parameters (each a YAML flow map).
-std::string pipeline_tree(const std::string& sampler, const std::string& selector,
-                          const std::string& planner) {
-  return R"(
-components:
-  cell: { plugin: line_cell, points: 5 }
-  sampler: )" +
-         sampler +
-         R"(
-  selector: )" +
-         selector +
-         R"(
-  planner: )" +
-         planner +
-         R"(
-main: t
+// A tree capture -> sample -> select -> plan in which the component `kind` ("sampler",
+// "selector" or "planner") is the garbage_KIND fixture misbehaving as `garbage` says, the
+// others behave.
+std::string pipeline_tree(const std::string& kind, const std::string& garbage) {
+  const auto component = [&](const std::string& name, const std::string& good) {
+    return "  " + name +
+           ": { plugin: " + (name == kind ? "garbage_" + kind + ", garbage: " + garbage : good) +
+           " }\n";
+  };
+  return "components:\n  cell: { plugin: line_cell, points: 5 }\n" +
+         component("sampler", "point_sampler") + component("selector", "best_first") +
+         component("planner", "still_planner") + R"(main: t
 trees:
   t:
     Sequence:
@@ -153,53 +149,47 @@ trees:
 )";
 }
 
+using Cases = std::vector<std::pair<std::string, std::string>>;
+
+// For each (garbage, reason): with the `kind` component misbehaving so, the node `node` fails
+// with exactly `reason` and its output `entry` is never written.
+void expect_failures(PipelineNodesTest& test, const std::string& kind, const std::string& node,
+                     const std::string& entry, const Cases& cases) {
+  for (const auto& [garbage, reason] : cases) {
+    bt::Tree tree = test.load(pipeline_tree(kind, garbage));
+    EXPECT_EQ(failure_of(tree, node), reason) << garbage;
+    EXPECT_FALSE(tree.blackboard().has(entry)) << garbage;
+  }
+}
+
 // A sampler whose hands are broken fails SampleHands with the reason; nothing is passed on.
 TEST_F(PipelineNodesTest, AMisbehavingSamplerFailsItsNodeWithTheReason) {
-  for (const auto& [garbage, reason] :
-       {std::pair<std::string, std::string>{"nan",
-                                            "the sampler gave hand 0 a pose that is not finite"},
-        {"frame", "the sampler put hand 0 in frame 'camera', not its cloud's 'base'"},
-        {"index", "the sampler gave hand 0 closing point 5 of a cloud of 5"},
-        {"cloud", "the sampler returned hands without the cloud they index"}}) {
-    bt::Tree tree = load(pipeline_tree("{ plugin: garbage_sampler, garbage: " + garbage + " }",
-                                       "{ plugin: best_first }", "{ plugin: still_planner }"));
-    EXPECT_EQ(failure_of(tree, "sample"), reason) << garbage;
-    EXPECT_FALSE(tree.blackboard().has("hands")) << garbage;
-  }
+  expect_failures(*this, "sampler", "sample", "hands",
+                  {{"nan", "the sampler gave hand 0 a pose that is not finite"},
+                   {"frame", "the sampler put hand 0 in frame 'camera', not its cloud's 'base'"},
+                   {"index", "the sampler gave hand 0 closing point 5 of a cloud of 5"},
+                   {"cloud", "the sampler returned hands without the cloud they index"}});
 }
 
 // A selector that throws or chooses what it was not given fails SelectGrasps with the reason.
 TEST_F(PipelineNodesTest, AMisbehavingSelectorFailsItsNodeWithTheReason) {
-  for (const auto& [garbage, reason] :
-       {std::pair<std::string, std::string>{"throw",
-                                            "the selector failed: the robot file vanished"},
-        {"far",
-         "the selector chose grasp 0 at (0, 0, 1), away from every hand it was given to choose "
-         "from"},
-        {"cloud", "the selector returned its selection with another cloud"},
-        {"nan", "the selector gave grasp 0 a pose that is not finite"}}) {
-    bt::Tree tree = load(pipeline_tree("{ plugin: point_sampler }",
-                                       "{ plugin: garbage_selector, garbage: " + garbage + " }",
-                                       "{ plugin: still_planner }"));
-    EXPECT_EQ(failure_of(tree, "select"), reason) << garbage;
-    EXPECT_FALSE(tree.blackboard().has("grasps")) << garbage;
-  }
+  expect_failures(*this, "selector", "select", "grasps",
+                  {{"throw", "the selector failed: the robot file vanished"},
+                   {"far",
+                    "the selector chose grasp 0 at (0, 0, 1), away from every hand it was given "
+                    "to choose from"},
+                   {"cloud", "the selector returned its selection with another cloud"},
+                   {"nan", "the selector gave grasp 0 a pose that is not finite"}});
 }
 
 // A planner that throws or solves with a broken trajectory fails PlanReach: a broken
 // trajectory never reaches the arm.
 TEST_F(PipelineNodesTest, AMisbehavingPlannerFailsItsNodeWithTheReason) {
-  for (const auto& [garbage, reason] :
-       {std::pair<std::string, std::string>{"throw",
-                                            "the planner failed: the collision world vanished"},
-        {"nan", "the planner returned waypoint 1 with a position that is not finite"},
-        {"times", "the planner returned 1 times for 2 waypoints"},
-        {"empty", "the planner returned a solved plan without waypoints"}}) {
-    bt::Tree tree = load(pipeline_tree("{ plugin: point_sampler }", "{ plugin: best_first }",
-                                       "{ plugin: garbage_planner, garbage: " + garbage + " }"));
-    EXPECT_EQ(failure_of(tree, "plan"), reason) << garbage;
-    EXPECT_FALSE(tree.blackboard().has("path")) << garbage;
-  }
+  expect_failures(*this, "planner", "plan", "path",
+                  {{"throw", "the planner failed: the collision world vanished"},
+                   {"nan", "the planner returned waypoint 1 with a position that is not finite"},
+                   {"times", "the planner returned 1 times for 2 waypoints"},
+                   {"empty", "the planner returned a solved plan without waypoints"}});
 }
 
 TEST_F(PipelineNodesTest, LoopOverScenesCountsSeedsAndOutcomes) {

@@ -203,16 +203,18 @@ Hand over_neck(double x, double z, int strays, Cloud& cloud) {
 
 TEST(HeldWidth, TrimsStrayPointsAlongTheClosingDirection) {
   Cloud cloud;
+  std::vector<float> scratch;
   const Hand hand = over_neck(0.0, 0.1, 2, cloud);
-  EXPECT_NEAR(selectors::held_width_m(hand, cloud, 0.0), 0.06, 1e-6);
+  EXPECT_NEAR(selectors::held_width_m(hand, cloud, 0.0, scratch), 0.06, 1e-6);
   // 5% of 104 points trimmed each side: both strays and three of the neck's own; the bulk
   // scaled back by 1 / 0.9.
-  EXPECT_NEAR(selectors::held_width_m(hand, cloud, 0.05), 0.027, 1.5e-3);
+  EXPECT_NEAR(selectors::held_width_m(hand, cloud, 0.05, scratch), 0.027, 1.5e-3);
   // On evenly spread points alone the full extent comes back.
   Cloud clean;
-  EXPECT_NEAR(selectors::held_width_m(over_neck(0.0, 0.1, 0, clean), clean, 0.05), 0.027, 1e-3);
+  EXPECT_NEAR(selectors::held_width_m(over_neck(0.0, 0.1, 0, clean), clean, 0.05, scratch), 0.027,
+              1e-3);
   Hand made_by_hand = top_down(0, 0, 0.1, 1.0, 0.045);
-  EXPECT_DOUBLE_EQ(selectors::held_width_m(made_by_hand, cloud, 0.05), 0.045);
+  EXPECT_DOUBLE_EQ(selectors::held_width_m(made_by_hand, cloud, 0.05, scratch), 0.045);
 }
 
 TEST_F(ClusterSelectorTest, ANeckNarrowerThanTheClosedGripperIsNotAGraspWhateverItsStrays) {

@@ -13,6 +13,7 @@
 #include "antipode/core/error.hpp"
 #include "antipode/geometry/occlusion.hpp"
 #include "antipode/geometry/point_index.hpp"
+#include "cloud_select.hpp"
 #include "grid_search.hpp"
 #include "sample_choice.hpp"
 #include "slab_grid.hpp"
@@ -130,15 +131,6 @@ std::vector<std::int32_t> candidates(const Cloud& cloud, const std::optional<Axi
   return indices;
 }
 
-// Where the sensors are, for orienting the support plane: the mean of the view origins.
-Eigen::Vector3f sensor_position(const Cloud& cloud) {
-  Eigen::Vector3f sum = Eigen::Vector3f::Zero();
-  for (const auto& origin : cloud.view_origins_m) sum += origin;
-  return cloud.view_origins_m.empty()
-             ? sum
-             : (sum / static_cast<float>(cloud.view_origins_m.size())).eval();
-}
-
 HandSearchResult concatenate(std::vector<SampleOutput>& outputs, std::vector<std::int32_t> samples,
                              HandSearchResult result) {
   result.sample_points = std::move(samples);
@@ -171,8 +163,9 @@ HandSearchResult search_hands(const Cloud& cloud, const HandSearchParameters& pa
   if (scene.support) {
     result.support_plane = scene.support;
   } else if (parameters.support_plane == SupportPlaneMode::kAuto && !all_around) {
-    result.support_plane = find_support_plane(cloud, sensor_position(cloud), parameters.support,
-                                              random.derive(kSupportPlaneStream));
+    result.support_plane =
+        find_support_plane(cloud, geometry::sensor_position(cloud), parameters.support,
+                           random.derive(kSupportPlaneStream));
   }
   const SupportPlane* support = result.support_plane ? &*result.support_plane : nullptr;
   const geometry::SlabGrid slabs(cloud.points_m, geometry::kSlabCell_m);

@@ -5,6 +5,7 @@
 #include <string>
 
 #include "antipode/core/error.hpp"
+#include "cloud_select.hpp"
 
 namespace antipode {
 namespace {
@@ -24,28 +25,15 @@ Eigen::Vector3f centroid(const Cloud& cloud) {
 // Random stream of the scene layout: one no sample index of the search reaches.
 constexpr std::uint64_t kSceneStream = 0xFFFFFFFFFFFEull;
 
-// Where the sensors are: the mean of the view origins.
-Eigen::Vector3f sensor_position(const Cloud& cloud) {
-  Eigen::Vector3f sum = Eigen::Vector3f::Zero();
-  for (const auto& origin : cloud.view_origins_m) sum += origin;
-  return sum / static_cast<float>(std::max<std::size_t>(1, cloud.view_origins_m.size()));
-}
-
 // The points within `range_m` of the sensor that saw them (the first view in their mask).
 Cloud within_range(const Cloud& cloud, float range_m) {
-  Cloud out;
-  out.frame = cloud.frame;
-  out.view_origins_m = cloud.view_origins_m;
-  for (std::size_t i = 0; i < cloud.size(); ++i) {
+  Cloud out = geometry::select_indices(cloud, [&](std::size_t i) {
     const std::uint32_t mask = cloud.view_masks.empty() ? 1u : cloud.view_masks[i];
     int view = 0;
     while (view < 31 && !(mask & (1u << view))) ++view;
     const std::size_t v = std::min<std::size_t>(std::size_t(view), cloud.view_origins_m.size() - 1);
-    if ((cloud.points_m[i] - cloud.view_origins_m[v]).norm() > range_m) continue;
-    out.points_m.push_back(cloud.points_m[i]);
-    if (cloud.has_normals()) out.normals.push_back(cloud.normals[i]);
-    if (!cloud.view_masks.empty()) out.view_masks.push_back(cloud.view_masks[i]);
-  }
+    return (cloud.points_m[i] - cloud.view_origins_m[v]).norm() <= range_m;
+  });
   if (out.empty())
     throw Error("no point of the cloud lies within max_range_m " + std::to_string(range_m) +
                 " of its sensor");
@@ -92,7 +80,7 @@ HandSet sample_hands(const Cloud& cloud, const HandSamplingOptions& options,
   SearchScene scene;
   if (options.objects == ObjectMode::kAuto && !search.outward_from_m &&
       search.support_plane == SupportPlaneMode::kAuto) {
-    layout = find_scene_layout(*prepared, sensor_position(*prepared), options.scene,
+    layout = find_scene_layout(*prepared, geometry::sensor_position(*prepared), options.scene,
                                random.derive(kSceneStream));
     if (layout.support) {
       scene.support = layout.support;

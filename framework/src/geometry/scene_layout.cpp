@@ -9,12 +9,13 @@
 #include <iterator>
 #include <optional>
 
-#include <Eigen/Eigenvalues>
+#include <Eigen/Geometry>
 
 #include "antipode/core/error.hpp"
 #include "antipode/geometry/point_index.hpp"
 #include "euclidean_clusters.hpp"
 #include "plane_facing.hpp"
+#include "plane_fit.hpp"
 
 namespace antipode {
 namespace {
@@ -70,24 +71,12 @@ std::optional<SupportPlane> ransac_plane(const Points& points,
   return best;
 }
 
-// The least-squares plane through `inliers`, with its in-plane directions of spread.
+// The least-squares plane through the candidate's inliers, with its in-plane directions.
 bool refit(const Points& points, Candidate& candidate) {
-  Eigen::Vector3d mean = Eigen::Vector3d::Zero();
-  for (const std::int32_t i : candidate.inliers) mean += points[std::size_t(i)].cast<double>();
-  mean /= static_cast<double>(candidate.inliers.size());
-  Eigen::Matrix3d scatter = Eigen::Matrix3d::Zero();
-  for (const std::int32_t i : candidate.inliers) {
-    const Eigen::Vector3d d = points[std::size_t(i)].cast<double>() - mean;
-    scatter += d * d.transpose();
-  }
-  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver(scatter);
-  if (solver.info() != Eigen::Success) return false;
-  Eigen::Vector3f normal = solver.eigenvectors().col(0).cast<float>().normalized();
-  if (normal.dot(candidate.plane.normal) < 0.0f) normal = -normal;
-  candidate.plane.normal = normal;
-  candidate.plane.offset = -normal.dot(mean.cast<float>());
-  candidate.e1 = solver.eigenvectors().col(2).cast<float>();
-  candidate.e2 = normal.cross(candidate.e1);
+  Eigen::Matrix<float, 3, 2> spread;
+  if (!geometry::refit_plane(points, candidate.inliers, candidate.plane, spread)) return false;
+  candidate.e1 = spread.col(0);
+  candidate.e2 = candidate.plane.normal.cross(candidate.e1);
   return true;
 }
 
@@ -261,7 +250,10 @@ void SceneOptions::validate() const {
   for (const AxisBox& box : fixtures) box.validate("scene fixture");
 }
 
-std::string SceneLayout::summary() const {
+std::string SceneLayout::summary() const { return describe_scene(support, objects); }
+
+std::string describe_scene(const std::optional<SupportPlane>& support,
+                           const std::vector<SceneObject>& objects) {
   if (!support) return "no support surface: the whole cloud is used";
   char line[200];
   std::snprintf(line, sizeof line,

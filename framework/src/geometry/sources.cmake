@@ -12,6 +12,7 @@ list(APPEND ANTIPODE_SOURCES
   ${CMAKE_CURRENT_LIST_DIR}/local_frame.cpp
   ${CMAKE_CURRENT_LIST_DIR}/occlusion.cpp
   ${CMAKE_CURRENT_LIST_DIR}/plane_facing.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/plane_fit.cpp
   ${CMAKE_CURRENT_LIST_DIR}/point_index.cpp
   ${CMAKE_CURRENT_LIST_DIR}/preprocess.cpp
   ${CMAKE_CURRENT_LIST_DIR}/quadric.cpp

@@ -6,9 +6,10 @@
 #include <limits>
 #include <vector>
 
-#include <Eigen/Eigenvalues>
+#include <Eigen/Geometry>
 
 #include "plane_facing.hpp"
+#include "plane_fit.hpp"
 
 namespace antipode {
 namespace {
@@ -47,32 +48,16 @@ bool admissible(const Count& c, std::size_t total, const SupportPlaneOptions& o)
   return static_cast<double>(c.below) <= o.max_below_fraction * static_cast<double>(total);
 }
 
-// The least-squares plane through the inliers of `plane` (the direction of least spread);
-// `extent` receives the two in-plane directions of the inliers' spread.
+// The least-squares plane through the inliers of `plane`; `extent` receives the two
+// in-plane directions of the inliers' spread.
 bool refit(const std::vector<Eigen::Vector3f>& points, SupportPlane& plane, float distance_m,
            Eigen::Matrix<float, 3, 2>& extent) {
-  Eigen::Vector3d sum = Eigen::Vector3d::Zero();
-  std::size_t n = 0;
-  for (const auto& p : points) {
-    if (std::fabs(plane.distance(p)) <= distance_m) sum += p.cast<double>(), ++n;
+  std::vector<std::int32_t> inliers;
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    if (std::fabs(plane.distance(points[i])) <= distance_m)
+      inliers.push_back(static_cast<std::int32_t>(i));
   }
-  if (n < 3) return false;
-  const Eigen::Vector3d mean = sum / static_cast<double>(n);
-  Eigen::Matrix3d scatter = Eigen::Matrix3d::Zero();
-  for (const auto& p : points) {
-    if (std::fabs(plane.distance(p)) > distance_m) continue;
-    const Eigen::Vector3d d = p.cast<double>() - mean;
-    scatter += d * d.transpose();
-  }
-  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver(scatter);
-  if (solver.info() != Eigen::Success) return false;
-  Eigen::Vector3f normal = solver.eigenvectors().col(0).cast<float>();
-  if (normal.dot(plane.normal) < 0.0f) normal = -normal;
-  plane.normal = normal.normalized();
-  plane.offset = -plane.normal.dot(mean.cast<float>());
-  extent.col(0) = solver.eigenvectors().col(2).cast<float>();
-  extent.col(1) = solver.eigenvectors().col(1).cast<float>();
-  return true;
+  return geometry::refit_plane(points, inliers, plane, extent);
 }
 
 // The fraction of the points above the plane whose foot lies within the rectangle (aligned

@@ -195,23 +195,31 @@ FixtureSpec parse_fixture(const Parameters& p) {
   return f;
 }
 
+// The entries of the list at `key` (at most 100, each named "<item> N of the scene"); none
+// when the key is absent.
+std::vector<Parameters> list_items(const Parameters& p, const std::string& key,
+                                   const std::string& plural, const std::string& item) {
+  std::vector<Parameters> items;
+  if (!p.has(key)) return items;
+  const YAML::Node list = p.yaml()[key];
+  p.get<YAML::Node>(key, {});
+  if (!list.IsSequence()) p.fail(key, "'" + key + "' must be a list");
+  if (list.size() > 100)
+    p.fail(key, "'" + key + "' lists " + std::to_string(list.size()) + " " + plural +
+                    "; a scene holds at most 100");
+  for (std::size_t i = 0; i < list.size(); ++i)
+    items.emplace_back(list[i], item + " " + std::to_string(i + 1) + " of the scene", p.file());
+  return items;
+}
+
 SceneSpec parse_scene(const Parameters& p) {
   SceneSpec s;
   s.file = p.file();
   s.seed = p.get<std::uint64_t>("seed", 0);
   s.table = parse_table(p.child("table"));
   if (p.has("box")) s.box = parse_box(p.child("box"), s.table);
-  if (p.has("fixtures")) {
-    const YAML::Node list = p.yaml()["fixtures"];
-    p.get<YAML::Node>("fixtures", {});
-    if (!list.IsSequence()) p.fail("fixtures", "'fixtures' must be a list");
-    if (list.size() > 100)
-      p.fail("fixtures", "'fixtures' lists " + std::to_string(list.size()) +
-                             " boxes; a scene holds at most 100");
-    for (std::size_t i = 0; i < list.size(); ++i)
-      s.fixtures.push_back(parse_fixture(
-          Parameters(list[i], "fixture " + std::to_string(i + 1) + " of the scene", s.file)));
-  }
+  for (const Parameters& f : list_items(p, "fixtures", "boxes", "fixture"))
+    s.fixtures.push_back(parse_fixture(f));
   s.placement = parse_placement(p);
   if (p.has("region")) {
     const Parameters r = p.child("region");
@@ -220,18 +228,8 @@ SceneSpec parse_scene(const Parameters& p) {
     r.reject_unknown();
   }
   s.drop_height_m = positive(p, "drop_height_m", s.drop_height_m);
-  if (p.has("objects")) {
-    const YAML::Node list = p.yaml()["objects"];
-    p.get<YAML::Node>("objects", {});
-    if (!list.IsSequence()) p.fail("objects", "'objects' must be a list");
-    if (list.size() > 100)
-      p.fail("objects", "'objects' lists " + std::to_string(list.size()) +
-                            " objects; a scene holds at most 100");
-    for (std::size_t i = 0; i < list.size(); ++i)
-      s.objects.push_back(parse_object(
-          Parameters(list[i], "object " + std::to_string(i + 1) + " of the scene", s.file),
-          s.file));
-  }
+  for (const Parameters& o : list_items(p, "objects", "objects", "object"))
+    s.objects.push_back(parse_object(o, s.file));
   if (p.has("random_objects")) s.random = parse_random(p.child("random_objects"), s.file);
   if (s.objects.size() + std::size_t(s.random.count) > 100)
     p.fail("random_objects", "the scene holds " + std::to_string(s.objects.size()) +

@@ -3,10 +3,9 @@
 #include <string>
 
 #include "antipode/bt/action_node.hpp"
-#include "antipode/core/error.hpp"
-#include "antipode/core/stop_token.hpp"
 #include "antipode/interfaces/classifier.hpp"
 #include "nodes.hpp"
+#include "plugin_output_checks.hpp"
 
 namespace antipode::pipeline {
 namespace {
@@ -48,14 +47,9 @@ class ClassifyHands final : public bt::SyncActionNode {
     auto classified = std::make_shared<HandSet>(*in);
     // A classifier's fault (it threw, or gave back something that is not a classification of
     // these hands) fails this node with the reason; nothing wrong is passed on.
-    try {
-      component<Classifier>("classifier").classify(*classified, stop_token());
-    } catch (const InternalError&) {
-      throw;
-    } catch (const Cancelled&) {
-      throw;
-    } catch (const Error& error) {
-      set_failure_reason(std::string("the classifier failed: ") + error.what());
+    if (const auto error = plugin_error(
+            [&] { component<Classifier>("classifier").classify(*classified, stop_token()); })) {
+      set_failure_reason("the classifier failed: " + *error);
       return bt::Status::kFailure;
     }
     if (const std::string problem = classification_problem(*in, *classified); !problem.empty()) {

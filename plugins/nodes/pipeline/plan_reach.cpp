@@ -1,8 +1,6 @@
 #include <algorithm>
 
 #include "antipode/bt/action_node.hpp"
-#include "antipode/core/error.hpp"
-#include "antipode/core/stop_token.hpp"
 #include "antipode/interfaces/cell.hpp"
 #include "antipode/interfaces/motion_planner.hpp"
 #include "nodes.hpp"
@@ -85,14 +83,8 @@ class PlanReach final : public bt::SyncActionNode {
       // A planner's fault (it threw, or its solved plan is broken) fails this node: a broken
       // trajectory must never reach the arm.
       PlanningResult result;
-      try {
-        result = planner.plan(problem);
-      } catch (const InternalError&) {
-        throw;
-      } catch (const Cancelled&) {
-        throw;
-      } catch (const Error& error) {
-        set_failure_reason(std::string("the planner failed: ") + error.what());
+      if (const auto error = plugin_error([&] { result = planner.plan(problem); })) {
+        set_failure_reason("the planner failed: " + *error);
         return bt::Status::kFailure;
       }
       if (result.solved()) {

@@ -5,6 +5,8 @@
 
 #include <Eigen/Geometry>
 
+#include "antipode/interfaces/grasp_selector.hpp"
+
 namespace antipode::pipeline {
 namespace {
 
@@ -13,11 +15,6 @@ std::string point_text(const Eigen::Vector3d& p) {
   text.precision(3);
   text << "(" << p.x() << ", " << p.y() << ", " << p.z() << ")";
   return text.str();
-}
-
-bool candidate(const Hand& hand) {
-  return hand.rejection == Rejection::kNone &&
-         (hand.label == HandLabel::kPositive || hand.label == HandLabel::kUnknown);
 }
 
 }  // namespace
@@ -56,7 +53,7 @@ std::string selection_problem(const HandSet& given, const HandSet& selection) {
   if (selection.cloud != given.cloud) return "returned its selection with another cloud";
   Eigen::AlignedBox3d candidates;
   for (const Hand& hand : given.hands) {
-    if (candidate(hand) && hand.X_FrameHand.translation().allFinite())
+    if (selectable(hand) && hand.X_FrameHand.translation().allFinite())
       candidates.extend(hand.X_FrameHand.translation());
   }
   const Eigen::Vector3d slack = Eigen::Vector3d::Constant(0.001);

@@ -4,15 +4,35 @@
 // another frame, a grasp made of nothing it was given, a trajectory whose waypoints do not
 // match its joints) fails its node with one of these reasons instead of sending the broken
 // value down the tree, where it would surface far from its cause or move the robot.
-// Each function returns "" when nothing is wrong.
+// Each *_problem function returns "" when nothing is wrong.
 
+#include <optional>
 #include <string>
 
+#include "antipode/core/error.hpp"
 #include "antipode/core/hand.hpp"
+#include "antipode/core/stop_token.hpp"
 #include "antipode/core/trajectory.hpp"
 #include "antipode/interfaces/hand_set.hpp"
 
 namespace antipode::pipeline {
+
+/// Runs `call` (a plugin's method): nullopt when it returns, the message when it throws
+/// antipode::Error. An InternalError and a cancellation pass through (the node fails as
+/// cancelled; an internal error stops the run).
+template <typename Call>
+std::optional<std::string> plugin_error(Call&& call) {
+  try {
+    call();
+  } catch (const InternalError&) {
+    throw;
+  } catch (const Cancelled&) {
+    throw;
+  } catch (const Error& error) {
+    return std::string(error.what());
+  }
+  return std::nullopt;
+}
 
 /// The pose of `hand` (named `which` in the reason, e.g. "hand 3"): finite, its rotation
 /// orthonormal and right-handed (within 1e-6).

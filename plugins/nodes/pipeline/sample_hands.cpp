@@ -37,9 +37,12 @@ class SampleHands final : public bt::SyncActionNode {
     }
     log(std::to_string(hands->hands.size()) + " hand hypotheses from " +
         std::to_string(cloud->size()) + " points" +
-        (hands->objects.empty() ? std::string()
-                                : " on " + std::to_string(hands->objects.size()) +
-                                      " objects standing on the support"));
+        (hands->objects.empty() || !hands->support
+             ? std::string()
+             : " on " + std::to_string(hands->objects.size()) +
+                   " objects standing on the support (a plane of " +
+                   std::to_string(hands->support->inliers) + " of the " +
+                   std::to_string(hands->cloud->size()) + " points after preprocessing)"));
     if (hands->hands.empty()) {
       set_failure_reason("no hand hypothesis found");
       return bt::Status::kFailure;

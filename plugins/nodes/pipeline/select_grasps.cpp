@@ -4,8 +4,6 @@
 #include <vector>
 
 #include "antipode/bt/action_node.hpp"
-#include "antipode/core/error.hpp"
-#include "antipode/core/stop_token.hpp"
 #include "antipode/interfaces/grasp_selector.hpp"
 #include "nodes.hpp"
 #include "plugin_output_checks.hpp"
@@ -62,15 +60,11 @@ class SelectGrasps final : public bt::SyncActionNode {
     const HandSetPtr hands = get_input<HandSetPtr>("hands");
     // A selector's fault (it threw, or chose grasps it was not given) fails this node.
     std::shared_ptr<const HandSet> selection;
-    try {
-      selection = std::make_shared<const HandSet>(
-          component<GraspSelector>("selector").select(*hands, context));
-    } catch (const InternalError&) {
-      throw;
-    } catch (const Cancelled&) {
-      throw;
-    } catch (const Error& error) {
-      set_failure_reason(std::string("the selector failed: ") + error.what());
+    if (const auto error = plugin_error([&] {
+          selection = std::make_shared<const HandSet>(
+              component<GraspSelector>("selector").select(*hands, context));
+        })) {
+      set_failure_reason("the selector failed: " + *error);
       return bt::Status::kFailure;
     }
     if (const std::string problem = selection_problem(*hands, *selection); !problem.empty()) {

@@ -18,11 +18,6 @@
 namespace antipode::selectors {
 namespace {
 
-bool candidate(const Hand& hand) {
-  return hand.rejection == Rejection::kNone &&
-         (hand.label == HandLabel::kPositive || hand.label == HandLabel::kUnknown);
-}
-
 // A grasp a cluster proposes, with the input hands it stands for.
 struct Proposal {
   Hand grasp;
@@ -107,10 +102,11 @@ HandSet ClusterSelector::select(const HandSet& in, const SelectionContext& conte
 
   std::vector<Hand> hands = in.hands;
   std::vector<double> held(hands.size(), 0.0);
+  std::vector<float> scratch;
   std::vector<std::size_t> order;
   for (std::size_t i = 0; i < hands.size(); ++i) {
-    if (!candidate(hands[i])) continue;
-    held[i] = held_width_m(hands[i], *in.cloud, options_.width_trim);
+    if (!selectable(hands[i])) continue;
+    held[i] = held_width_m(hands[i], *in.cloud, options_.width_trim, scratch);
     hands[i].rejection = feasible(hands[i], held[i]);
     if (hands[i].rejection == Rejection::kNone) order.push_back(i);
   }

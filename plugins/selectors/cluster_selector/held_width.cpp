@@ -6,11 +6,10 @@
 
 namespace antipode::selectors {
 
-double held_width_m(const Hand& hand, const Cloud& cloud, double trim) {
+double held_width_m(const Hand& hand, const Cloud& cloud, double trim, std::vector<float>& along) {
   if (hand.closing_points.empty()) return hand.width_m;
   const Eigen::Vector3f closing = hand.closing().cast<float>();
-  std::vector<float> along;
-  along.reserve(hand.closing_points.size());
+  along.clear();
   for (const std::int32_t i : hand.closing_points) {
     along.push_back(cloud.points_m[static_cast<std::size_t>(i)].dot(closing));
   }

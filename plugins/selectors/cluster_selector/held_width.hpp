@@ -9,6 +9,8 @@
 // clean cloud it is the full extent, so objects just wider than the closed gripper (which
 // the trimmed bulk alone would put under it, 10% narrow) stay graspable.
 
+#include <vector>
+
 #include "antipode/core/cloud.hpp"
 #include "antipode/core/hand.hpp"
 
@@ -16,8 +18,10 @@ namespace antipode::selectors {
 
 /// The extent along `hand.closing()` of the hand's closing-region points (indices into
 /// `cloud`) between the `trim` and 1 - `trim` quantiles (trim in [0, 0.5); 0 gives the
-/// full extent), divided by 1 - 2 trim. A hand without closing points (made by hand, or read from a
-/// grasps file) gives its `width_m`.
-double held_width_m(const Hand& hand, const Cloud& cloud, double trim);
+/// full extent), divided by 1 - 2 trim. A hand without closing points (made by hand, or
+/// read from a grasps file) gives its `width_m`. `scratch` is working space, reused across
+/// calls (nothing is allocated once it has grown to the largest closing region).
+double held_width_m(const Hand& hand, const Cloud& cloud, double trim,
+                    std::vector<float>& scratch);
 
 }  // namespace antipode::selectors

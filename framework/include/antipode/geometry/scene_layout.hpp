@@ -77,11 +77,15 @@ struct SceneLayout {
   std::vector<std::int32_t> object_of_point;
   std::size_t planes = 0;  ///< candidate planes examined
 
-  /// One line: "support plane 0.000 x + 0.000 y + 1.000 z + 0.295 = 0 (51234 points), 2
-  /// objects: #0: 812 points, 6.1 x 5.8 x 9.2 cm at (0.700, -0.100, -0.250); #1: ..." or
-  /// "no support surface: the whole cloud is used".
+  /// describe_scene(support, objects).
   std::string summary() const;
 };
+
+/// One line: "support plane 0.000 x + 0.000 y + 1.000 z + 0.295 = 0 (51234 points), 2
+/// objects: #0: 812 points, 6.1 x 5.8 x 9.2 cm at (0.700, -0.100, -0.250); #1: ..." or
+/// "no support surface: the whole cloud is used".
+std::string describe_scene(const std::optional<SupportPlane>& support,
+                           const std::vector<SceneObject>& objects);
 
 /// Finds the support and the objects on it in `cloud` (preprocessed: finite points, voxels),
 /// seen from `toward_sensor` (a point on the sensors' side). Throws antipode::Error for

@@ -23,6 +23,13 @@ struct SelectionContext {
   StopToken stop;  ///< cancellation
 };
 
+/// Whether a selector may choose `hand`: no rejection, labelled positive or not yet labelled
+/// (a sampler's output).
+inline bool selectable(const Hand& hand) {
+  return hand.rejection == Rejection::kNone &&
+         (hand.label == HandLabel::kPositive || hand.label == HandLabel::kUnknown);
+}
+
 class GraspSelector : public Component {
  public:
   ComponentKind kind() const final { return ComponentKind::kGraspSelector; }
