@@ -205,16 +205,87 @@ TEST(HeldWidth, TrimsStrayPointsAlongTheClosingDirection) {
   Cloud cloud;
   std::vector<float> scratch;
   const Hand hand = over_neck(0.0, 0.1, 2, cloud);
-  EXPECT_NEAR(selectors::held_width_m(hand, cloud, 0.0, scratch), 0.06, 1e-6);
+  EXPECT_NEAR(selectors::held_width_m(hand, cloud, 0.0, 0.0, scratch), 0.06, 1e-6);
   // 5% of 104 points trimmed each side: both strays and three of the neck's own; the bulk
   // scaled back by 1 / 0.9.
-  EXPECT_NEAR(selectors::held_width_m(hand, cloud, 0.05, scratch), 0.027, 1.5e-3);
+  EXPECT_NEAR(selectors::held_width_m(hand, cloud, 0.05, 0.0, scratch), 0.027, 1.5e-3);
   // On evenly spread points alone the full extent comes back.
   Cloud clean;
-  EXPECT_NEAR(selectors::held_width_m(over_neck(0.0, 0.1, 0, clean), clean, 0.05, scratch), 0.027,
-              1e-3);
+  EXPECT_NEAR(selectors::held_width_m(over_neck(0.0, 0.1, 0, clean), clean, 0.05, 0.0, scratch),
+              0.027, 1e-3);
   Hand made_by_hand = top_down(0, 0, 0.1, 1.0, 0.045);
-  EXPECT_DOUBLE_EQ(selectors::held_width_m(made_by_hand, cloud, 0.05, scratch), 0.045);
+  EXPECT_DOUBLE_EQ(selectors::held_width_m(made_by_hand, cloud, 0.05, 0.0, scratch), 0.045);
+}
+
+// A plate `thickness_m` thick with unit normal `normal_hand` (hand coordinates of
+// top_down(0, 0, 0): x = approach, y = closing, z = axis), both faces sampled every 2 mm
+// where they cross the closing region (x in [0.5, 5.5] cm, |y| < 3.6 cm, |z| <= 1 cm), into
+// `cloud`; the hand's closing points and width set from them.
+Hand across_plate(const Eigen::Vector3d& normal_hand, double thickness_m, Cloud& cloud) {
+  Hand hand = top_down(0.0, 0.0, 0.0);
+  const Eigen::Vector3d n = normal_hand.normalized();
+  const Eigen::Vector3d u = n.unitOrthogonal(), v = n.cross(u);
+  double low = 1.0, high = -1.0;
+  for (const double side : {-0.5, 0.5}) {
+    for (int i = -60; i <= 60; ++i) {
+      for (int j = -60; j <= 60; ++j) {
+        const Eigen::Vector3d p =
+            Eigen::Vector3d(0.03, 0, 0) + side * thickness_m * n + 0.002 * i * u + 0.002 * j * v;
+        if (p.x() < 0.005 || p.x() > 0.055 || std::abs(p.y()) >= 0.036 || std::abs(p.z()) > 0.01)
+          continue;
+        cloud.points_m.push_back((hand.X_FrameHand * p).cast<float>());
+        hand.closing_points.push_back(std::int32_t(cloud.size() - 1));
+        low = std::min(low, p.y()), high = std::max(high, p.y());
+      }
+    }
+  }
+  hand.width_m = high - low;
+  return hand;
+}
+
+TEST(HeldWidth, APlateSeenOnItsTwoFacesKeepsItsThickness) {
+  Cloud cloud;
+  std::vector<float> scratch;
+  const Hand hand = across_plate(Eigen::Vector3d::UnitY(), 0.026, cloud);
+  // The trimmed extent scaled back by 1 / 0.9 would pass it for 2.9 cm.
+  EXPECT_NEAR(selectors::held_width_m(hand, cloud, 0.05, 20.0, scratch), 0.026, 1e-4);
+}
+
+TEST(HeldWidth, TheSqueezeTurnsALeaningPlateToItsThickness) {
+  std::vector<float> scratch;
+  const double a = 16.0 * M_PI / 180.0;
+  // Turned about the approach axis (a bar lying across the fingers' tips from above) and
+  // about the hand axis (a plate leaning across the closing direction).
+  for (const Eigen::Vector3d& normal : {Eigen::Vector3d(0, std::cos(a), std::sin(a)),
+                                        Eigen::Vector3d(std::sin(a), std::cos(a), 0)}) {
+    Cloud cloud;
+    const Hand hand = across_plate(normal, 0.026, cloud);
+    EXPECT_GT(selectors::held_width_m(hand, cloud, 0.05, 0.0, scratch), 0.031) << normal;
+    EXPECT_NEAR(selectors::held_width_m(hand, cloud, 0.05, 20.0, scratch), 0.026, 1e-3) << normal;
+    // Not beyond the turn allowed: 8 degrees leave it wider.
+    EXPECT_GT(selectors::held_width_m(hand, cloud, 0.05, 8.0, scratch), 0.028) << normal;
+  }
+  // A plate square to the fingers does not turn: its width is its thickness.
+  Cloud square;
+  const Hand hand = across_plate(Eigen::Vector3d::UnitY(), 0.05, square);
+  EXPECT_NEAR(selectors::held_width_m(hand, square, 0.05, 20.0, scratch), 0.05, 1e-4);
+}
+
+TEST_F(ClusterSelectorTest, ALeaningPlateThinnerThanTheClosedGripperIsNotAGrasp) {
+  auto cloud = std::make_shared<Cloud>();
+  const double a = 16.0 * M_PI / 180.0;
+  Hand diagonal = across_plate(Eigen::Vector3d(0, std::cos(a), std::sin(a)), 0.026, *cloud);
+  diagonal.X_FrameHand.translation() << 0, 0, 0.1;
+  for (auto& p : cloud->points_m) p.z() += 0.1f;
+  HandSet set = on_table({diagonal, top_down(0.3, 0, 0.1, 0.5, 0.05)});
+  set.cloud = cloud;
+  const HandSet squeezed = create("min_cluster_size: 1\nunseen_is_free: true")->select(set, {});
+  ASSERT_EQ(grasp_count(squeezed), 1u);
+  EXPECT_NEAR(squeezed.hands[0].position_m().x(), 0.3, 1e-12);
+  EXPECT_EQ(squeezed.hands[1].rejection, Rejection::kApertureLimit);
+  const HandSet unturned =
+      create("min_cluster_size: 1\nunseen_is_free: true\nsqueeze_turn_deg: 0")->select(set, {});
+  EXPECT_EQ(grasp_count(unturned), 2u) << to_string(unturned.hands[1].rejection);
 }
 
 TEST_F(ClusterSelectorTest, ANeckNarrowerThanTheClosedGripperIsNotAGraspWhateverItsStrays) {

@@ -106,7 +106,8 @@ HandSet ClusterSelector::select(const HandSet& in, const SelectionContext& conte
   std::vector<std::size_t> order;
   for (std::size_t i = 0; i < hands.size(); ++i) {
     if (!selectable(hands[i])) continue;
-    held[i] = held_width_m(hands[i], *in.cloud, options_.width_trim, scratch);
+    held[i] =
+        held_width_m(hands[i], *in.cloud, options_.width_trim, options_.squeeze_turn_deg, scratch);
     hands[i].rejection = feasible(hands[i], held[i]);
     if (hands[i].rejection == Rejection::kNone) order.push_back(i);
   }

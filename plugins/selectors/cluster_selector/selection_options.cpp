@@ -80,6 +80,7 @@ SelectionOptions read_selection_options(const Parameters& params) {
   o.unseen_is_free = params.get<bool>("unseen_is_free", o.unseen_is_free);
   o.aperture_margin_m = in_range(params, "aperture_margin_m", o.aperture_margin_m, 0.0, 0.1);
   o.width_trim = in_range(params, "width_trim", o.width_trim, 0.0, 0.45);
+  o.squeeze_turn_deg = in_range(params, "squeeze_turn_deg", o.squeeze_turn_deg, 0.0, 90.0);
   o.grasps_per_object =
       std::size_t(whole(params, "grasps_per_object", double(o.grasps_per_object), 0, 1e6));
   o.object = std::int32_t(whole(params, "object", double(o.object), -1, 1e6));

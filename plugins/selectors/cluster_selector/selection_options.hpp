@@ -51,6 +51,13 @@ struct SelectionOptions {
   /// closing-region points' extent between this quantile and its complement (held_width.hpp);
   /// the wide side on the full extent.
   double width_trim = 0.05;
+  /// The narrow side is judged after the squeeze (held_width.hpp): the closing direction
+  /// turned about the approach or the hand axis downhill to the nearest local minimum of
+  /// the width, at most this far (degrees; 0: the width along the hand's own closing
+  /// direction). 20 degrees, the near-antipodal check's own tolerance: a part whose faces
+  /// lie within it of the fingers' may turn that far. Further turns mostly follow the back
+  /// of a one-view cloud that was never seen (half a cylinder narrows as it turns).
+  double squeeze_turn_deg = 20.0;
   /// With a segmented scene (the hand set's objects): at most this many grasps per object
   /// (0: no limit), as a clear-the-box policy wants a choice on every object.
   std::size_t grasps_per_object = 0;
