@@ -18,4 +18,5 @@ function(antipode_add_plugin name)
     CXX_VISIBILITY_PRESET hidden
     VISIBILITY_INLINES_HIDDEN ON)
   install(TARGETS ${name} LIBRARY DESTINATION "${ANTIPODE_PLUGIN_INSTALL_DIR}")
+  set_property(GLOBAL APPEND PROPERTY ANTIPODE_PLUGIN_TARGETS ${name})
 endfunction()

@@ -70,6 +70,8 @@ int plugins_command();
 /// plugin ABI it was built for and what it provides (exit 0), or exactly why it cannot be
 /// loaded - a missing symbol demangled, an ABI mismatch (one error line, exit 2).
 int check_plugin_command(const std::string& library);
+/// `antipode plugins --write-index DIR`: writes DIR's plugin index (plugin_index.hpp).
+int write_index_command(const std::string& directory);
 /// Lists every node type, or (when `type` is not empty) the ports of one.
 int nodes_command(const std::string& type);
 

@@ -97,9 +97,9 @@ void print_explanation(const HandSet* sampled, const HandSet* classified, std::s
 }  // namespace
 
 int detect_command(const DetectOptions& options) {
-  Session session = open_session();
-  bt::Tree tree =
-      load_tree_for(session, options.tree_path, detect_entries(options), options.settings);
+  const std::vector<std::string> entries = detect_entries(options);
+  Session session = open_session_for(options.tree_path, entries, options.settings);
+  bt::Tree tree = load_tree_for(session, options.tree_path, entries, options.settings);
   const Tracing tracing = attach_tracers(tree, options.settings.verbose, "");
   const bt::Status status = tree.tick_while_running();
   if (const HandSet* set = hand_set(tree, options.hands_entry)) print_summary(*set, 5);

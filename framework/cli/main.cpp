@@ -49,8 +49,9 @@ struct Commands {
   antipode::cli::BenchMergeOptions merge;
   antipode::cli::ReportOptions report;
   std::string validate_path;
-  std::string node_type;      ///< `antipode nodes [TYPE]`
-  std::string check_library;  ///< `antipode plugins --check LIB`
+  std::string node_type;        ///< `antipode nodes [TYPE]`
+  std::string check_library;    ///< `antipode plugins --check LIB`
+  std::string index_directory;  ///< `antipode plugins --write-index DIR`
 };
 
 // A seed: a whole number in 0 .. 2^64-1, written in digits (CLI11 alone takes "-1" as
@@ -254,6 +255,8 @@ int dispatch(const CLI::App& app, const Commands& commands) {
   }
   if (app.got_subcommand("report")) return antipode::cli::report_command(commands.report);
   if (app.got_subcommand("plugins")) {
+    if (!commands.index_directory.empty())
+      return antipode::cli::write_index_command(commands.index_directory);
     return commands.check_library.empty()
                ? antipode::cli::plugins_command()
                : antipode::cli::check_plugin_command(commands.check_library);
@@ -282,9 +285,14 @@ int main(int argc, char** argv) {
   validate->add_option("tree", commands.validate_path, "YAML tree file")->required();
   CLI::App* plugins =
       app.add_subcommand("plugins", "List plugin libraries found, loaded and refused, and why");
-  plugins->add_option("--check", commands.check_library,
-                      "Load one library and report its descriptor, ABI and types, or why it "
-                      "cannot load");
+  CLI::Option* check = plugins->add_option(
+      "--check", commands.check_library,
+      "Load one library and report its descriptor, ABI and types, or why it cannot load");
+  plugins
+      ->add_option("--write-index", commands.index_directory,
+                   "Write the index of a plugin directory (what each library provides), so "
+                   "that trees open only the libraries they need")
+      ->excludes(check);
   CLI::App* nodes =
       app.add_subcommand("nodes", "List the node types trees can use, or one's ports");
   nodes->add_option("type", commands.node_type, "A node type, e.g. SampleHands");

@@ -4,6 +4,7 @@
 
 #include "antipode/plugin/abi.hpp"
 #include "antipode/plugin/plugin_host.hpp"
+#include "antipode/plugin/plugin_index.hpp"
 #include "commands.hpp"
 #include "exit_codes.hpp"
 #include "session.hpp"
@@ -39,6 +40,13 @@ int check_plugin_command(const std::string& library) {
             << "  " << record.name << " " << record.version << ", plugin ABI " << record.abi
             << " (this antipode: " << kAbiMajor << "." << kAbiMinor << ")\n";
   for (const auto& offer : record.offers) std::cout << "  provides " << offer << "\n";
+  return kExitSuccess;
+}
+
+int write_index_command(const std::string& directory) {
+  const std::size_t count = write_plugin_index(directory);
+  std::cout << directory << "/" << kPluginIndexFile << ": " << count << " plugin "
+            << (count == 1 ? "library" : "libraries") << "\n";
   return kExitSuccess;
 }
 

@@ -26,8 +26,17 @@ bt::LoadOptions load_options(const Session& session, const std::vector<std::stri
 
 }  // namespace
 
-bt::Tree load_tree_for(const Session& session, const std::string& tree_path,
+bt::Tree load_tree_for(Session& session, const std::string& tree_path,
                        const std::vector<std::string>& entries, const TreeRunSettings& settings) {
+  if (!session.every_plugin) {
+    // Checked first (which builds no component): a tree the opened plugins cannot load is
+    // loaded with all of them, so its errors are those of a full session.
+    try {
+      bt::validate_tree_file(tree_path, load_options(session, entries, settings));
+    } catch (const Error&) {
+      replace_with_full_session(session);
+    }
+  }
   try {
     return bt::load_tree_file(tree_path, load_options(session, entries, settings));
   } catch (const Error& error) {
@@ -38,7 +47,7 @@ bt::Tree load_tree_for(const Session& session, const std::string& tree_path,
 }
 
 int run_command(const RunOptions& options) {
-  Session session = open_session();
+  Session session = open_session_for(options.tree_path, {}, options.settings);
   bt::Tree tree = load_tree_for(session, options.tree_path, {}, options.settings);
   const Tracing tracing = attach_tracers(tree, options.settings.verbose, options.trace_path);
   const bt::Status status = tree.tick_while_running();
@@ -47,7 +56,16 @@ int run_command(const RunOptions& options) {
 }
 
 int validate_command(const std::string& tree_path) {
-  Session session = open_session();
+  Session session = open_session_for(tree_path, {}, TreeRunSettings{});
+  if (!session.every_plugin) {
+    try {
+      bt::validate_tree_file(tree_path, load_options(session, {}, TreeRunSettings{}));
+      std::cout << tree_path << ": valid\n";
+      return kExitSuccess;
+    } catch (const Error&) {
+      replace_with_full_session(session);
+    }
+  }
   try {
     bt::validate_tree_file(tree_path, load_options(session, {}, TreeRunSettings{}));
   } catch (const Error& error) {

@@ -12,7 +12,7 @@ int scene_command(const SceneOptions& options) {
   const std::vector<std::string> entries = {"cell.scene='" + options.scene_path + "'",
                                             "image_file=" + options.image_path,
                                             "grasps_file=" + options.grasps_path};
-  Session session = open_session();
+  Session session = open_session_for(options.tree_path, entries, options.settings);
   bt::Tree tree = load_tree_for(session, options.tree_path, entries, options.settings);
   const Tracing tracing = attach_tracers(tree, options.settings.verbose, "");
   const bt::Status status = tree.tick_while_running();

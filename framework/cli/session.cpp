@@ -2,14 +2,79 @@
 
 #include <unistd.h>
 
+#include <cctype>
 #include <cstdlib>
+#include <filesystem>
+#include <fstream>
 #include <iostream>
+#include <set>
+#include <sstream>
+
+#include "commands.hpp"
 
 namespace antipode::cli {
+namespace {
+
+// Tree files larger than this are not searched for names (every plugin is loaded instead).
+constexpr std::uintmax_t kMaxScannedBytes = 16u << 20;
+
+void add_words(const std::string& text, std::set<std::string>& words) {
+  std::string word;
+  for (const char c : text) {
+    if (std::isalnum(static_cast<unsigned char>(c)) != 0 || c == '_') {
+      word += c;
+    } else if (!word.empty()) {
+      words.insert(word), word.clear();
+    }
+  }
+  if (!word.empty()) words.insert(word);
+}
+
+// Every word of the tree file and of `texts`: each name a tree uses - a node type, a
+// component's `plugin` - is one of them; a word that is not such a name opens nothing, and
+// one that names a type the tree does not use opens a library too many, nothing worse. A
+// file that cannot be read gives the single name "*", which no library offers: loading the
+// tree then fails and is retried with every plugin (load_tree_for), so the error is the
+// loader's own.
+std::vector<std::string> names_in(const std::string& tree_path,
+                                  const std::vector<std::string>& texts) {
+  std::set<std::string> words;
+  for (const auto& text : texts) add_words(text, words);
+  std::error_code error;
+  const auto size = std::filesystem::file_size(tree_path, error);
+  std::ifstream in(tree_path);
+  if (error || size > kMaxScannedBytes || !std::filesystem::is_regular_file(tree_path, error) ||
+      !in)
+    return {"*"};
+  std::stringstream content;
+  content << in.rdbuf();
+  add_words(content.str(), words);
+  return {words.begin(), words.end()};
+}
+
+}  // namespace
 
 Session open_session() {
   Session session{std::make_unique<PluginHost>(), bt::builtin_node_registry()};
   session.host->load_search_path();
+  session.host->register_nodes(session.registry);
+  return session;
+}
+
+void replace_with_full_session(Session& session) {
+  Session full = open_session();
+  Session old = std::move(session);
+  session = std::move(full);
+}
+
+Session open_session_for(const std::string& tree_path, const std::vector<std::string>& entries,
+                         const TreeRunSettings& settings) {
+  const char* mode = std::getenv("ANTIPODE_PLUGIN_LOAD");
+  if (mode != nullptr && std::string(mode) == "all") return open_session();
+  std::vector<std::string> texts = entries;
+  texts.insert(texts.end(), settings.set.begin(), settings.set.end());
+  Session session{std::make_unique<PluginHost>(), bt::builtin_node_registry(), false};
+  session.host->load_for(names_in(tree_path, texts));
   session.host->register_nodes(session.registry);
   return session;
 }

@@ -1,6 +1,7 @@
 #pragma once
-// What every CLI command that touches trees needs: the plugin host with everything found on
-// the search path, and a node registry with the built-in and plugin node types.
+// What every CLI command that touches trees needs: the plugin host with the plugins found on
+// the search path (all of them, or only those a tree names), and a node registry with the
+// built-in and plugin node types.
 
 #include <memory>
 #include <string>
@@ -16,6 +17,7 @@ namespace antipode::cli {
 struct Session {
   std::unique_ptr<PluginHost> host;
   bt::NodeRegistry registry;
+  bool every_plugin = true;  ///< false when only the libraries a tree names were opened
 };
 
 /// Loads every plugin on the search path and registers built-in and plugin nodes.
@@ -23,12 +25,25 @@ Session open_session();
 
 struct TreeRunSettings;
 
+/// Opens only the plugin libraries that provide a name used in `tree_path`, `entries` or
+/// `settings.set` (PluginHost::load_for: the plugin directories' indexes tell which), so a
+/// tree starts without loading every plugin and its libraries. The same as open_session()
+/// when ANTIPODE_PLUGIN_LOAD=all is set.
+Session open_session_for(const std::string& tree_path, const std::vector<std::string>& entries,
+                         const TreeRunSettings& settings);
+
 /// Loads `tree_path` with the session's registry and components, seeded with `settings.seed`.
 /// `entries` ("key=value", as --set takes them) are what the command fills in from its own
 /// arguments; the user's `settings.set` is applied after them, so it can change any of them.
+/// Replaces `session` by open_session(), releasing the old one in its own order (its node
+/// registry before the host whose libraries hold the registry's code).
+void replace_with_full_session(Session& session);
+
 /// Unknown-name errors get a note when plugins were refused (a refused plugin is the usual
-/// cause).
-bt::Tree load_tree_for(const Session& session, const std::string& tree_path,
+/// cause). When the session holds only some plugins and the tree does not validate with
+/// them, `session` is replaced by open_session() first, so errors are those of a full
+/// session; components are built once.
+bt::Tree load_tree_for(Session& session, const std::string& tree_path,
                        const std::vector<std::string>& entries, const TreeRunSettings& settings);
 
 /// The tracers a command attached to a tree; they must outlive its ticks.

@@ -15,7 +15,7 @@ namespace {
 // terminal unless every node's status is printed.
 int run_tree(const std::string& tree_path, const std::vector<std::string>& entries,
              const TreeRunSettings& settings) {
-  Session session = open_session();
+  Session session = open_session_for(tree_path, entries, settings);
   bt::Tree tree = load_tree_for(session, tree_path, entries, settings);
   const Tracing tracing = attach_tracers(tree, settings.verbose, "");
   ProgressBar bar(std::cerr, !settings.verbose && progress_wanted());

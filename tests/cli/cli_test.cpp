@@ -207,6 +207,55 @@ TEST_F(CliTest, UnknownNodeMentionsRefusedPlugins) {
       << result.out;
 }
 
+// The dynamic loader names every library it opens (LD_DEBUG=files): a tree opens only the
+// plugin libraries it names (the build tree's plugin directory is indexed by the build).
+TEST_F(CliTest, ATreeOpensOnlyThePluginsItNames) {
+  const std::string empty = write("empty.yaml", "main: t\ntrees:\n  t:\n    AlwaysSuccess: {}\n");
+  Result result = run("run --quiet " + empty, "LD_DEBUG=files");
+  EXPECT_EQ(result.exit_code, 0) << result.out;
+  EXPECT_EQ(result.out.find("libantipode_"), std::string::npos) << result.out;
+  const std::string one = write("one.yaml",
+                                "components:\n  c: { plugin: passthrough_classifier }\n"
+                                "main: t\ntrees:\n  t:\n    AlwaysSuccess: {}\n");
+  result = run("run --quiet " + one, "LD_DEBUG=files");
+  EXPECT_EQ(result.exit_code, 0) << result.out;
+  EXPECT_NE(result.out.find("libantipode_passthrough_classifier.so"), std::string::npos);
+  EXPECT_EQ(result.out.find("libantipode_bullet_cell.so"), std::string::npos);
+  EXPECT_EQ(result.out.find("libantipode_hog_svm_classifier.so"), std::string::npos);
+  // A plugin named only by --set is found too; ANTIPODE_PLUGIN_LOAD=all opens everything.
+  result = run("run --quiet " + one + " --set c.plugin=antipodal_classifier", "LD_DEBUG=files");
+  EXPECT_EQ(result.exit_code, 0) << result.out;
+  EXPECT_NE(result.out.find("libantipode_antipodal_classifier.so"), std::string::npos);
+  result = run("run --quiet " + empty, "LD_DEBUG=files ANTIPODE_PLUGIN_LOAD=all");
+  EXPECT_NE(result.out.find("libantipode_hog_svm_classifier.so"), std::string::npos);
+}
+
+TEST_F(CliTest, AnUnknownNameInALazilyLoadedTreeGetsTheFullLoadersMessage) {
+  const std::string tree = write("x.yaml",
+                                 "components:\n  c: { plugin: passthrough_clasifier }\n"
+                                 "main: t\ntrees:\n  t:\n    AlwaysSuccess: {}\n");
+  const Result result = run("validate " + tree);
+  EXPECT_EQ(result.exit_code, 2);
+  EXPECT_NE(result.out.find("did you mean 'passthrough_classifier'?"), std::string::npos)
+      << result.out;
+}
+
+TEST_F(CliTest, PluginsWriteIndexListsADirectory) {
+  const fs::path plugins = dir_ / "plugins";
+  fs::create_directories(plugins);
+  fs::copy_file(std::string(FIXTURE_DIR) + "/good/libantipode_test_fixtures.so",
+                plugins / "libantipode_test_fixtures.so");
+  Result result = run("plugins --write-index " + plugins.string());
+  EXPECT_EQ(result.exit_code, 0) << result.out;
+  EXPECT_EQ(result.out, plugins.string() + "/antipode_plugins.index: 1 plugin library\n");
+  std::ifstream in(plugins / "antipode_plugins.index");
+  const std::string index((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  EXPECT_NE(index.find("type CountTicks\n"), std::string::npos) << index;
+  result = run("plugins --write-index " + (dir_ / "none").string());
+  EXPECT_EQ(result.exit_code, 2);
+  EXPECT_EQ(result.out, "antipode: error: no plugin directory " + (dir_ / "none").string() + "\n");
+}
+
 TEST_F(CliTest, PluginsCheckReportsOneLibraryOrWhyItCannotLoad) {
   Result result =
       run("plugins --check " + std::string(FIXTURE_DIR) + "/good/libantipode_test_fixtures.so");

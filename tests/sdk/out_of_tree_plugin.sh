@@ -1,13 +1,25 @@
 #!/usr/bin/env bash
-# Installs the antipode SDK into a temporary prefix, builds the out-of-tree example plugin
-# against it with find_package(antipode), and checks that the installed `antipode` loads it.
+# Installs the antipode SDK into a temporary prefix, checks that it carries no method
+# internals (no antipode/grasp headers, no SVM symbols exported by libantipode), builds the
+# out-of-tree example plugin against it with find_package(antipode), checks that the
+# installed `antipode` loads it, and runs the example's tree on a cloud (argument 3).
 set -euo pipefail
 build_dir="$1"
 source_dir="$2"
+cloud="$3"
 work="$(mktemp -d)"
 trap 'rm -rf "$work"' EXIT
 
 cmake --install "$build_dir" --prefix "$work/prefix" >/dev/null
+if find "$work/prefix/include" -path '*antipode/grasp*' | grep -q .; then
+  echo "the SDK installs the method's headers (antipode/grasp)" >&2
+  exit 1
+fi
+library="$(find "$work/prefix" -name 'libantipode.so' | head -n 1)"
+if nm -D --defined-only "$library" | c++filt | grep -i 'svm\|hand_image\|antipodal'; then
+  echo "libantipode exports the method's symbols (above)" >&2
+  exit 1
+fi
 cmake -S "$source_dir/plugins/examples/out_of_tree" -B "$work/plugin" \
   -DCMAKE_PREFIX_PATH="$work/prefix" -DCMAKE_BUILD_TYPE=Release >/dev/null
 cmake --build "$work/plugin" -j2 >/dev/null
@@ -17,6 +29,15 @@ echo "$listing"
 grep -q "^loaded  $work/plugin/plugins/libantipode_width_preference.so" <<<"$listing"
 grep -q "provides classifier width_preference" <<<"$listing"
 grep -q "provides node CountGrasps" <<<"$listing"
-# The installed plugins are found beside the installed library.
+for type in "sampler every_point" "selector best_score" "planner never_reaches" "cell empty_cell"; do
+  grep -q "provides $type" <<<"$listing"
+done
+# The installed plugins are found beside the installed library, and indexed.
+test -f "$(dirname "$library")/antipode/plugins/antipode_plugins.index"
 grep -q "$work/prefix/lib.*/antipode/plugins/libantipode_pipeline_nodes.so" <<<"$listing"
-echo "out-of-tree plugin built against the installed SDK and loaded"
+# Its tree runs with the installed host and plugins.
+run="$(ANTIPODE_PLUGIN_PATH="$work/plugin/plugins" "$antipode" run \
+  "$source_dir/plugins/examples/out_of_tree/width_preference.yaml" --set cloud_file="$cloud")"
+echo "$run"
+grep -Eq "width_preference labelled [0-9]+ hands as grasps" <<<"$run"
+echo "out-of-tree plugin built against the installed SDK, loaded and run"

@@ -2,16 +2,22 @@
 
 #include <dlfcn.h>
 
+#include <algorithm>
+#include <cctype>
+
 #include <cstddef>
 #include <cstdlib>
 #include <filesystem>
+#include <optional>
 #include <set>
 #include <sstream>
 
 #include "antipode/config.hpp"
 #include "antipode/core/error.hpp"
+#include "antipode/plugin/plugin_index.hpp"
 #include "dl_error.hpp"
 #include "elf_check.hpp"
+#include "plugin_files.hpp"
 #include "plugin_kind.hpp"
 
 namespace antipode {
@@ -42,22 +48,6 @@ std::vector<std::string> split_path_list(const char* text) {
     if (!part.empty()) parts.push_back(part);
   }
   return parts;
-}
-
-bool is_plugin_file(const fs::path& path) {
-  const std::string name = path.filename().string();
-  return name.rfind("libantipode_", 0) == 0 && path.extension() == ".so";
-}
-
-// Plugin files in `directory`, sorted by name so loading order is reproducible.
-std::vector<fs::path> plugin_files_in(const std::string& directory) {
-  std::vector<fs::path> files;
-  std::error_code error;
-  for (fs::directory_iterator it(directory, error), end; !error && it != end; it.increment(error)) {
-    if (is_plugin_file(it->path())) files.push_back(it->path());
-  }
-  std::sort(files.begin(), files.end());
-  return files;
 }
 
 // The descriptor fields the host reads end with `factories`.
@@ -108,7 +98,7 @@ PluginHost::~PluginHost() = default;
 void PluginHost::load_search_path() {
   std::map<std::string, std::string> first_seen;  // file name -> path that won
   for (const auto& directory : search_path_) {
-    for (const auto& file : plugin_files_in(directory)) {
+    for (const auto& file : detail::plugin_files_in(directory)) {
       const auto [winner, inserted] = first_seen.emplace(file.filename().string(), file.string());
       if (inserted) {
         load_library(file.string());
@@ -122,6 +112,61 @@ void PluginHost::load_search_path() {
                             {}});
       }
     }
+  }
+}
+
+namespace {
+
+// A type name made only of letters, digits and '_': what a tree file's words can name. A
+// library offering another is always opened.
+bool is_word(const std::string& name) {
+  return !name.empty() && std::all_of(name.begin(), name.end(), [](char c) {
+    return std::isalnum(static_cast<unsigned char>(c)) != 0 || c == '_';
+  });
+}
+
+}  // namespace
+
+void PluginHost::load_for(const std::vector<std::string>& names) {
+  // The winning path of each file name (the first directory holding it, as in
+  // load_search_path), in search order; what the indexed ones provide; and the libraries
+  // of directories without a current index, which are all needed. An unindexed directory
+  // after an indexed one could offer a type of a library that is not opened, which a full
+  // load would refuse: then everything is loaded.
+  std::map<std::string, std::string> winner;
+  std::vector<std::string> order;
+  std::map<std::string, std::string> provider;  // type -> path
+  std::set<std::string> needed;
+  bool indexed_before = false;
+  for (const auto& directory : search_path_) {
+    const std::vector<fs::path> files = detail::plugin_files_in(directory);
+    if (files.empty()) continue;
+    const std::optional<PluginIndex> index = read_current_plugin_index(directory);
+    if (!index && indexed_before) return load_search_path();
+    indexed_before = indexed_before || index.has_value();
+    std::set<std::string> won;
+    for (const auto& file : files) {
+      if (!winner.emplace(file.filename().string(), file.string()).second) continue;
+      won.insert(file.filename().string());
+      order.push_back(file.string());
+      if (!index) needed.insert(file.string());
+    }
+    if (!index) continue;
+    for (const auto& library : index->libraries) {
+      if (won.count(library.file) == 0) continue;
+      const std::string path = (fs::path(directory) / library.file).string();
+      for (const auto& type : library.types) {
+        // Two libraries offering one type: loading everything reports it.
+        if (!provider.emplace(type, path).second) return load_search_path();
+        if (!is_word(type)) needed.insert(path);
+      }
+    }
+  }
+  for (const auto& name : names) {
+    if (const auto it = provider.find(name); it != provider.end()) needed.insert(it->second);
+  }
+  for (const auto& path : order) {
+    if (needed.count(path) != 0) load_library(path);
   }
 }
 

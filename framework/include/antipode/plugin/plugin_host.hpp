@@ -52,6 +52,16 @@ class PluginHost : public ComponentSource {
   /// Loads every plugin library found on the search path. Refusals are recorded.
   void load_search_path();
 
+  /// Loads only the libraries that provide some of `names` (component types, node types;
+  /// other names are ignored), as the directories' indexes tell (plugin_index.hpp), every
+  /// library of a directory without a current index, and every library offering a type that
+  /// is not a plain word (letters, digits, '_'); the first directory holding a file name
+  /// wins, as in load_search_path. It loads the whole search path instead when two indexed
+  /// libraries offer one type, or a directory without a current index follows an indexed
+  /// one - the cases where loading only some could keep what a full load refuses. Call it
+  /// once, on a host that has loaded nothing.
+  void load_for(const std::vector<std::string>& names);
+
   /// Loads one library file; returns its record (loaded or refused).
   const PluginRecord& load_library(const std::string& path);
 
