@@ -91,13 +91,19 @@ HandSet ClusterSelector::select(const HandSet& in, const SelectionContext& conte
   const HandBody body = make_hand_body(g);
   std::optional<BinWalls> bin_walls;
   if (options_.bin) bin_walls.emplace(*options_.bin, body);
-  const auto feasible = [&](const Hand& hand, double held_width_m) {
+  // The support, the bin's walls and the open gripper: what rejects a hand before its held
+  // width (the costly part, held_width.hpp) is needed.
+  const auto misplaced = [&](const Hand& hand) {
     if (support && !clears_support(hand, g, *support, options_.standoff_m, options_.clearance_m))
       return Rejection::kBelowSupport;
     if (bin_walls && bin_walls->reached_by(hand)) return Rejection::kInCollision;
-    if (held_width_m < g.min_aperture_m || hand.width_m > g.max_aperture_m)
-      return Rejection::kApertureLimit;
+    if (hand.width_m > g.max_aperture_m) return Rejection::kApertureLimit;
     return Rejection::kNone;
+  };
+  const auto feasible = [&](const Hand& hand, double held_width_m) {
+    const Rejection why = misplaced(hand);
+    if (why != Rejection::kNone) return why;
+    return held_width_m < g.min_aperture_m ? Rejection::kApertureLimit : Rejection::kNone;
   };
 
   std::vector<Hand> hands = in.hands;
@@ -106,9 +112,11 @@ HandSet ClusterSelector::select(const HandSet& in, const SelectionContext& conte
   std::vector<std::size_t> order;
   for (std::size_t i = 0; i < hands.size(); ++i) {
     if (!selectable(hands[i])) continue;
+    hands[i].rejection = misplaced(hands[i]);
+    if (hands[i].rejection != Rejection::kNone) continue;
     held[i] =
         held_width_m(hands[i], *in.cloud, options_.width_trim, options_.squeeze_turn_deg, scratch);
-    hands[i].rejection = feasible(hands[i], held[i]);
+    if (held[i] < g.min_aperture_m) hands[i].rejection = Rejection::kApertureLimit;
     if (hands[i].rejection == Rejection::kNone) order.push_back(i);
   }
   std::stable_sort(order.begin(), order.end(),
