@@ -8,6 +8,7 @@
 #include "antipode/interfaces/grasp_selector.hpp"
 #include "antipode/plugin/plugin_host.hpp"
 #include "closing_tilt.hpp"
+#include "finger_cover.hpp"
 #include "hand_clearance.hpp"
 #include "hand_clusters.hpp"
 #include "held_width.hpp"
@@ -298,11 +299,59 @@ TEST_F(ClusterSelectorTest, ANeckNarrowerThanTheClosedGripperIsNotAGraspWhatever
   ASSERT_EQ(grasp_count(trimmed), 1u);
   EXPECT_NEAR(trimmed.hands[0].position_m().x(), 0.3, 1e-12);
   EXPECT_EQ(trimmed.hands[1].rejection, Rejection::kApertureLimit);
-  // Judged on the full extent, as before width_trim, the neck is the better-scored grasp.
+  // Judged on the full extent, as before width_trim, the neck is the better-scored grasp (its
+  // points, on one line, fill none of the fingers' height: that check is off here).
   const HandSet full =
-      create("min_cluster_size: 1\nunseen_is_free: true\nwidth_trim: 0")->select(set, {});
+      create("min_cluster_size: 1\nunseen_is_free: true\nwidth_trim: 0\nmin_finger_cover: 0")
+          ->select(set, {});
   ASSERT_EQ(grasp_count(full), 2u);
   EXPECT_NEAR(full.hands[0].position_m().x(), 0.0, 1e-12);
+}
+
+// A 5 cm block's two side faces where they cross the closing region of top_down(0, 0, 0.1),
+// sampled every 2 mm, only for hand-axis coordinates z in [z_low, z_high] (the fingers span
+// |z| <= 1 cm): the block fills that band of the fingers' height.
+Hand across_band(double z_low, double z_high, Cloud& cloud) {
+  Hand hand = top_down(0.0, 0.0, 0.1);
+  for (const double y : {-0.025, 0.025})
+    for (double x = 0.005; x <= 0.055; x += 0.002)
+      for (double z = z_low; z <= z_high + 1e-9; z += 0.002) {
+        cloud.points_m.push_back((hand.X_FrameHand * Eigen::Vector3d(x, y, z)).cast<float>());
+        hand.closing_points.push_back(std::int32_t(cloud.size() - 1));
+      }
+  return hand;
+}
+
+TEST(FingerCover, TheShareOfTheFingersHeightTheObjectFills) {
+  const HandGeometry gripper;  // fingers 2 cm tall
+  std::vector<float> scratch;
+  Cloud full, rim;
+  EXPECT_NEAR(selectors::finger_cover(across_band(-0.01, 0.01, full), full, gripper, 0.05, scratch),
+              1.0, 1e-6);
+  // Only the lowest 4 mm: the fingers pass over the object's edge.
+  EXPECT_NEAR(selectors::finger_cover(across_band(-0.01, -0.006, rim), rim, gripper, 0.05, scratch),
+              0.2, 1e-6);
+  EXPECT_DOUBLE_EQ(selectors::finger_cover(top_down(0, 0, 0.1), full, gripper, 0.05, scratch), 1.0);
+}
+
+TEST_F(ClusterSelectorTest, FingersThatOnlyClipAnEdgeAreNotAGrasp) {
+  auto cloud = std::make_shared<Cloud>();
+  const Hand full = across_band(-0.01, 0.01, *cloud);
+  Hand rim = across_band(-0.01, -0.006, *cloud);
+  rim.X_FrameHand.translation().x() = 0.3;
+  for (const std::int32_t i : rim.closing_points) cloud->points_m[std::size_t(i)].x() += 0.3f;
+  rim.score = 2.0;  // the better score
+  HandSet set = on_table({rim, full});
+  set.cloud = cloud;
+  const std::string base = "min_cluster_size: 1\nunseen_is_free: true\n";
+  const HandSet selection = create(base)->select(set, {});
+  ASSERT_EQ(grasp_count(selection), 1u);
+  EXPECT_NEAR(selection.hands[0].position_m().x(), 0.0, 1e-12);
+  EXPECT_EQ(selection.hands[1].rejection, Rejection::kFingersOverAnEdge);
+  EXPECT_STREQ(to_string(Rejection::kFingersOverAnEdge), "fingers over an edge");
+  const HandSet unchecked = create(base + "min_finger_cover: 0")->select(set, {});
+  ASSERT_EQ(grasp_count(unchecked), 2u);
+  EXPECT_NEAR(unchecked.hands[0].position_m().x(), 0.3, 1e-12);
 }
 
 // Hands on two objects: #0 around x = 0 (scores 5, 4, 3), #1 around x = 0.3 (scores 2, 1).
@@ -506,6 +555,8 @@ TEST_F(ClusterSelectorTest, RejectsBadParameters) {
             std::string::npos);
   EXPECT_NE(creation_error("point_radius_m: 0").find("point_radius_m"), std::string::npos);
   EXPECT_NE(creation_error("max_grasps: 0").find("max_grasps"), std::string::npos);
+  EXPECT_NE(creation_error("min_finger_cover: 1.5").find("'min_finger_cover' must be in [0, 1]"),
+            std::string::npos);
   const HandSet no_cloud;
   EXPECT_THROW(create("{}")->select(no_cloud, {}), Error);
 }

@@ -56,6 +56,8 @@ const char* to_string(Rejection reason) {
       return "no inverse kinematics solution at the pre-grasp";
     case Rejection::kOtherObject:
       return "not on the chosen object";
+    case Rejection::kFingersOverAnEdge:
+      return "fingers over an edge";
   }
   return "?";
 }

@@ -10,6 +10,7 @@
 #include "antipode/core/error.hpp"
 #include "antipode/geometry/hand_body.hpp"
 #include "closing_tilt.hpp"
+#include "finger_cover.hpp"
 #include "grasp_balance.hpp"
 #include "hand_clearance.hpp"
 #include "hand_clusters.hpp"
@@ -116,7 +117,11 @@ HandSet ClusterSelector::select(const HandSet& in, const SelectionContext& conte
     if (hands[i].rejection != Rejection::kNone) continue;
     held[i] =
         held_width_m(hands[i], *in.cloud, options_.width_trim, options_.squeeze_turn_deg, scratch);
-    if (held[i] < g.min_aperture_m) hands[i].rejection = Rejection::kApertureLimit;
+    if (held[i] < g.min_aperture_m)
+      hands[i].rejection = Rejection::kApertureLimit;
+    else if (finger_cover(hands[i], *in.cloud, g, options_.width_trim, scratch) <
+             options_.min_finger_cover)
+      hands[i].rejection = Rejection::kFingersOverAnEdge;
     if (hands[i].rejection == Rejection::kNone) order.push_back(i);
   }
   std::stable_sort(order.begin(), order.end(),

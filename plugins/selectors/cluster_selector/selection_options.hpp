@@ -58,6 +58,10 @@ struct SelectionOptions {
   /// lie within it of the fingers' may turn that far. Further turns mostly follow the back
   /// of a one-view cloud that was never seen (half a cylinder narrows as it turns).
   double squeeze_turn_deg = 20.0;
+  /// The closing-region points must span at least this share of the fingers' height along
+  /// the hand axis (finger_cover.hpp), else kFingersOverAnEdge: fingers that only clip an
+  /// object's rim or edge push it out.
+  double min_finger_cover = 0.9;
   /// With a segmented scene (the hand set's objects): at most this many grasps per object
   /// (0: no limit), as a clear-the-box policy wants a choice on every object.
   std::size_t grasps_per_object = 0;
