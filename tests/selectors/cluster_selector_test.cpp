@@ -8,6 +8,7 @@
 #include "antipode/interfaces/grasp_selector.hpp"
 #include "antipode/plugin/plugin_host.hpp"
 #include "closing_tilt.hpp"
+#include "contact_depth.hpp"
 #include "finger_cover.hpp"
 #include "hand_clearance.hpp"
 #include "hand_clusters.hpp"
@@ -354,6 +355,62 @@ TEST_F(ClusterSelectorTest, FingersThatOnlyClipAnEdgeAreNotAGrasp) {
   EXPECT_NEAR(unchecked.hands[0].position_m().x(), 0.3, 1e-12);
 }
 
+// A ball of radius 3 cm centred `centre_x_m` along the approach of top_down(0, 0, 0.1), its
+// surface sampled about every mm where it crosses the closing region, into `cloud`.
+Hand around_ball(double centre_x_m, Cloud& cloud) {
+  Hand hand = top_down(0.0, 0.0, 0.1);
+  const double r = 0.03;
+  for (int i = 0; i <= 180; ++i)
+    for (int j = 0; j < 360; ++j) {
+      const double polar = M_PI * i / 180.0, azimuth = 2.0 * M_PI * j / 360.0;
+      const Eigen::Vector3d p(centre_x_m + r * std::cos(polar),
+                              r * std::sin(polar) * std::cos(azimuth),
+                              r * std::sin(polar) * std::sin(azimuth));
+      if (p.x() < 0.0 || p.x() > 0.06 || std::abs(p.z()) > 0.01) continue;
+      cloud.points_m.push_back((hand.X_FrameHand * p).cast<float>());
+      hand.closing_points.push_back(std::int32_t(cloud.size() - 1));
+    }
+  hand.width_m = 0.06;
+  return hand;
+}
+
+TEST(ContactDepth, APatchStartsAboveTheWidestPartItMeets) {
+  Cloud centred, low;
+  // Held at its equator, 3 cm down the 6 cm fingers: each patch (3 mm deep) spans
+  // +-sqrt(2 r 3 mm - 9 mm^2) = +-1.3 cm about it.
+  EXPECT_NEAR(selectors::contact_start_m(around_ball(0.03, centred), centred, 0.003), 0.017, 1e-3);
+  // Its equator 1.5 cm beyond the tips: the widest points the fingers reach are at the tips.
+  EXPECT_GT(selectors::contact_start_m(around_ball(0.075, low), low, 0.003), 0.055);
+  EXPECT_DOUBLE_EQ(selectors::contact_start_m(top_down(0, 0, 0.1), low, 0.003), 0.0);
+}
+
+TEST_F(ClusterSelectorTest, ABallWidestBeyondTheFingertipsIsNotAGrasp) {
+  auto cloud = std::make_shared<Cloud>();
+  Hand above = around_ball(0.075, *cloud);
+  above.score = 2.0;  // the better score
+  const std::size_t first_of_centred = cloud->size();
+  Hand centred = around_ball(0.035, *cloud);  // 5 mm clear of the palm
+  centred.X_FrameHand.translation().x() = 0.3;
+  for (std::size_t i = first_of_centred; i < cloud->size(); ++i) cloud->points_m[i].x() += 0.3f;
+  HandSet set = on_table({above, centred});
+  set.cloud = cloud;
+  const std::string base = "min_cluster_size: 1\nunseen_is_free: true\n";
+  const HandSet selection = create(base)->select(set, {});
+  ASSERT_EQ(grasp_count(selection), 1u) << to_string(selection.hands[0].rejection);
+  EXPECT_NEAR(selection.hands[0].position_m().x(), 0.3, 1e-12);
+  EXPECT_EQ(selection.hands[1].rejection, Rejection::kWidestBeyondTheTips);
+  const HandSet unchecked = create(base + "fingertip_margin_m: 0")->select(set, {});
+  ASSERT_EQ(grasp_count(unchecked), 2u);
+  EXPECT_NEAR(unchecked.hands[0].position_m().x(), 0.0, 1e-12);
+  // The only hand: tried as a last resort, unless that is turned off.
+  HandSet alone = set;
+  alone.hands = {above};
+  EXPECT_EQ(grasp_count(create(base)->select(alone, {})), 1u);
+  const HandSet strict = create(base + "fingertip_last_resort: false")->select(alone, {});
+  EXPECT_EQ(grasp_count(strict), 0u);
+  EXPECT_EQ(strict.hands[0].rejection, Rejection::kWidestBeyondTheTips);
+}
+
 // Hands on two objects: #0 around x = 0 (scores 5, 4, 3), #1 around x = 0.3 (scores 2, 1).
 HandSet on_two_objects() {
   std::vector<Hand> hands;
@@ -555,6 +612,8 @@ TEST_F(ClusterSelectorTest, RejectsBadParameters) {
             std::string::npos);
   EXPECT_NE(creation_error("point_radius_m: 0").find("point_radius_m"), std::string::npos);
   EXPECT_NE(creation_error("max_grasps: 0").find("max_grasps"), std::string::npos);
+  EXPECT_NE(creation_error("fingertip_margin_m: -0.01").find("fingertip_margin_m"),
+            std::string::npos);
   EXPECT_NE(creation_error("min_finger_cover: 1.5").find("'min_finger_cover' must be in [0, 1]"),
             std::string::npos);
   const HandSet no_cloud;

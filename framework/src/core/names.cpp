@@ -58,6 +58,8 @@ const char* to_string(Rejection reason) {
       return "not on the chosen object";
     case Rejection::kFingersOverAnEdge:
       return "fingers over an edge";
+    case Rejection::kWidestBeyondTheTips:
+      return "widest beyond the fingertips";
   }
   return "?";
 }

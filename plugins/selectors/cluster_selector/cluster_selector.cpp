@@ -10,6 +10,7 @@
 #include "antipode/core/error.hpp"
 #include "antipode/geometry/hand_body.hpp"
 #include "closing_tilt.hpp"
+#include "contact_depth.hpp"
 #include "finger_cover.hpp"
 #include "grasp_balance.hpp"
 #include "hand_clearance.hpp"
@@ -40,6 +41,10 @@ double median_of(const std::vector<double>& values, const std::vector<std::size_
 }
 
 constexpr std::int32_t kAnyObject = -2;
+
+// The depth of a finger's contact patch along the closing direction (contact_depth.hpp): the
+// points a finger meets within the first 3 mm of its closing.
+constexpr double kContactPatchM = 0.003;
 
 // The object the selection is asked for: `object`, the one nearest `near_m` (-1, none,
 // when the set has no objects), or kAnyObject.
@@ -84,18 +89,35 @@ ClusterSelector::ClusterSelector(const Parameters& params)
 
 HandSet ClusterSelector::select(const HandSet& in, const SelectionContext& context) const {
   if (!in.cloud) throw Error("cluster_selector: the hand set has no cloud");
+  HandSet out = select_with(options_, in, context);
+  if (!options_.fingertip_last_resort || !(options_.fingertip_margin_m > 0.0) ||
+      (!out.hands.empty() && out.hands.front().rejection == Rejection::kNone))
+    return out;
+  const bool tips_rejected = std::any_of(out.hands.begin(), out.hands.end(), [](const Hand& hand) {
+    return hand.rejection == Rejection::kWidestBeyondTheTips;
+  });
+  if (!tips_rejected) return out;
+  // No other grasp: an attempt that may push the object out beats none (it may also leave
+  // the object in a pose with a better grasp).
+  SelectionOptions last_resort = options_;
+  last_resort.fingertip_margin_m = 0.0;
+  return select_with(last_resort, in, context);
+}
+
+HandSet ClusterSelector::select_with(const SelectionOptions& o, const HandSet& in,
+                                     const SelectionContext& context) const {
   const HandGeometry& g = in.geometry;
   std::optional<SupportPlane> support = in.support;
-  if (!support && options_.support_z_m) {
-    support = SupportPlane{Eigen::Vector3f::UnitZ(), float(-*options_.support_z_m), 0};
+  if (!support && o.support_z_m) {
+    support = SupportPlane{Eigen::Vector3f::UnitZ(), float(-*o.support_z_m), 0};
   }
   const HandBody body = make_hand_body(g);
   std::optional<BinWalls> bin_walls;
-  if (options_.bin) bin_walls.emplace(*options_.bin, body);
+  if (o.bin) bin_walls.emplace(*o.bin, body);
   // The support, the bin's walls and the open gripper: what rejects a hand before its held
   // width (the costly part, held_width.hpp) is needed.
   const auto misplaced = [&](const Hand& hand) {
-    if (support && !clears_support(hand, g, *support, options_.standoff_m, options_.clearance_m))
+    if (support && !clears_support(hand, g, *support, o.standoff_m, o.clearance_m))
       return Rejection::kBelowSupport;
     if (bin_walls && bin_walls->reached_by(hand)) return Rejection::kInCollision;
     if (hand.width_m > g.max_aperture_m) return Rejection::kApertureLimit;
@@ -115,13 +137,14 @@ HandSet ClusterSelector::select(const HandSet& in, const SelectionContext& conte
     if (!selectable(hands[i])) continue;
     hands[i].rejection = misplaced(hands[i]);
     if (hands[i].rejection != Rejection::kNone) continue;
-    held[i] =
-        held_width_m(hands[i], *in.cloud, options_.width_trim, options_.squeeze_turn_deg, scratch);
+    held[i] = held_width_m(hands[i], *in.cloud, o.width_trim, o.squeeze_turn_deg, scratch);
     if (held[i] < g.min_aperture_m)
       hands[i].rejection = Rejection::kApertureLimit;
-    else if (finger_cover(hands[i], *in.cloud, g, options_.width_trim, scratch) <
-             options_.min_finger_cover)
+    else if (finger_cover(hands[i], *in.cloud, g, o.width_trim, scratch) < o.min_finger_cover)
       hands[i].rejection = Rejection::kFingersOverAnEdge;
+    else if (o.fingertip_margin_m > 0.0 && contact_start_m(hands[i], *in.cloud, kContactPatchM) >
+                                               g.depth_m - o.fingertip_margin_m)
+      hands[i].rejection = Rejection::kWidestBeyondTheTips;
     if (hands[i].rejection == Rejection::kNone) order.push_back(i);
   }
   std::stable_sort(order.begin(), order.end(),
@@ -131,9 +154,8 @@ HandSet ClusterSelector::select(const HandSet& in, const SelectionContext& conte
   const Eigen::Vector3d up =
       support ? Eigen::Vector3d(support->normal.cast<double>()) : Eigen::Vector3d::UnitZ();
   std::vector<Proposal> proposals;
-  for (auto& members :
-       cluster_hands(hands, order, {options_.cluster_distance_m, options_.cluster_angle_deg})) {
-    if (members.size() < options_.min_cluster_size) {
+  for (auto& members : cluster_hands(hands, order, {o.cluster_distance_m, o.cluster_angle_deg})) {
+    if (members.size() < o.min_cluster_size) {
       for (std::size_t m : members) hands[m].rejection = Rejection::kSmallCluster;
       continue;
     }
@@ -141,21 +163,20 @@ HandSet ClusterSelector::select(const HandSet& in, const SelectionContext& conte
     p.grasp = mean_hand(hands, members);
     const double held_width = median_of(held, members);
     if (feasible(p.grasp, held_width) != Rejection::kNone ||
-        !approach_is_free(p.grasp, g, *in.cloud, options_.standoff_m))
+        !approach_is_free(p.grasp, g, *in.cloud, o.standoff_m))
       p.grasp.X_FrameHand = hands[members.front()].X_FrameHand;  // the seed passed them
     p.members = std::move(members);
-    p.tilt = tilt_penalty(closing_tilt_rad(p.grasp, up), options_.tilt_free_deg * M_PI / 180.0);
-    p.penalty = aperture_penalty(held_width, p.grasp.width_m, g, options_.aperture_margin_m);
-    if (const auto centroid =
-            centroid_near(objects, grasp_centre(p.grasp, g), options_.object_radius_m)) {
+    p.tilt = tilt_penalty(closing_tilt_rad(p.grasp, up), o.tilt_free_deg * M_PI / 180.0);
+    p.penalty = aperture_penalty(held_width, p.grasp.width_m, g, o.aperture_margin_m);
+    if (const auto centroid = centroid_near(objects, grasp_centre(p.grasp, g), o.object_radius_m)) {
       p.arm_m = torque_arm_m(p.grasp, g, *centroid, up);
-      p.balance = beyond(p.arm_m, options_.balance_free_m);
+      p.balance = beyond(p.arm_m, o.balance_free_m);
     }
     proposals.push_back(std::move(p));
   }
   std::stable_sort(proposals.begin(), proposals.end(), [&](const Proposal& a, const Proposal& b) {
-    if (std::abs(a.tilt - b.tilt) > options_.tilt_tolerance_rad2) return a.tilt < b.tilt;
-    const double tolerance = options_.penalty_tolerance_m2;
+    if (std::abs(a.tilt - b.tilt) > o.tilt_tolerance_rad2) return a.tilt < b.tilt;
+    const double tolerance = o.penalty_tolerance_m2;
     if (std::abs(a.penalty - b.penalty) > tolerance) return a.penalty < b.penalty;
     if (std::abs(a.balance - b.balance) > tolerance) return a.balance < b.balance;
     return a.grasp.score > b.grasp.score;
@@ -163,17 +184,16 @@ HandSet ClusterSelector::select(const HandSet& in, const SelectionContext& conte
 
   // Grasps whose lever arm is beyond the limit come last, and are tried only when no other
   // grasp remains: an attempt that may turn out of the fingers beats no attempt.
-  const auto unbalanced = [&](const Proposal& p) { return p.arm_m > options_.max_torque_arm_m; };
+  const auto unbalanced = [&](const Proposal& p) { return p.arm_m > o.max_torque_arm_m; };
   std::stable_partition(proposals.begin(), proposals.end(),
                         [&](const Proposal& p) { return !unbalanced(p); });
 
   // Built for the first grasp about to be kept: most proposals never need it.
   std::optional<OcclusionMap> occlusion;
   const auto way_in_seen = [&](const Hand& grasp) {
-    if (options_.unseen_is_free) return true;
-    if (!occlusion) occlusion.emplace(*in.cloud, float(options_.point_radius_m));
-    return way_in_is_seen(grasp, g, *occlusion, options_.standoff_m,
-                          float(options_.occlusion_margin_m));
+    if (o.unseen_is_free) return true;
+    if (!occlusion) occlusion.emplace(*in.cloud, float(o.point_radius_m));
+    return way_in_is_seen(grasp, g, *occlusion, o.standoff_m, float(o.occlusion_margin_m));
   };
 
   // Built for the first grasp about to be kept, with a robot only.
@@ -181,16 +201,16 @@ HandSet ClusterSelector::select(const HandSet& in, const SelectionContext& conte
   const auto arm_rejection = [&](const Hand& grasp) {
     if (!arm_) return Rejection::kNone;
     if (!arm_world) arm_world.emplace(arm_->world_for(context.scene ? *context.scene : *in.cloud));
-    return arm_->check(*arm_world, grasp, options_.standoff_m, context.start);
+    return arm_->check(*arm_world, grasp, o.standoff_m, context.start);
   };
 
-  const std::int32_t target = object_of_interest(in, options_);
+  const std::int32_t target = object_of_interest(in, o);
   std::map<std::int32_t, std::size_t> per_object;
   const auto object_rejection = [&](const Hand& grasp) {
     if (target != kAnyObject && (target < 0 || grasp.object != target))
       return Rejection::kOtherObject;
-    if (options_.grasps_per_object > 0 && grasp.object >= 0 &&
-        per_object[grasp.object] >= options_.grasps_per_object)
+    if (o.grasps_per_object > 0 && grasp.object >= 0 &&
+        per_object[grasp.object] >= o.grasps_per_object)
       return Rejection::kNotSelected;
     return Rejection::kNone;
   };
@@ -203,7 +223,7 @@ HandSet ClusterSelector::select(const HandSet& in, const SelectionContext& conte
   bool balanced_kept = false;
   std::map<std::int32_t, bool> balanced_on;
   const auto balanced_before = [&](const Hand& grasp) {
-    return options_.grasps_per_object > 0 ? balanced_on[grasp.object] : balanced_kept;
+    return o.grasps_per_object > 0 ? balanced_on[grasp.object] : balanced_kept;
   };
   for (const Proposal& p : proposals) {
     context.stop.throw_if_stop_requested("cluster_selector");
@@ -213,9 +233,9 @@ HandSet ClusterSelector::select(const HandSet& in, const SelectionContext& conte
       grasp.rejection = Rejection::kUnbalanced;
     else if (const Rejection why = object_rejection(grasp); why != Rejection::kNone)
       grasp.rejection = why;
-    else if (kept.size() >= options_.max_grasps)
+    else if (kept.size() >= o.max_grasps)
       grasp.rejection = Rejection::kNotSelected;
-    else if (!approach_is_free(grasp, g, *in.cloud, options_.standoff_m) || !way_in_seen(grasp))
+    else if (!approach_is_free(grasp, g, *in.cloud, o.standoff_m) || !way_in_seen(grasp))
       grasp.rejection = Rejection::kInCollision;
     else
       grasp.rejection = arm_rejection(grasp);

@@ -26,19 +26,25 @@ class ClusterSelector final : public GraspSelector {
   explicit ClusterSelector(const SelectionOptions& options);
 
   /// In order: hands already rejected or labelled otherwise than positive (or unknown) stay
-  /// out; hands reaching below the support on their way in (kBelowSupport) or whose width is
-  /// outside the aperture (kApertureLimit) are dropped; the rest are clustered, best score
+  /// out; hands reaching below the support on their way in (kBelowSupport), whose width is
+  /// outside the aperture (kApertureLimit), whose points fill too little of the fingers'
+  /// height (kFingersOverAnEdge, finger_cover.hpp) or that would meet the object only at the
+  /// fingertips (kWidestBeyondTheTips, contact_depth.hpp; when that leaves no grasp, the
+  /// selection runs again without it) are dropped; the rest are clustered, best score
   /// first, and clusters smaller than the minimum dropped (kSmallCluster). Each cluster
   /// proposes its mean grasp, or its best hand where the mean's body or way in meets
   /// observed points; proposals are ranked by tilt, criterion 2 and balance (each deciding
   /// where the ones before tie within their tolerance), then score, those with a lever arm
   /// beyond `max_torque_arm_m` last (kUnbalanced unless no other grasp is kept), and the
   /// first `max_grasps` whose way in is free (and, with a robot, that the arm reaches) are
-  /// the grasps. See GraspSelector::select for
-  /// the layout of the result.
+  /// the grasps. See GraspSelector::select for the layout of the result.
   HandSet select(const HandSet& hands, const SelectionContext& context) const override;
 
  private:
+  // The selection with `options` (select() may run it twice, see fingertip_last_resort).
+  HandSet select_with(const SelectionOptions& options, const HandSet& hands,
+                      const SelectionContext& context) const;
+
   SelectionOptions options_;
   std::shared_ptr<const ArmReach> arm_;  // null for a free-floating hand
 };

@@ -82,6 +82,8 @@ SelectionOptions read_selection_options(const Parameters& params) {
   o.width_trim = in_range(params, "width_trim", o.width_trim, 0.0, 0.45);
   o.squeeze_turn_deg = in_range(params, "squeeze_turn_deg", o.squeeze_turn_deg, 0.0, 90.0);
   o.min_finger_cover = in_range(params, "min_finger_cover", o.min_finger_cover, 0.0, 1.0);
+  o.fingertip_margin_m = in_range(params, "fingertip_margin_m", o.fingertip_margin_m, 0.0, 0.5);
+  o.fingertip_last_resort = params.get<bool>("fingertip_last_resort", o.fingertip_last_resort);
   o.grasps_per_object =
       std::size_t(whole(params, "grasps_per_object", double(o.grasps_per_object), 0, 1e6));
   o.object = std::int32_t(whole(params, "object", double(o.object), -1, 1e6));

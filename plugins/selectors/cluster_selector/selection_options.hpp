@@ -62,6 +62,13 @@ struct SelectionOptions {
   /// the hand axis (finger_cover.hpp), else kFingersOverAnEdge: fingers that only clip an
   /// object's rim or edge push it out.
   double min_finger_cover = 0.9;
+  /// Each finger's contact patch must start at least this far (m) back from the fingertips
+  /// (contact_depth.hpp), else kWidestBeyondTheTips: an object still widening at the tips is
+  /// pushed out past them. 0: no check.
+  double fingertip_margin_m = 0.01;
+  /// When that check leaves no grasp, select again without it: an attempt that may push the
+  /// object out beats giving up on it.
+  bool fingertip_last_resort = true;
   /// With a segmented scene (the hand set's objects): at most this many grasps per object
   /// (0: no limit), as a clear-the-box policy wants a choice on every object.
   std::size_t grasps_per_object = 0;

@@ -26,15 +26,16 @@ enum class Rejection : std::uint8_t {
   kNoIk,    ///< no collision-free inverse kinematics solution at the grasp
   kNoPlan,  ///< no motion to the grasp was found
   kOutOfWorkspace,
-  kBelowSupport,       ///< the body or its approach from the stand-off reaches below the support
-  kApertureLimit,      ///< the object is as wide as the opening or narrower than the closed hand
-  kClustered,          ///< merged into a cluster's grasp (see Hand::merged_into)
-  kSmallCluster,       ///< in a cluster with fewer hands than the selector's minimum
-  kNotSelected,        ///< acceptable, but ranked below the grasps the selector returns
-  kUnbalanced,         ///< too far from the object's centre of mass: it would turn out
-  kNoIkAtPreGrasp,     ///< IK at the grasp, but none collision-free at the pre-grasp
-  kOtherObject,        ///< on another object than the one the selection was asked for
-  kFingersOverAnEdge,  ///< the object fills too little of the fingers' height: they clip an edge
+  kBelowSupport,         ///< the body or its approach from the stand-off reaches below the support
+  kApertureLimit,        ///< the object is as wide as the opening or narrower than the closed hand
+  kClustered,            ///< merged into a cluster's grasp (see Hand::merged_into)
+  kSmallCluster,         ///< in a cluster with fewer hands than the selector's minimum
+  kNotSelected,          ///< acceptable, but ranked below the grasps the selector returns
+  kUnbalanced,           ///< too far from the object's centre of mass: it would turn out
+  kNoIkAtPreGrasp,       ///< IK at the grasp, but none collision-free at the pre-grasp
+  kOtherObject,          ///< on another object than the one the selection was asked for
+  kFingersOverAnEdge,    ///< the object fills too little of the fingers' height: they clip an edge
+  kWidestBeyondTheTips,  ///< the object widens beyond the fingertips: squeezed out past them
 };
 
 const char* to_string(HandLabel label);
