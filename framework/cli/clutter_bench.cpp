@@ -125,33 +125,37 @@ Json run_one(const Session& session, const RunSettings& settings, std::size_t in
              std::uint64_t seed) {
   Json out = {{"task", index}, {"seed", seed}};
   const auto start = std::chrono::steady_clock::now();
-  bt::Tree tree = load_run_tree(session, settings, seed);
-  tree.set_log_sink([](const bt::Node&, const std::string&) {});
   StageTimer timer;
-  tree.add_observer(&timer);
-  timer.start();
-  try {
-    tree.tick_while_running(std::chrono::milliseconds(0));
-    if (!tree.blackboard().has("run")) throw Error("the tree wrote no {run} (a ClearBox node's)");
-    const ClearingRun& run = tree.blackboard().get_ref<ClearingRun>("run");
-    out["objects"] = run.objects_at_start;
-    out["attempts"] = run.attempts();
-    out["successes"] = run.successes();
-    out["removed"] = run.successes();
-    out["left"] = run.objects_left();
-    out["lost"] = run.objects_lost();
-    out["stop"] = to_string(run.stop);
-    out["summary"] = run.summary();
-    Json cycles = Json::array();
-    for (const ClearingCycle& cycle : run.cycles) cycles.push_back(cycle_json(cycle));
-    out["cycles"] = cycles;
-  } catch (const std::exception& error) {
-    out["error"] = error.what();
+  {
+    bt::Tree tree = load_run_tree(session, settings, seed);
+    tree.set_log_sink([](const bt::Node&, const std::string&) {});
+    tree.add_observer(&timer);
+    timer.start();
+    try {
+      tree.tick_while_running(std::chrono::milliseconds(0));
+      if (!tree.blackboard().has("run")) throw Error("the tree wrote no {run} (a ClearBox node's)");
+      const ClearingRun& run = tree.blackboard().get_ref<ClearingRun>("run");
+      out["objects"] = run.objects_at_start;
+      out["attempts"] = run.attempts();
+      out["successes"] = run.successes();
+      out["removed"] = run.successes();
+      out["left"] = run.objects_left();
+      out["lost"] = run.objects_lost();
+      out["stop"] = to_string(run.stop);
+      out["summary"] = run.summary();
+      Json cycles = Json::array();
+      for (const ClearingCycle& cycle : run.cycles) cycles.push_back(cycle_json(cycle));
+      out["cycles"] = cycles;
+    } catch (const std::exception& error) {
+      out["error"] = error.what();
+    }
+    out["wall_s"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    tree.remove_observer(&timer);
   }
+  // After the episode's tree, its blackboard (the last cycle's clouds and hands) and its
+  // components are gone: what the process still holds is what the next episodes inherit.
   out["rss_mb"] = resident_mb();
   out["stage_s"] = timer.seconds();
-  out["wall_s"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  tree.remove_observer(&timer);
   return out;
 }
 

@@ -64,6 +64,59 @@ double beyond(double value, double free) {
   return value <= free ? 0.0 : (value - free) * (value - free);
 }
 
+// What every hand is measured against, built once per selection.
+struct Fixtures {
+  std::optional<SupportPlane> support;  // the hand set's, else one at `support_z_m`
+  HandBody body;
+  std::optional<BinWalls> bin_walls;
+  std::vector<Eigen::Vector3f> objects;  // the points more than 1 cm above the support
+  Eigen::Vector3d up;                    // the support's normal (+z without one)
+};
+
+Fixtures fixtures_of(const HandSet& in, const SelectionOptions& o) {
+  Fixtures f{in.support, make_hand_body(in.geometry), std::nullopt, {}, Eigen::Vector3d::UnitZ()};
+  if (!f.support && o.support_z_m)
+    f.support = SupportPlane{Eigen::Vector3f::UnitZ(), float(-*o.support_z_m), 0};
+  if (o.bin) f.bin_walls.emplace(*o.bin, f.body);
+  f.objects = object_points(*in.cloud, f.support, 0.01f);
+  if (f.support) f.up = f.support->normal.cast<double>();
+  return f;
+}
+
+// The support, the bin's walls and the open gripper: what rejects a hand before its held
+// width (the costly part, held_width.hpp) is needed.
+Rejection misplaced(const Hand& hand, const HandGeometry& g, const Fixtures& f,
+                    const SelectionOptions& o) {
+  if (f.support && !clears_support(hand, g, *f.support, o.standoff_m, o.clearance_m))
+    return Rejection::kBelowSupport;
+  if (f.bin_walls && f.bin_walls->reached_by(hand)) return Rejection::kInCollision;
+  if (hand.width_m > g.max_aperture_m) return Rejection::kApertureLimit;
+  return Rejection::kNone;
+}
+
+// The checks of each hand on its own (docs/selection.md, steps 1-3): sets the rejections of
+// `hands` (the input's) and returns their held widths (0 for hands not measured).
+std::vector<double> screen(std::vector<Hand>& hands, const HandSet& in, const Fixtures& f,
+                           const SelectionOptions& o) {
+  const HandGeometry& g = in.geometry;
+  std::vector<double> held(hands.size(), 0.0);
+  std::vector<float> scratch;
+  for (std::size_t i = 0; i < hands.size(); ++i) {
+    if (!selectable(hands[i])) continue;
+    hands[i].rejection = misplaced(hands[i], g, f, o);
+    if (hands[i].rejection != Rejection::kNone) continue;
+    held[i] = held_width_m(hands[i], *in.cloud, o.width_trim, o.squeeze_turn_deg, scratch);
+    if (held[i] < g.min_aperture_m)
+      hands[i].rejection = Rejection::kApertureLimit;
+    else if (finger_cover(hands[i], *in.cloud, g, o.width_trim, scratch) < o.min_finger_cover)
+      hands[i].rejection = Rejection::kFingersOverAnEdge;
+    else if (o.fingertip_margin_m > 0.0 && contact_start_m(hands[i], *in.cloud, kContactPatchM) >
+                                               g.depth_m - o.fingertip_margin_m)
+      hands[i].rejection = Rejection::kWidestBeyondTheTips;
+  }
+  return held;
+}
+
 }  // namespace
 
 double aperture_penalty(double held_width_m, double width_m, const HandGeometry& geometry,
@@ -87,72 +140,25 @@ ClusterSelector::ClusterSelector(const Parameters& params)
   }
 }
 
-HandSet ClusterSelector::select(const HandSet& in, const SelectionContext& context) const {
-  if (!in.cloud) throw Error("cluster_selector: the hand set has no cloud");
-  HandSet out = select_with(options_, in, context);
-  if (!options_.fingertip_last_resort || !(options_.fingertip_margin_m > 0.0) ||
-      (!out.hands.empty() && out.hands.front().rejection == Rejection::kNone))
-    return out;
-  const bool tips_rejected = std::any_of(out.hands.begin(), out.hands.end(), [](const Hand& hand) {
-    return hand.rejection == Rejection::kWidestBeyondTheTips;
-  });
-  if (!tips_rejected) return out;
-  // No other grasp: an attempt that may push the object out beats none (it may also leave
-  // the object in a pose with a better grasp).
-  SelectionOptions last_resort = options_;
-  last_resort.fingertip_margin_m = 0.0;
-  return select_with(last_resort, in, context);
-}
+namespace {
 
-HandSet ClusterSelector::select_with(const SelectionOptions& o, const HandSet& in,
-                                     const SelectionContext& context) const {
+// Clusters the hands `screen` kept, ranks the clusters' grasps and keeps the first that are
+// free to reach (docs/selection.md, steps 4-8); the selection's result, as select() returns.
+HandSet choose(std::vector<Hand> hands, const std::vector<double>& held, const HandSet& in,
+               const Fixtures& f, const SelectionOptions& o, const ArmReach* arm,
+               const SelectionContext& context) {
   const HandGeometry& g = in.geometry;
-  std::optional<SupportPlane> support = in.support;
-  if (!support && o.support_z_m) {
-    support = SupportPlane{Eigen::Vector3f::UnitZ(), float(-*o.support_z_m), 0};
-  }
-  const HandBody body = make_hand_body(g);
-  std::optional<BinWalls> bin_walls;
-  if (o.bin) bin_walls.emplace(*o.bin, body);
-  // The support, the bin's walls and the open gripper: what rejects a hand before its held
-  // width (the costly part, held_width.hpp) is needed.
-  const auto misplaced = [&](const Hand& hand) {
-    if (support && !clears_support(hand, g, *support, o.standoff_m, o.clearance_m))
-      return Rejection::kBelowSupport;
-    if (bin_walls && bin_walls->reached_by(hand)) return Rejection::kInCollision;
-    if (hand.width_m > g.max_aperture_m) return Rejection::kApertureLimit;
-    return Rejection::kNone;
-  };
   const auto feasible = [&](const Hand& hand, double held_width_m) {
-    const Rejection why = misplaced(hand);
+    const Rejection why = misplaced(hand, g, f, o);
     if (why != Rejection::kNone) return why;
     return held_width_m < g.min_aperture_m ? Rejection::kApertureLimit : Rejection::kNone;
   };
-
-  std::vector<Hand> hands = in.hands;
-  std::vector<double> held(hands.size(), 0.0);
-  std::vector<float> scratch;
   std::vector<std::size_t> order;
-  for (std::size_t i = 0; i < hands.size(); ++i) {
-    if (!selectable(hands[i])) continue;
-    hands[i].rejection = misplaced(hands[i]);
-    if (hands[i].rejection != Rejection::kNone) continue;
-    held[i] = held_width_m(hands[i], *in.cloud, o.width_trim, o.squeeze_turn_deg, scratch);
-    if (held[i] < g.min_aperture_m)
-      hands[i].rejection = Rejection::kApertureLimit;
-    else if (finger_cover(hands[i], *in.cloud, g, o.width_trim, scratch) < o.min_finger_cover)
-      hands[i].rejection = Rejection::kFingersOverAnEdge;
-    else if (o.fingertip_margin_m > 0.0 && contact_start_m(hands[i], *in.cloud, kContactPatchM) >
-                                               g.depth_m - o.fingertip_margin_m)
-      hands[i].rejection = Rejection::kWidestBeyondTheTips;
-    if (hands[i].rejection == Rejection::kNone) order.push_back(i);
-  }
+  for (std::size_t i = 0; i < hands.size(); ++i)
+    if (selectable(hands[i]) && hands[i].rejection == Rejection::kNone) order.push_back(i);
   std::stable_sort(order.begin(), order.end(),
                    [&](std::size_t a, std::size_t b) { return hands[a].score > hands[b].score; });
 
-  const std::vector<Eigen::Vector3f> objects = object_points(*in.cloud, support, 0.01f);
-  const Eigen::Vector3d up =
-      support ? Eigen::Vector3d(support->normal.cast<double>()) : Eigen::Vector3d::UnitZ();
   std::vector<Proposal> proposals;
   for (auto& members : cluster_hands(hands, order, {o.cluster_distance_m, o.cluster_angle_deg})) {
     if (members.size() < o.min_cluster_size) {
@@ -166,10 +172,11 @@ HandSet ClusterSelector::select_with(const SelectionOptions& o, const HandSet& i
         !approach_is_free(p.grasp, g, *in.cloud, o.standoff_m))
       p.grasp.X_FrameHand = hands[members.front()].X_FrameHand;  // the seed passed them
     p.members = std::move(members);
-    p.tilt = tilt_penalty(closing_tilt_rad(p.grasp, up), o.tilt_free_deg * M_PI / 180.0);
+    p.tilt = tilt_penalty(closing_tilt_rad(p.grasp, f.up), o.tilt_free_deg * M_PI / 180.0);
     p.penalty = aperture_penalty(held_width, p.grasp.width_m, g, o.aperture_margin_m);
-    if (const auto centroid = centroid_near(objects, grasp_centre(p.grasp, g), o.object_radius_m)) {
-      p.arm_m = torque_arm_m(p.grasp, g, *centroid, up);
+    if (const auto centroid =
+            centroid_near(f.objects, grasp_centre(p.grasp, g), o.object_radius_m)) {
+      p.arm_m = torque_arm_m(p.grasp, g, *centroid, f.up);
       p.balance = beyond(p.arm_m, o.balance_free_m);
     }
     proposals.push_back(std::move(p));
@@ -199,9 +206,9 @@ HandSet ClusterSelector::select_with(const SelectionOptions& o, const HandSet& i
   // Built for the first grasp about to be kept, with a robot only.
   std::optional<collision::ArmCollisionWorld> arm_world;
   const auto arm_rejection = [&](const Hand& grasp) {
-    if (!arm_) return Rejection::kNone;
-    if (!arm_world) arm_world.emplace(arm_->world_for(context.scene ? *context.scene : *in.cloud));
-    return arm_->check(*arm_world, grasp, o.standoff_m, context.start);
+    if (!arm) return Rejection::kNone;
+    if (!arm_world) arm_world.emplace(arm->world_for(context.scene ? *context.scene : *in.cloud));
+    return arm->check(*arm_world, grasp, o.standoff_m, context.start);
   };
 
   const std::int32_t target = object_of_interest(in, o);
@@ -247,7 +254,8 @@ HandSet ClusterSelector::select_with(const SelectionOptions& o, const HandSet& i
   }
   for (Hand& grasp : kept)
     if (grasp.closing_points.empty())
-      grasp.closing_points = points_in_closing_region(body, grasp.X_FrameHand, in.cloud->points_m);
+      grasp.closing_points =
+          points_in_closing_region(f.body, grasp.X_FrameHand, in.cloud->points_m);
   std::size_t next_kept = 0, next_dropped = kept.size();
   for (const auto& [proposal, was_kept] : placed) {
     const std::int32_t index = std::int32_t(was_kept ? next_kept++ : next_dropped++);
@@ -260,6 +268,25 @@ HandSet ClusterSelector::select_with(const SelectionOptions& o, const HandSet& i
   out.hands.insert(out.hands.end(), dropped.begin(), dropped.end());
   out.hands.insert(out.hands.end(), hands.begin(), hands.end());
   return out;
+}
+
+}  // namespace
+
+HandSet ClusterSelector::select(const HandSet& in, const SelectionContext& context) const {
+  if (!in.cloud) throw Error("cluster_selector: the hand set has no cloud");
+  const Fixtures f = fixtures_of(in, options_);
+  std::vector<Hand> hands = in.hands;
+  const std::vector<double> held = screen(hands, in, f, options_);
+  HandSet out = choose(hands, held, in, f, options_, arm_.get(), context);
+  const bool chosen = !out.hands.empty() && out.hands.front().rejection == Rejection::kNone;
+  if (chosen || !options_.fingertip_last_resort) return out;
+  // No other grasp: the hands widest beyond the fingertips are tried after all. An attempt
+  // that may push the object out beats none (it may also leave it in a better pose).
+  bool relaxed = false;
+  for (Hand& hand : hands)
+    if (hand.rejection == Rejection::kWidestBeyondTheTips)
+      hand.rejection = Rejection::kNone, relaxed = true;
+  return relaxed ? choose(std::move(hands), held, in, f, options_, arm_.get(), context) : out;
 }
 
 }  // namespace antipode::selectors

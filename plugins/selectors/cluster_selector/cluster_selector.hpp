@@ -41,10 +41,6 @@ class ClusterSelector final : public GraspSelector {
   HandSet select(const HandSet& hands, const SelectionContext& context) const override;
 
  private:
-  // The selection with `options` (select() may run it twice, see fingertip_last_resort).
-  HandSet select_with(const SelectionOptions& options, const HandSet& hands,
-                      const SelectionContext& context) const;
-
   SelectionOptions options_;
   std::shared_ptr<const ArmReach> arm_;  // null for a free-floating hand
 };
