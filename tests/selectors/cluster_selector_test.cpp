@@ -382,6 +382,17 @@ TEST(ContactDepth, APatchStartsAboveTheWidestPartItMeets) {
   // Its equator 1.5 cm beyond the tips: the widest points the fingers reach are at the tips.
   EXPECT_GT(selectors::contact_start_m(around_ball(0.075, low), low, 0.003), 0.055);
   EXPECT_DOUBLE_EQ(selectors::contact_start_m(top_down(0, 0, 0.1), low, 0.003), 0.0);
+  // The later of the two patches decides: a face the -y finger meets along its length, and
+  // on the +y side only a strip near the tips.
+  Cloud mixed;
+  Hand hand = top_down(0.0, 0.0, 0.1);
+  const auto add = [&](double x, double y) {
+    mixed.points_m.push_back((hand.X_FrameHand * Eigen::Vector3d(x, y, 0.0)).cast<float>());
+    hand.closing_points.push_back(std::int32_t(mixed.size() - 1));
+  };
+  for (double x = 0.005; x <= 0.0551; x += 0.005) add(x, -0.03);
+  for (double x = 0.052; x <= 0.0581; x += 0.002) add(x, 0.03);
+  EXPECT_NEAR(selectors::contact_start_m(hand, mixed, 0.003), 0.052, 1e-6);
 }
 
 TEST_F(ClusterSelectorTest, ABallWidestBeyondTheFingertipsIsNotAGrasp) {

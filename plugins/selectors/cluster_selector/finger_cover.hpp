@@ -9,10 +9,7 @@
 // down out of the fingers, or the fingers close above it. The points show it: along the hand
 // axis they fill only a band at one side of the closing region instead of all of it.
 //
-// Measured on 401 executed clear-the-box grasps (20 runs each of YCB objects and procedural
-// shapes, trees/clear_box.yaml, noisy two-view clouds; the cover as below with the width's
-// 5% trim): of the 24 grasps whose points filled less than 90% of the finger height, 3 held;
-// of the other 377, 74%.
+// Its effect on the clear-the-box benches, with and without it: docs/results.md.
 
 #include <vector>
 
