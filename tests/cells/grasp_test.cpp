@@ -1,6 +1,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 
 #include "antipode/core/parameters.hpp"
 #include "bullet_cell.hpp"
@@ -56,6 +57,21 @@ TEST(Grasp, TheRecordTellsWhatHappened) {
   EXPECT_TRUE(r.X_BaseHand_planned.isApprox(hand.X_FrameHand));
   EXPECT_GT(r.duration_s, 1.0);
   EXPECT_NE(r.reason.find("held cylinder"), std::string::npos) << r.reason;
+  // The true surfaces when the fingers stopped: the cylinder's side between them (2.5 cm from
+  // its axis, above the table), every point within 8 cm of the closing region's middle.
+  const HandGeometry geometry;
+  const Eigen::Vector3d middle =
+      r.X_BaseHand_closing * Eigen::Vector3d(geometry.depth_m / 2, 0.0, 0.0);
+  int on_the_side = 0;
+  for (const Eigen::Vector3f& point : r.surface_at_closing_m) {
+    const Eigen::Vector3d p = point.cast<double>();
+    EXPECT_LE((r.X_BaseHand_closing.linear().transpose() * (p - middle)).cwiseAbs().maxCoeff(),
+              0.08 + 1e-6);
+    const double from_axis_m = std::hypot(p.x() - 0.72, p.y() + 0.12);
+    if (std::abs(from_axis_m - 0.025) < 0.001 && p.z() > cell.scene().table.top_z_m + 0.001)
+      ++on_the_side;
+  }
+  EXPECT_GT(on_the_side, 100);
 }
 
 TEST(Grasp, HandBesideTheCylinderClosesOnNothing) {

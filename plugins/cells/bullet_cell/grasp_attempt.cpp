@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "antipode/geometry/hand_body.hpp"
+#include "surface_samples.hpp"
 
 namespace antipode::cells {
 namespace {
@@ -74,6 +75,16 @@ std::vector<std::string> gripper_overlaps(const PhysicsWorld& world, const HandB
     names.insert(names.end(), found.begin(), found.end());
   }
   return names;
+}
+
+// The true surfaces around the hand (GraspAttempt::surface_at_closing_m): a 16 cm cube
+// centred in the closing region.
+std::vector<Eigen::Vector3f> surface_near_hand(const PhysicsWorld& world,
+                                               const HandGeometry& geometry,
+                                               const Eigen::Isometry3d& X_BaseHand) {
+  Eigen::Isometry3d X_BaseRegion = X_BaseHand;
+  X_BaseRegion.translation() += X_BaseHand.linear().col(0) * (geometry.depth_m / 2);
+  return surface_points_near(world, X_BaseRegion, Eigen::Vector3d::Constant(0.08), 0.0025, 60000);
 }
 
 // Drives the hand from the stand-off pose to the grasp pose, one approach step per physics
@@ -156,6 +167,7 @@ int close_and_lift(PhysicsWorld& world, Gripper& gripper, const AttemptOptions& 
   world.step(int(std::ceil(options.close_s / world.options().time_step_s)));
   r.opening_at_contact_m = gripper.aperture_m();
   r.touching_at_closing = part_names(world, gripper.touching_parts(0.001));
+  r.surface_at_closing_m = surface_near_hand(world, options.gripper.geometry, r.X_BaseHand_closing);
   const std::set<int> pinched = gripper.pinched(tolerance);
   if (pinched.empty()) {
     r.outcome = GraspOutcome::kEmptyGrasp;

@@ -44,6 +44,24 @@ cv::Scalar object_colour(std::int32_t id) {
   return kPalette[id % 8];
 }
 
+void draw_points(cv::Mat& image, const OrthoView& view,
+                 const std::vector<Eigen::Vector3f>& points_m, const cv::Scalar& colour) {
+  std::vector<ProjectedPoint> projected(points_m.size());
+  for (std::size_t i = 0; i < points_m.size(); ++i)
+    projected[i] = view.project(points_m[i].cast<double>());
+  std::sort(projected.begin(), projected.end(),
+            [](const ProjectedPoint& a, const ProjectedPoint& b) { return a.depth_m > b.depth_m; });
+  if (projected.empty()) return;
+  const double near_m = projected.back().depth_m;
+  const double range_m = std::max(projected.front().depth_m - near_m, 1e-6);
+  for (const ProjectedPoint& p : projected) {
+    if (!(p.u_px >= 0 && p.v_px >= 0 && p.u_px < image.cols && p.v_px < image.rows)) continue;
+    const double nearness = 1.0 - (p.depth_m - near_m) / range_m;  // 1 = nearest
+    cv::rectangle(image, cv::Rect(static_cast<int>(p.u_px), static_cast<int>(p.v_px), 2, 2),
+                  colour * (0.55 + 0.45 * nearness), cv::FILLED);
+  }
+}
+
 void draw_cloud(cv::Mat& image, const OrthoView& view, const Cloud& cloud,
                 const std::vector<std::int32_t>& object_of_point) {
   std::vector<ProjectedPoint> projected(cloud.size());

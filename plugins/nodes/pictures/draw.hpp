@@ -18,6 +18,11 @@ namespace antipode::pictures {
 void draw_cloud(cv::Mat& image, const OrthoView& view, const Cloud& cloud,
                 const std::vector<std::int32_t>& object_of_point = {});
 
+/// Draws `points_m` (the view's frame) far to near in `colour`, darker with distance: a
+/// second layer over a cloud, e.g. a cell's true surfaces.
+void draw_points(cv::Mat& image, const OrthoView& view,
+                 const std::vector<Eigen::Vector3f>& points_m, const cv::Scalar& colour);
+
 /// A colour per object id, eight that tell apart, repeating; grey for -1 (no object).
 cv::Scalar object_colour(std::int32_t id);
 

@@ -32,9 +32,11 @@ std::vector<std::string> wrapped(const std::string& text, std::size_t width) {
   return lines;
 }
 
-/// Draws an attempt: the cloud the grasp was found in, the planned hand (green) and the hand
-/// where it was when the fingers began to close, fingers at the opening where they stopped
-/// (red), from the sensor and from the side, with the cell's account of what happened.
+/// Draws an attempt: the cloud the grasp was found in, the scene's true surfaces when the
+/// fingers stopped closing (orange, from a cell that knows them:
+/// GraspAttempt::surface_at_closing_m), the planned hand (green) and the hand where it was
+/// when the fingers began to close, fingers at the opening where they stopped (red), from
+/// the sensor and from the side, with the cell's account of what happened.
 class DrawAttempt final : public bt::SyncActionNode {
  public:
   using SyncActionNode::SyncActionNode;
@@ -74,7 +76,10 @@ class DrawAttempt final : public bt::SyncActionNode {
     render(left, sensor_view, *set, attempt);
     render(right, sensor_view.side_view(), *set, attempt);
     std::vector<std::string> lines = {std::string(to_string(attempt.outcome)) +
-                                      " (green: planned, red: at closing)"};
+                                      (attempt.surface_at_closing_m.empty()
+                                           ? " (green: planned, red: at closing)"
+                                           : " (green: planned, red: at closing, orange: the "
+                                             "true surfaces then)")};
     for (const auto& line : wrapped(attempt.reason, 2 * size_px / 9)) lines.push_back(line);
     caption(image, lines);
     write_png(file, image);
@@ -86,6 +91,7 @@ class DrawAttempt final : public bt::SyncActionNode {
   static void render(cv::Mat& image, const OrthoView& view, const HandSet& set,
                      const GraspAttempt& attempt) {
     draw_cloud(image, view, *set.cloud);
+    draw_points(image, view, attempt.surface_at_closing_m, cv::Scalar(0, 140, 255));
     Hand planned;
     planned.X_FrameHand = attempt.X_BaseHand_planned;
     draw_hand(image, view, make_hand_body(set.geometry), planned, cv::Scalar(40, 170, 40), 2);

@@ -82,6 +82,13 @@ struct GraspAttempt {
   std::vector<std::string> touching_at_closing;
   /// The object both fingers held after closing ("" when none).
   std::string pinched_object;
+  /// Where the scene really was when the fingers stopped closing: points on its true
+  /// surfaces (objects, box, table) about 2.5 mm apart, within 8 cm of the middle of the closing
+  /// region along each hand axis (X_BaseHand_closing), in the base frame; at most 60,000.
+  /// What a picture of the attempt draws over the cloud the grasp was found in (an object
+  /// pushed aside, tipped, or rolled out from between the fingers). Empty when the fingers
+  /// never closed, and from a cell without ground truth.
+  std::vector<Eigen::Vector3f> surface_at_closing_m;
 
   // The lift.
   /// The highest the pinched object rose during the lift and hold (0 when nothing was
