@@ -566,6 +566,37 @@ TEST_F(ClusterSelectorTest, AGraspFarFromTheCentreOfMassIsTriedOnlyWhenNoOtherRe
   EXPECT_EQ(selection.hands[1].rejection, Rejection::kUnbalanced);
 }
 
+TEST_F(ClusterSelectorTest, InASegmentedSceneTheBalanceIsJudgedOnTheGraspsOwnObject) {
+  // Object 0 right below hand A, 10 points; object 1, a heavier-looking neighbour 10 cm along
+  // x (the axis gravity's lever about a +y closing runs along), 90 points, below hand B.
+  auto cloud = std::make_shared<Cloud>();
+  SceneObject small{0, {}, Eigen::Vector3f(0.0f, 0.0f, 0.05f), {}, {}, 0.05f};
+  SceneObject neighbour{1, {}, Eigen::Vector3f(0.1f, 0.0f, 0.05f), {}, {}, 0.05f};
+  for (int i = 0; i < 100; ++i) {
+    SceneObject& object = i < 10 ? small : neighbour;
+    object.points.push_back(i);
+    cloud->points_m.push_back(object.centroid_m +
+                              Eigen::Vector3f(0.0f, 0.001f * float(i % 10), 0.0f));
+  }
+  Hand a = top_down(0.0, 0, 0.1, 9.0), b = top_down(0.1, 0, 0.1, 1.0);
+  HandSet set = on_table({a, b});
+  set.cloud = cloud;
+  const auto selector = create("min_cluster_size: 1");
+  // Not segmented: every object point within 15 cm counts, the pile's centroid lies 9 cm
+  // from A's grasp, and A is dropped while B remains.
+  HandSet selection = selector->select(set, {});
+  ASSERT_EQ(grasp_count(selection), 1u);
+  EXPECT_DOUBLE_EQ(selection.hands[0].score, 1.0);
+  EXPECT_EQ(selection.hands[1].rejection, Rejection::kUnbalanced);
+  // Segmented, each hand naming its object: both are balanced, and the score decides.
+  set.objects = {small, neighbour};
+  set.hands[0].object = 0;
+  set.hands[1].object = 1;
+  selection = create("min_cluster_size: 1\nmax_grasps: 2")->select(set, {});
+  ASSERT_EQ(grasp_count(selection), 2u);
+  EXPECT_DOUBLE_EQ(selection.hands[0].score, 9.0);
+}
+
 TEST_F(ClusterSelectorTest, AGraspWhoseWayInIsBlockedIsDroppedWithItsReason) {
   const auto selector = create("min_cluster_size: 1\nmax_grasps: 1");
   HandSet set =

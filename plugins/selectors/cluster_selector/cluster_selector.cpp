@@ -73,6 +73,20 @@ struct Fixtures {
   Eigen::Vector3d up;                    // the support's normal (+z without one)
 };
 
+// Where the mass of what a grasp holds lies, as the views show it: the centroid of the
+// object points within object_radius_m of the grasp, of its own object's points only when
+// the scene was segmented (the hand names its object) - in clutter, the neighbours' points
+// would pull it into the pile.
+std::optional<Eigen::Vector3d> mass_centre(const HandSet& in, const Fixtures& f, const Hand& grasp,
+                                           const SelectionOptions& o) {
+  const Eigen::Vector3d centre = grasp_centre(grasp, in.geometry);
+  if (grasp.object >= 0)
+    for (const SceneObject& object : in.objects)
+      if (object.id == grasp.object)
+        return object_centroid_near(*in.cloud, object, centre, o.object_radius_m);
+  return centroid_near(f.objects, centre, o.object_radius_m);
+}
+
 Fixtures fixtures_of(const HandSet& in, const SelectionOptions& o) {
   Fixtures f{in.support, make_hand_body(in.geometry), std::nullopt, {}, Eigen::Vector3d::UnitZ()};
   if (!f.support && o.support_z_m)
@@ -174,8 +188,7 @@ HandSet choose(std::vector<Hand> hands, const std::vector<double>& held, const H
     p.members = std::move(members);
     p.tilt = tilt_penalty(closing_tilt_rad(p.grasp, f.up), o.tilt_free_deg * M_PI / 180.0);
     p.penalty = aperture_penalty(held_width, p.grasp.width_m, g, o.aperture_margin_m);
-    if (const auto centroid =
-            centroid_near(f.objects, grasp_centre(p.grasp, g), o.object_radius_m)) {
+    if (const auto centroid = mass_centre(in, f, p.grasp, o)) {
       p.arm_m = torque_arm_m(p.grasp, g, *centroid, f.up);
       p.balance = beyond(p.arm_m, o.balance_free_m);
     }

@@ -30,6 +30,15 @@ std::optional<Eigen::Vector3d> centroid_near(const std::vector<Eigen::Vector3f>&
   return Eigen::Vector3d(sum / double(n));
 }
 
+std::optional<Eigen::Vector3d> object_centroid_near(const Cloud& cloud, const SceneObject& object,
+                                                    const Eigen::Vector3d& centre,
+                                                    double radius_m) {
+  std::vector<Eigen::Vector3f> points;
+  points.reserve(object.points.size());
+  for (const std::int32_t i : object.points) points.push_back(cloud.points_m[std::size_t(i)]);
+  return centroid_near(points, centre, radius_m);
+}
+
 double torque_arm_m(const Hand& hand, const HandGeometry& geometry, const Eigen::Vector3d& centroid,
                     const Eigen::Vector3d& up) {
   return std::abs((centroid - grasp_centre(hand, geometry)).dot(up.cross(hand.closing())));

@@ -12,6 +12,7 @@
 #include "antipode/core/cloud.hpp"
 #include "antipode/core/hand.hpp"
 #include "antipode/core/hand_geometry.hpp"
+#include "antipode/geometry/scene_layout.hpp"
 #include "antipode/geometry/support_plane.hpp"
 
 namespace antipode::selectors {
@@ -26,6 +27,12 @@ std::vector<Eigen::Vector3f> object_points(const Cloud& cloud,
 /// a grasp there holds, in an isolated scene), or nothing when there are none.
 std::optional<Eigen::Vector3d> centroid_near(const std::vector<Eigen::Vector3f>& points,
                                              const Eigen::Vector3d& centre, double radius_m);
+
+/// The centroid of the points of `object` (indices into `cloud`) within `radius_m` of
+/// `centre`: in a segmented scene, the visible part of the object a grasp there holds
+/// without its neighbours. Nothing when there are none.
+std::optional<Eigen::Vector3d> object_centroid_near(const Cloud& cloud, const SceneObject& object,
+                                                    const Eigen::Vector3d& centre, double radius_m);
 
 /// The lever arm of gravity about the hand's closing axis through its grasp centre, for a
 /// mass at `centroid` and "up" along `up` (unit): |(centroid - centre) . (up x closing)|.
