@@ -44,54 +44,50 @@ cv::Scalar object_colour(std::int32_t id) {
   return kPalette[id % 8];
 }
 
-void draw_points(cv::Mat& image, const OrthoView& view,
-                 const std::vector<Eigen::Vector3f>& points_m, const cv::Scalar& colour) {
+namespace {
+
+// Draws `points_m` far to near (nearer ones cover farther ones) as 2 x 2 pixel dots, each in
+// colour_of(index, nearness), nearness 1 for the nearest point and 0 for the farthest.
+template <class ColourOf>
+void draw_far_to_near(cv::Mat& image, const OrthoView& view,
+                      const std::vector<Eigen::Vector3f>& points_m, ColourOf colour_of) {
   std::vector<ProjectedPoint> projected(points_m.size());
   for (std::size_t i = 0; i < points_m.size(); ++i)
     projected[i] = view.project(points_m[i].cast<double>());
-  std::sort(projected.begin(), projected.end(),
-            [](const ProjectedPoint& a, const ProjectedPoint& b) { return a.depth_m > b.depth_m; });
-  if (projected.empty()) return;
-  const double near_m = projected.back().depth_m;
-  const double range_m = std::max(projected.front().depth_m - near_m, 1e-6);
-  for (const ProjectedPoint& p : projected) {
-    if (!(p.u_px >= 0 && p.v_px >= 0 && p.u_px < image.cols && p.v_px < image.rows)) continue;
-    const double nearness = 1.0 - (p.depth_m - near_m) / range_m;  // 1 = nearest
-    cv::rectangle(image, cv::Rect(static_cast<int>(p.u_px), static_cast<int>(p.v_px), 2, 2),
-                  colour * (0.55 + 0.45 * nearness), cv::FILLED);
-  }
-}
-
-void draw_cloud(cv::Mat& image, const OrthoView& view, const Cloud& cloud,
-                const std::vector<std::int32_t>& object_of_point) {
-  std::vector<ProjectedPoint> projected(cloud.size());
-  for (std::size_t i = 0; i < cloud.size(); ++i) {
-    projected[i] = view.project(cloud.points_m[i].cast<double>());
-  }
-  std::vector<std::size_t> order(cloud.size());
+  std::vector<std::size_t> order(points_m.size());
   std::iota(order.begin(), order.end(), 0);
   std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
     return projected[a].depth_m > projected[b].depth_m;
   });
-  double near_m = 0.0, far_m = 0.0;
-  if (!order.empty()) {
-    near_m = projected[order.back()].depth_m;
-    far_m = projected[order.front()].depth_m;
-  }
-  const double range_m = std::max(far_m - near_m, 1e-6);
+  if (order.empty()) return;
+  const double near_m = projected[order.back()].depth_m;
+  const double range_m = std::max(projected[order.front()].depth_m - near_m, 1e-6);
   for (const std::size_t i : order) {
     const ProjectedPoint& p = projected[i];
     // Written so that a NaN coordinate is skipped too.
     if (!(p.u_px >= 0 && p.v_px >= 0 && p.u_px < image.cols && p.v_px < image.rows)) continue;
-    const double nearness = 1.0 - (p.depth_m - near_m) / range_m;  // 1 = nearest
-    const double shade = 90.0 + 140.0 * nearness;
-    cv::Scalar colour(shade, 0.85 * shade, 0.7 * shade);
-    if (i < object_of_point.size() && object_of_point[i] >= 0) {
-      colour = object_colour(object_of_point[i]) * (0.6 + 0.4 * nearness);
-    }
-    cv::rectangle(image, cv::Rect(static_cast<int>(p.u_px), static_cast<int>(p.v_px), 2, 2), colour,
-                  cv::FILLED);
+    const double nearness = 1.0 - (p.depth_m - near_m) / range_m;
+    cv::rectangle(image, cv::Rect(static_cast<int>(p.u_px), static_cast<int>(p.v_px), 2, 2),
+                  colour_of(i, nearness), cv::FILLED);
   }
+}
+
+}  // namespace
+
+void draw_points(cv::Mat& image, const OrthoView& view,
+                 const std::vector<Eigen::Vector3f>& points_m, const cv::Scalar& colour) {
+  draw_far_to_near(image, view, points_m,
+                   [&](std::size_t, double nearness) { return colour * (0.55 + 0.45 * nearness); });
+}
+
+void draw_cloud(cv::Mat& image, const OrthoView& view, const Cloud& cloud,
+                const std::vector<std::int32_t>& object_of_point) {
+  draw_far_to_near(image, view, cloud.points_m, [&](std::size_t i, double nearness) {
+    if (i < object_of_point.size() && object_of_point[i] >= 0)
+      return object_colour(object_of_point[i]) * (0.6 + 0.4 * nearness);
+    const double shade = 90.0 + 140.0 * nearness;
+    return cv::Scalar(shade, 0.85 * shade, 0.7 * shade);
+  });
 }
 
 void draw_hand(cv::Mat& image, const OrthoView& view, const HandBody& body, const Hand& hand,
