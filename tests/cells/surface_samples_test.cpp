@@ -32,10 +32,37 @@ TEST(SurfaceSamples, PointsLieOnTheMeshInsideTheRegionAndCoverIt) {
     EXPECT_GE(in_mesh.x(), -1e-6) << "inside the region: the box's half with x >= 0";
   }
   // The half box's surface: the +x face (6 x 4 cm) and half of the four others, 112 cm^2;
-  // a grid 2 mm apart along the triangles' longest edges holds at least one point per
-  // 2 x 2 mm square of it (more where triangles share an edge).
+  // a grid 2 mm apart along the triangles' edges holds at least one point per 2 x 2 mm
+  // square of it (more where triangles share an edge or the grid is sheared).
   EXPECT_GT(points.size(), 0.0112 / (0.002 * 0.002));
   EXPECT_LT(points.size(), 4 * 0.0112 / (0.002 * 0.002));
+}
+
+// A long thin face (a box's wall, 30 x 6 cm, two triangles) is sampled about as densely as a
+// square one, and a mesh of triangles smaller than the spacing gives one point per triangle:
+// a wall next to the hand does not use up the points meant for the object it holds.
+TEST(SurfaceSamples, LongThinAndTinyTrianglesAreSampledAtTheSpacing) {
+  const Eigen::Vector3f half(0.15f, 0.0005f, 0.03f);
+  const TriangleMesh wall = box_mesh(half);
+  std::vector<Eigen::Vector3f> points;
+  sample_mesh_near(wall, Eigen::Isometry3d::Identity(), Eigen::Isometry3d::Identity(),
+                   Eigen::Vector3d::Constant(0.2), 0.002, 1000000, points);
+  const double area_m2 = 2 * (0.30 * 0.06 + 0.30 * 0.001 + 0.06 * 0.001);
+  EXPECT_GT(points.size(), area_m2 / (0.002 * 0.002));
+  EXPECT_LT(points.size(), 3 * area_m2 / (0.002 * 0.002));
+
+  TriangleMesh tiny;  // 100 triangles 1 mm across, side by side
+  for (int k = 0; k < 100; ++k) {
+    const float x = 0.002f * float(k);
+    tiny.vertices.push_back({x, 0.0f, 0.0f});
+    tiny.vertices.push_back({x + 0.001f, 0.0f, 0.0f});
+    tiny.vertices.push_back({x, 0.001f, 0.0f});
+    tiny.triangles.push_back({3 * k, 3 * k + 1, 3 * k + 2});
+  }
+  points.clear();
+  sample_mesh_near(tiny, Eigen::Isometry3d::Identity(), Eigen::Isometry3d::Identity(),
+                   Eigen::Vector3d::Constant(0.5), 0.0025, 1000000, points);
+  EXPECT_EQ(points.size(), 100u);
 }
 
 TEST(SurfaceSamples, AMeshOutsideTheRegionGivesNothingAndTheCapHolds) {

@@ -159,12 +159,32 @@ std::string approach_text(const GraspAttempt& r) {
   return text + "; ";
 }
 
+// Closes the fingers until they hold an object (it touches both, within `tolerance_m`) and
+// stall there - the aperture changes less than `stall_m` over `stall_window_s` - until they
+// are fully closed, or until `max_close_s` passes. A finger pushing an object across the
+// table, or turning it against the other finger, is still closing.
+void close_fingers(PhysicsWorld& world, Gripper& gripper, const AttemptOptions& options,
+                   double tolerance_m) {
+  const double dt = world.options().time_step_s;
+  const int window = std::max(1, int(std::ceil(options.stall_window_s / dt)));
+  const int max_windows = std::max(1, int(std::ceil(options.max_close_s / (window * dt))));
+  const double closed_m = options.gripper.geometry.min_aperture_m + options.stall_m;
+  gripper.drive_fingers(-options.gripper.finger_speed_m_s);
+  double before = gripper.aperture_m();
+  for (int i = 0; i < max_windows; ++i) {
+    world.step(window);
+    const double now = gripper.aperture_m();
+    const bool stalled = std::abs(before - now) < options.stall_m;
+    if (now <= closed_m || (stalled && !gripper.pinched(tolerance_m).empty())) return;
+    before = now;
+  }
+}
+
 // Closes, lifts and judges; fills the closing and lifting part of the record.
 int close_and_lift(PhysicsWorld& world, Gripper& gripper, const AttemptOptions& options,
                    GraspAttempt& r) {
   const double tolerance = 0.002;
-  gripper.drive_fingers(-options.gripper.finger_speed_m_s);
-  world.step(int(std::ceil(options.close_s / world.options().time_step_s)));
+  close_fingers(world, gripper, options, tolerance);
   r.opening_at_contact_m = gripper.aperture_m();
   r.touching_at_closing = part_names(world, gripper.touching_parts(0.001));
   r.surface_at_closing_m = surface_near_hand(world, options.gripper.geometry, r.X_BaseHand_closing);

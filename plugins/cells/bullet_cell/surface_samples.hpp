@@ -17,9 +17,11 @@ namespace antipode::cells {
 
 /// Points on the world's visible meshes (objects, box, table) inside the box centred at
 /// X_BaseRegion with half-sides `half_extents_m` along its axes, in the base frame. Each
-/// triangle is sampled on a grid of its edges about `spacing_m` apart (finer on short
-/// edges); triangles whose bounds miss the region are skipped. At most `max_points`: past
-/// that, the rest of the world is not sampled (raise the spacing for a large region).
+/// triangle is sampled on a grid along two of its edges, each cut into steps of at most
+/// `spacing_m` (about one point per `spacing_m` squared, however long and thin the
+/// triangle); a triangle no wider than `spacing_m` gives its centroid; triangles whose
+/// bounds miss the region are skipped. At most `max_points`: past that, the rest of the
+/// world is not sampled (raise the spacing for a large region).
 std::vector<Eigen::Vector3f> surface_points_near(const PhysicsWorld& world,
                                                  const Eigen::Isometry3d& X_BaseRegion,
                                                  const Eigen::Vector3d& half_extents_m,
