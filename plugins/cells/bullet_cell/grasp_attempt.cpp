@@ -186,7 +186,7 @@ int close_and_lift(PhysicsWorld& world, Gripper& gripper, const AttemptOptions& 
   const double tolerance = 0.002;
   close_fingers(world, gripper, options, tolerance);
   r.opening_at_contact_m = gripper.aperture_m();
-  r.touching_at_closing = part_names(world, gripper.touching_parts(0.001));
+  r.touching_at_closing = part_names(world, gripper.touching_parts(tolerance));
   r.surface_at_closing_m = surface_near_hand(world, options.gripper.geometry, r.X_BaseHand_closing);
   const std::set<int> pinched = gripper.pinched(tolerance);
   if (pinched.empty()) {
