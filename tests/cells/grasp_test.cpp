@@ -87,6 +87,31 @@ TEST(Grasp, HandBesideTheCylinderClosesOnNothing) {
   EXPECT_EQ(cell.objects().size(), 1u);
 }
 
+// A cylinder against the box's +x wall, the hand straddling both: one finger presses the
+// cylinder, the other the wall, the geared fingers stop there and nothing is pinched. The
+// record names what each finger presses.
+TEST(Grasp, FingersPressingAnObjectAgainstAWallAreNamed) {
+  CellOptions options;
+  options.sensor.scale = 0.0;
+  BulletCell cell(
+      parse("placement: isolated\n"
+            "box: { center_m: [0.72, -0.12], inner_size_m: [0.30, 0.30], "
+            "wall_height_m: 0.06 }\n"
+            "objects:\n"
+            "  - { shape: cylinder, size_m: [0.04, 0.05], position_m: [0.849, -0.12] }\n"),
+      options);
+  // The cylinder spans x 0.829-0.869, the wall 0.87-0.88: the hand centred on both.
+  const Hand hand = top_down(0.855, -0.12, cell.scene().table.top_z_m + 0.065);
+  const GraspAttempt r = execute(cell, hand);
+  EXPECT_EQ(r.outcome, GraspOutcome::kEmptyGrasp) << r.reason;
+  const auto names = [&](const std::string& part) {
+    return std::find(r.touching_at_closing.begin(), r.touching_at_closing.end(), part) !=
+           r.touching_at_closing.end();
+  };
+  EXPECT_TRUE(names("finger -y: cylinder")) << r.reason;
+  EXPECT_TRUE(names("finger +y: box wall")) << r.reason;
+}
+
 TEST(Grasp, AHandPlannedIntoTheObjectStopsShortAndSaysOnWhat) {
   BulletCell cell = cylinder_cell(0.05);
   // The palm face 3 cm below the cylinder's top: the palm meets the top and stalls (the
