@@ -40,13 +40,13 @@ void sample_mesh_near(const TriangleMesh& mesh, const Eigen::Isometry3d& X_BaseM
     // the widest corner cut into steps of at most spacing_m: about one point per spacing_m
     // squared, however long and thin the triangle (a box wall's); one no wider than the
     // spacing (a scanned mesh's) gives its centroid.
-    const int nb = std::max(1, static_cast<int>(std::ceil((b - a).norm() / spacing_m)));
-    const int nc = std::max(1, static_cast<int>(std::ceil((c - a).norm() / spacing_m)));
-    if (std::max({(b - a).norm(), (c - a).norm(), (c - b).norm()}) <= spacing_m) {
+    if ((c - b).norm() <= spacing_m) {  // the longest edge, facing the widest corner
       const Eigen::Vector3d centroid = (a + b + c) / 3.0;
       if (inside(centroid, half_extents_m)) out.push_back((X_BaseRegion * centroid).cast<float>());
       continue;
     }
+    const int nb = std::max(1, static_cast<int>(std::ceil((b - a).norm() / spacing_m)));
+    const int nc = std::max(1, static_cast<int>(std::ceil((c - a).norm() / spacing_m)));
     for (int i = 0; i <= nb; ++i) {
       for (int j = 0; double(i) / nb + double(j) / nc <= 1.0 + 1e-9; ++j) {
         const Eigen::Vector3d p = a + (b - a) * (double(i) / nb) + (c - a) * (double(j) / nc);

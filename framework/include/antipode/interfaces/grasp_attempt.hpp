@@ -78,9 +78,9 @@ struct GraspAttempt {
   /// Objects in the closing region of the actual hand pose when the fingers began to close.
   std::vector<std::string> between_fingers_at_closing;
   /// What the gripper's parts touched, within 2 mm (the pinch's tolerance: a finger pressing
-  /// on a convex hull with its collision margins may rest a millimetre or two off), when the
-  /// fingers stopped closing ("finger +y: ellipsoid", "finger -y: box wall"): why fingers that
-  /// met something pinched nothing.
+  /// on an object in clutter was seen resting 1-2 mm off it), when the fingers stopped closing
+  /// ("finger +y: ellipsoid", "finger -y: box wall"): why fingers that met something pinched
+  /// nothing.
   std::vector<std::string> touching_at_closing;
   /// The object both fingers held after closing ("" when none).
   std::string pinched_object;
