@@ -101,7 +101,8 @@ objects: auto
 max_range_m: 3.0
 scene: {max_planes: 3, max_object_height_m: 0.3, max_object_size_m: 0.4, max_gap_m: 0.02,
         cluster_tolerance_m: 0.005, min_object_points: 20, up: [0, -1, 0], max_tilt_deg: 40,
-        fixtures: [[-1, -1, -1, -0.9, -0.9, -0.9]]}
+        fixtures: [[-1, -1, -1, -0.9, -0.9, -0.9]],
+        bin: {center_m: [2, 2], inner_size_m: [0.3, 0.3], floor_z_m: 0}}
 )";
   const auto sampler = create(yaml);
   ASSERT_NE(sampler, nullptr);
@@ -126,6 +127,9 @@ TEST_F(AntipodalSamplerTest, BadParametersAreLocatedErrors) {
             "mean 'depth_m'?)");
   EXPECT_EQ(creation_error("min_bite_m: 0.5"),
             "tree.yaml:1:1: hand search: min_bite_m must be in [0, depth_m], got 0.5");
+  EXPECT_NE(creation_error("scene: {bin: {center_m: [0, 0]}}")
+                .find("missing required parameter 'inner_size_m'"),
+            std::string::npos);
   EXPECT_EQ(creation_error("support_plane: table"),
             "tree.yaml:1:1: parameter 'support_plane' must be 'auto' or 'none', got 'table'");
   EXPECT_EQ(creation_error("objects: some"),

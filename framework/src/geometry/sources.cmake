@@ -3,6 +3,7 @@
 find_package(TBB REQUIRED)
 find_package(nanoflann REQUIRED)
 list(APPEND ANTIPODE_SOURCES
+  ${CMAKE_CURRENT_LIST_DIR}/bin.cpp
   ${CMAKE_CURRENT_LIST_DIR}/crop.cpp
   ${CMAKE_CURRENT_LIST_DIR}/euclidean_clusters.cpp
   ${CMAKE_CURRENT_LIST_DIR}/grid_search.cpp

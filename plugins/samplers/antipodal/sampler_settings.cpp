@@ -4,6 +4,8 @@
 #include <string>
 #include <vector>
 
+#include "antipode/geometry/bin.hpp"
+
 namespace antipode::samplers {
 namespace {
 
@@ -129,6 +131,11 @@ ObjectMode object_mode(const Parameters& params) {
   params.fail("objects", "parameter 'objects' must be 'auto' or 'all', got '" + value + "'");
 }
 
+// A bin's walls as fixtures (`scene.bin`): grown 4 mm into the box, the sensor's depth noise
+// on a face seen at a slant, and 1 cm on every other side, so that no wall point joins an object.
+constexpr double kBinFixtureInward_m = 0.004;
+constexpr double kBinFixtureOutward_m = 0.01;
+
 // Boxes given as [xmin, ymin, zmin, xmax, ymax, zmax] lists.
 std::vector<AxisBox> boxes(const Parameters& params, const std::string& key) {
   std::vector<AxisBox> out;
@@ -156,6 +163,12 @@ SceneOptions scene_options(const Parameters& params) {
   p.get<std::vector<double>>("up", {});  // known either way
   o.max_tilt_deg = float(number(p, "max_tilt_deg", o.max_tilt_deg, 0.0, true));
   o.fixtures = boxes(p, "fixtures");
+  const Parameters bin = p.child("bin");  // known either way
+  if (p.has("bin")) {
+    const std::vector<AxisBox> walls =
+        read_bin(bin).fixtures(kBinFixtureInward_m, kBinFixtureOutward_m);
+    o.fixtures.insert(o.fixtures.end(), walls.begin(), walls.end());
+  }
   p.reject_unknown();
   try {
     o.validate();

@@ -20,17 +20,8 @@ BinWalls::BinWalls(const Bin& bin, const HandBody& body) {
   const Eigen::Vector3d hi = body.palm.max_m.cwiseMax(body.finger_plus_y.max_m);
   hand_box_ = box_of(hi - lo);
   hand_box_center_ = (lo + hi) / 2;
-  const Eigen::Vector2d half = bin.inner_size_m / 2;
-  const double t = bin.wall_thickness_m, h = bin.wall_height_m;
-  const double z = bin.floor_z_m + h / 2;
-  const Eigen::Vector2d& c = bin.center_m;
-  // Two walls across x (at -y and +y, spanning the corners), two across y (at -x and +x).
-  for (const double side : {-1.0, 1.0}) {
-    walls_.emplace_back(box_of({2 * (half.x() + t), t, h}),
-                        at({c.x(), c.y() + side * (half.y() + t / 2), z}));
-    walls_.emplace_back(box_of({t, 2 * half.y(), h}),
-                        at({c.x() + side * (half.x() + t / 2), c.y(), z}));
-  }
+  for (const Eigen::AlignedBox3d& wall : bin.walls())
+    walls_.emplace_back(box_of(wall.sizes()), at(wall.center()));
 }
 
 bool BinWalls::reached_by(const Hand& hand) const {

@@ -1,6 +1,6 @@
 #pragma once
-// A bin the objects lie in, known from the cell's layout (a clutter box): its walls are a
-// fixture, never an object to grasp. A hand whose fingers straddle a wall closes on the wall
+// A bin the objects lie in (antipode/geometry/bin.hpp): its walls are a fixture, never an
+// object to grasp. A hand whose fingers straddle a wall closes on the wall
 // (seen from the cloud, the wall's points between the fingers look like an object's), so the
 // selector drops every hand whose body or closing region reaches into a wall.
 
@@ -12,19 +12,10 @@
 #include <Eigen/Core>
 
 #include "antipode/core/hand.hpp"
+#include "antipode/geometry/bin.hpp"
 #include "antipode/geometry/hand_body.hpp"
 
 namespace antipode::selectors {
-
-/// An axis-aligned rectangular bin in the hands' frame (metres): inner size, walls standing
-/// on `floor_z_m` `wall_height_m` high and `wall_thickness_m` thick outside the inner size.
-struct Bin {
-  Eigen::Vector2d center_m = Eigen::Vector2d::Zero();
-  Eigen::Vector2d inner_size_m = Eigen::Vector2d::Zero();
-  double floor_z_m = 0.0;
-  double wall_height_m = 0.06;
-  double wall_thickness_m = 0.01;
-};
 
 /// Tells whether a hand reaches into the bin's walls: the box that bounds its fingers, palm
 /// and the closing region between the fingers (hand_body.hpp), at the hand's pose, overlaps

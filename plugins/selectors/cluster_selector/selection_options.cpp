@@ -34,30 +34,11 @@ double whole(const Parameters& params, const std::string& key, double fallback, 
   return value;
 }
 
-Eigen::Vector2d pair_at(const Parameters& p, const std::string& key) {
-  const auto v = p.require<std::vector<double>>(key);
-  if (v.size() != 2 || !std::isfinite(v[0]) || !std::isfinite(v[1]))
-    p.fail(key, "'" + key + "' needs two numbers [x, y]");
-  return {v[0], v[1]};
-}
-
-// `bin: {center_m: [x, y], inner_size_m: [x, y], floor_z_m, wall_height_m, wall_thickness_m}`
-std::optional<Bin> read_bin(const Parameters& params) {
-  if (!params.has("bin")) {
-    params.child("bin");  // known either way
-    return std::nullopt;
-  }
-  const Parameters p = params.child("bin");
-  Bin bin;
-  bin.center_m = pair_at(p, "center_m");
-  bin.inner_size_m = pair_at(p, "inner_size_m");
-  if (!(bin.inner_size_m.minCoeff() > 0.0 && bin.inner_size_m.maxCoeff() <= 10.0))
-    p.fail("inner_size_m", "'inner_size_m' must be in (0, 10] m");
-  bin.floor_z_m = in_range(p, "floor_z_m", bin.floor_z_m, -1e3, 1e3);
-  bin.wall_height_m = in_range(p, "wall_height_m", bin.wall_height_m, 0.001, 2.0);
-  bin.wall_thickness_m = in_range(p, "wall_thickness_m", bin.wall_thickness_m, 0.001, 0.5);
-  p.reject_unknown();
-  return bin;
+// `bin:` (antipode/geometry/bin.hpp), when given.
+std::optional<Bin> optional_bin(const Parameters& params) {
+  const Parameters p = params.child("bin");  // known either way
+  if (!params.has("bin")) return std::nullopt;
+  return antipode::read_bin(p);
 }
 
 }  // namespace
@@ -68,7 +49,7 @@ SelectionOptions read_selection_options(const Parameters& params) {
   o.clearance_m = in_range(params, "clearance_m", o.clearance_m, 0.0, 0.1);
   if (params.has("support_z_m")) o.support_z_m = in_range(params, "support_z_m", 0.0, -1e3, 1e3);
   params.get<double>("support_z_m", 0.0);  // known either way
-  o.bin = read_bin(params);
+  o.bin = optional_bin(params);
   o.cluster_distance_m = in_range(params, "cluster_distance_m", o.cluster_distance_m, 0.0, 0.5);
   o.cluster_angle_deg = in_range(params, "cluster_angle_deg", o.cluster_angle_deg, 0.0, 180.0);
   o.min_cluster_size =
