@@ -25,7 +25,7 @@ struct ReachBenchOptions {
   // Planning in clutter: the components of `scene_tree` (cell, sampler, classifier, selector,
   // planner), the cell's scene swapped for `scene_file`; 0 scenes skips it.
   int scenes = 0;
-  std::string scene_tree = "trees/pick_isolated.yaml";
+  std::string scene_tree = "trees/plan_reach.yaml";
   std::string scene_file = "scenes/pile_procedural.yaml";
   std::vector<std::string> views{"left", "right"};  ///< the cell's views to capture
   std::vector<std::string> set;  ///< "component.key=value" overrides for the scene tree
