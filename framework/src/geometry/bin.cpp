@@ -46,12 +46,14 @@ std::array<Eigen::AlignedBox3d, 4> Bin::walls() const {
 
 std::vector<AxisBox> Bin::fixtures(double inward_m, double outward_m) const {
   std::vector<AxisBox> out;
-  const Eigen::Vector3d centre(center_m.x(), center_m.y(), floor_z_m);
-  for (const Eigen::AlignedBox3d& wall : walls()) {
+  const auto all = walls();
+  for (std::size_t i = 0; i < all.size(); ++i) {
+    const Eigen::AlignedBox3d& wall = all[i];
     Eigen::Vector3d lo = wall.min().array() - outward_m, hi = wall.max().array() + outward_m;
-    // The face towards the inside: the wall's side nearer the centre along its thin axis.
-    const int axis = wall.sizes().x() < wall.sizes().y() ? 0 : 1;
-    if (wall.max()[axis] <= centre[axis])
+    // The face towards the inside, across the wall: walls 0 and 1 (-y, +y) face along y,
+    // walls 2 and 3 (-x, +x) along x; the even one lies on the low side.
+    const int axis = i < 2 ? 1 : 0;
+    if (i % 2 == 0)
       hi[axis] = wall.max()[axis] + inward_m;
     else
       lo[axis] = wall.min()[axis] - inward_m;

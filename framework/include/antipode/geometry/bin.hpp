@@ -28,8 +28,8 @@ struct Bin {
   double wall_height_m = 0.06;
   double wall_thickness_m = 0.01;
 
-  /// The four walls as solid boxes: the two at -y and +y span the corners, the two at -x
-  /// and +x lie between them.
+  /// The four walls as solid boxes, in the order -y, +y, -x, +x: the two at -y and +y span
+  /// the corners, the two at -x and +x lie between them.
   std::array<Eigen::AlignedBox3d, 4> walls() const;
 
   /// The walls as fixtures of the scene stage: each wall grown by `inward_m` on its face
