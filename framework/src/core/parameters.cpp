@@ -1,6 +1,8 @@
 #include "antipode/core/parameters.hpp"
 
+#include <cmath>
 #include <filesystem>
+#include <string>
 
 namespace antipode {
 
@@ -13,6 +15,21 @@ Parameters::Parameters(const YAML::Node& node, std::string owner, std::string fi
 
 bool Parameters::has(const std::string& key) const {
   return node_.IsMap() && node_[key].IsDefined() && !node_[key].IsNull();
+}
+
+double Parameters::number_in(const std::string& key, double fallback, double lo, double hi) const {
+  const double value = get<double>(key, fallback);
+  if (!(std::isfinite(value) && value >= lo && value <= hi)) {
+    const auto text = [](double v) {
+      std::string s = std::to_string(v);
+      s.erase(s.find_last_not_of('0') + 1);
+      if (!s.empty() && s.back() == '.') s.pop_back();
+      return s;
+    };
+    fail(key, "parameter '" + key + "' must be in [" + text(lo) + ", " + text(hi) + "], got " +
+                  text(value));
+  }
+  return value;
 }
 
 Parameters Parameters::child(const std::string& key) const {

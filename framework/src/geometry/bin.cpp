@@ -13,22 +13,6 @@ Eigen::Vector2d pair_at(const Parameters& p, const std::string& key) {
   return {v[0], v[1]};
 }
 
-std::string text(double value) {
-  std::string s = std::to_string(value);
-  s.erase(s.find_last_not_of('0') + 1);
-  if (!s.empty() && s.back() == '.') s.pop_back();
-  return s;
-}
-
-double in_range(const Parameters& p, const std::string& key, double fallback, double lo,
-                double hi) {
-  const double value = p.get<double>(key, fallback);
-  if (!(std::isfinite(value) && value >= lo && value <= hi))
-    p.fail(key, "parameter '" + key + "' must be in [" + text(lo) + ", " + text(hi) + "], got " +
-                    text(value));
-  return value;
-}
-
 }  // namespace
 
 std::array<Eigen::AlignedBox3d, 4> Bin::walls() const {
@@ -68,9 +52,9 @@ Bin read_bin(const Parameters& p) {
   bin.inner_size_m = pair_at(p, "inner_size_m");
   if (!(bin.inner_size_m.minCoeff() > 0.0 && bin.inner_size_m.maxCoeff() <= 10.0))
     p.fail("inner_size_m", "'inner_size_m' must be in (0, 10] m");
-  bin.floor_z_m = in_range(p, "floor_z_m", bin.floor_z_m, -1e3, 1e3);
-  bin.wall_height_m = in_range(p, "wall_height_m", bin.wall_height_m, 0.001, 2.0);
-  bin.wall_thickness_m = in_range(p, "wall_thickness_m", bin.wall_thickness_m, 0.001, 0.5);
+  bin.floor_z_m = p.number_in("floor_z_m", bin.floor_z_m, -1e3, 1e3);
+  bin.wall_height_m = p.number_in("wall_height_m", bin.wall_height_m, 0.001, 2.0);
+  bin.wall_thickness_m = p.number_in("wall_thickness_m", bin.wall_thickness_m, 0.001, 0.5);
   p.reject_unknown();
   return bin;
 }

@@ -7,27 +7,10 @@
 namespace antipode::selectors {
 namespace {
 
-std::string text(double value) {
-  std::string s = std::to_string(value);
-  s.erase(s.find_last_not_of('0') + 1);
-  if (!s.empty() && s.back() == '.') s.pop_back();
-  return s;
-}
-
-double in_range(const Parameters& params, const std::string& key, double fallback, double lo,
-                double hi) {
-  const double value = params.get<double>(key, fallback);
-  if (!(std::isfinite(value) && value >= lo && value <= hi)) {
-    params.fail(key, "parameter '" + key + "' must be in [" + text(lo) + ", " + text(hi) +
-                         "], got " + text(value));
-  }
-  return value;
-}
-
 // A whole number in [lo, hi] (a count or an id: 1.5 is an error, not 1).
 double whole(const Parameters& params, const std::string& key, double fallback, double lo,
              double hi) {
-  const double value = in_range(params, key, fallback, lo, hi);
+  const double value = params.number_in(key, fallback, lo, hi);
   if (value != std::floor(value))
     params.fail(key,
                 "parameter '" + key + "' must be a whole number, got " + std::to_string(value));
@@ -45,25 +28,25 @@ std::optional<Bin> optional_bin(const Parameters& params) {
 
 SelectionOptions read_selection_options(const Parameters& params) {
   SelectionOptions o;
-  o.standoff_m = in_range(params, "standoff_m", o.standoff_m, 0.0, 0.5);
-  o.clearance_m = in_range(params, "clearance_m", o.clearance_m, 0.0, 0.1);
-  if (params.has("support_z_m")) o.support_z_m = in_range(params, "support_z_m", 0.0, -1e3, 1e3);
+  o.standoff_m = params.number_in("standoff_m", o.standoff_m, 0.0, 0.5);
+  o.clearance_m = params.number_in("clearance_m", o.clearance_m, 0.0, 0.1);
+  if (params.has("support_z_m")) o.support_z_m = params.number_in("support_z_m", 0.0, -1e3, 1e3);
   params.get<double>("support_z_m", 0.0);  // known either way
   o.bin = optional_bin(params);
-  o.cluster_distance_m = in_range(params, "cluster_distance_m", o.cluster_distance_m, 0.0, 0.5);
-  o.cluster_angle_deg = in_range(params, "cluster_angle_deg", o.cluster_angle_deg, 0.0, 180.0);
+  o.cluster_distance_m = params.number_in("cluster_distance_m", o.cluster_distance_m, 0.0, 0.5);
+  o.cluster_angle_deg = params.number_in("cluster_angle_deg", o.cluster_angle_deg, 0.0, 180.0);
   o.min_cluster_size =
-      std::size_t(in_range(params, "min_cluster_size", double(o.min_cluster_size), 1, 1e6));
-  o.tilt_free_deg = in_range(params, "tilt_free_deg", o.tilt_free_deg, 0.0, 90.0);
-  o.tilt_tolerance_rad2 = in_range(params, "tilt_tolerance_rad2", o.tilt_tolerance_rad2, 0.0, 10.0);
-  o.occlusion_margin_m = in_range(params, "occlusion_margin_m", o.occlusion_margin_m, 0.0, 0.1);
-  o.point_radius_m = in_range(params, "point_radius_m", o.point_radius_m, 0.0005, 0.02);
+      std::size_t(params.number_in("min_cluster_size", double(o.min_cluster_size), 1, 1e6));
+  o.tilt_free_deg = params.number_in("tilt_free_deg", o.tilt_free_deg, 0.0, 90.0);
+  o.tilt_tolerance_rad2 = params.number_in("tilt_tolerance_rad2", o.tilt_tolerance_rad2, 0.0, 10.0);
+  o.occlusion_margin_m = params.number_in("occlusion_margin_m", o.occlusion_margin_m, 0.0, 0.1);
+  o.point_radius_m = params.number_in("point_radius_m", o.point_radius_m, 0.0005, 0.02);
   o.unseen_is_free = params.get<bool>("unseen_is_free", o.unseen_is_free);
-  o.aperture_margin_m = in_range(params, "aperture_margin_m", o.aperture_margin_m, 0.0, 0.1);
-  o.width_trim = in_range(params, "width_trim", o.width_trim, 0.0, 0.45);
-  o.squeeze_turn_deg = in_range(params, "squeeze_turn_deg", o.squeeze_turn_deg, 0.0, 90.0);
-  o.min_finger_cover = in_range(params, "min_finger_cover", o.min_finger_cover, 0.0, 1.0);
-  o.fingertip_margin_m = in_range(params, "fingertip_margin_m", o.fingertip_margin_m, 0.0, 0.5);
+  o.aperture_margin_m = params.number_in("aperture_margin_m", o.aperture_margin_m, 0.0, 0.1);
+  o.width_trim = params.number_in("width_trim", o.width_trim, 0.0, 0.45);
+  o.squeeze_turn_deg = params.number_in("squeeze_turn_deg", o.squeeze_turn_deg, 0.0, 90.0);
+  o.min_finger_cover = params.number_in("min_finger_cover", o.min_finger_cover, 0.0, 1.0);
+  o.fingertip_margin_m = params.number_in("fingertip_margin_m", o.fingertip_margin_m, 0.0, 0.5);
   o.fingertip_last_resort = params.get<bool>("fingertip_last_resort", o.fingertip_last_resort);
   o.grasps_per_object =
       std::size_t(whole(params, "grasps_per_object", double(o.grasps_per_object), 0, 1e6));
@@ -75,20 +58,20 @@ SelectionOptions read_selection_options(const Parameters& params) {
     if (o.object >= 0) params.fail("near_m", "give either 'object' or 'near_m', not both");
     o.near_m = Eigen::Vector3d(near[0], near[1], near[2]);
   }
-  o.balance_free_m = in_range(params, "balance_free_m", o.balance_free_m, 0.0, 1.0);
-  o.max_torque_arm_m = in_range(params, "max_torque_arm_m", o.max_torque_arm_m, 0.0, 1.0);
-  o.object_radius_m = in_range(params, "object_radius_m", o.object_radius_m, 0.01, 2.0);
+  o.balance_free_m = params.number_in("balance_free_m", o.balance_free_m, 0.0, 1.0);
+  o.max_torque_arm_m = params.number_in("max_torque_arm_m", o.max_torque_arm_m, 0.0, 1.0);
+  o.object_radius_m = params.number_in("object_radius_m", o.object_radius_m, 0.01, 2.0);
   o.penalty_tolerance_m2 =
-      in_range(params, "penalty_tolerance_m2", o.penalty_tolerance_m2, 0.0, 1.0);
-  o.max_grasps = std::size_t(in_range(params, "max_grasps", double(o.max_grasps), 1, 1e6));
+      params.number_in("penalty_tolerance_m2", o.penalty_tolerance_m2, 0.0, 1.0);
+  o.max_grasps = std::size_t(params.number_in("max_grasps", double(o.max_grasps), 1, 1e6));
   o.arm.robot_file =
       resolve_path(params.get<std::string>("robot", o.arm.robot_file), params.file());
   o.arm.arm_tip = params.get<std::string>("arm_tip", o.arm.arm_tip);
   o.arm.points_unchecked_from =
       params.get<std::string>("points_unchecked_from", o.arm.points_unchecked_from);
   o.arm.points_resolution_m =
-      in_range(params, "points_resolution_m", o.arm.points_resolution_m, 0.001, 0.1);
-  o.arm.ik_solutions = int(in_range(params, "ik_solutions", o.arm.ik_solutions, 1, 100));
+      params.number_in("points_resolution_m", o.arm.points_resolution_m, 0.001, 0.1);
+  o.arm.ik_solutions = int(params.number_in("ik_solutions", o.arm.ik_solutions, 1, 100));
   params.reject_unknown();
   return o;
 }

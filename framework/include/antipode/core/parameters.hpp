@@ -41,6 +41,10 @@ class Parameters {
     return convert<T>(key);
   }
 
+  /// The number at `key`, or `fallback` when the key is absent; throws Error located at
+  /// `key` ("parameter 'KEY' must be in [LO, HI], got V") unless it is finite and in [lo, hi].
+  double number_in(const std::string& key, double fallback, double lo, double hi) const;
+
   /// Nested parameters at `key` (an empty map when absent).
   Parameters child(const std::string& key) const;
 
