@@ -196,6 +196,33 @@ TEST_F(AntipodalSamplerTest, ObjectsAutoSamplesTheObjectsAndNamesThemOnEachHand)
   for (const Hand& hand : all.hands) EXPECT_EQ(hand.object, -1);
 }
 
+// A 30 cm box on a table seen from above, with a can as tall as the walls pressed against its
+// -x wall and another against its +x wall: through the walls the cans are one segment; with
+// `scene.bin` the walls are fixtures and each can is an object of its own.
+TEST_F(AntipodalSamplerTest, ABinsWallsAreFixturesOfTheScene) {
+  const double floor_z = -0.5;
+  Cloud cloud = testing::plane_cloud({0, 0, floor_z}, Eigen::Vector3d::UnitZ(), 0.6);
+  const Eigen::Matrix3d level = Eigen::Matrix3d::Identity();
+  for (const double side : {-1.0, 1.0}) {
+    testing::append(
+        cloud, testing::box_cloud({side * 0.155, 0, floor_z + 0.03}, level, {0.01, 0.32, 0.06}));
+    testing::append(
+        cloud, testing::box_cloud({0, side * 0.155, floor_z + 0.03}, level, {0.30, 0.01, 0.06}));
+    testing::append(cloud, testing::cylinder_cloud({side * 0.127, side * 0.05, floor_z + 0.03},
+                                                   Eigen::Vector3d::UnitZ(), 0.05, 0.06));
+  }
+  const std::string yaml = "samples: 300\nobjects: auto\nview_origin: [0, 0, 0]\n";
+  const HandSet walls_join = create(yaml)->sample(cloud, RandomStream(3), {});
+  EXPECT_EQ(walls_join.objects.size(), 1u) << "the cans and the walls, one segment";
+  const HandSet apart =
+      create(yaml + "scene: {bin: {center_m: [0, 0], inner_size_m: [0.3, 0.3], floor_z_m: " +
+             std::to_string(floor_z) + "}}")
+          ->sample(cloud, RandomStream(3), {});
+  ASSERT_EQ(apart.objects.size(), 2u);
+  for (const SceneObject& object : apart.objects)
+    EXPECT_NEAR(std::abs(object.centroid_m.x()), 0.127, 0.02) << "a can, not a wall";
+}
+
 TEST_F(AntipodalSamplerTest, UnusableCloudsAreErrors) {
   const auto sampler = create("workspace: {min: [5, 5, 5], max: [6, 6, 6]}");
   EXPECT_THROW(sampler->sample(cylinder(), RandomStream(1), {}), Error);
