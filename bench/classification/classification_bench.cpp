@@ -1,16 +1,20 @@
 // Classification with the shipped HOG + SVM model (models/hog_svm.model) on table_mug.pcd
 // (104,444 points): descriptors and decision values of 4,000 hand hypotheses, and the whole
-// detection (file -> hypotheses -> classified grasps, as trees/detect.yaml runs it). Run with
+// detection (file -> hypotheses -> screen -> classified grasps, as trees/detect.yaml runs it).
+// Run with
 //   classification_bench --benchmark_repetitions=20 --benchmark_report_aggregates_only=true
 #include <algorithm>
 #include <filesystem>
 
 #include <benchmark/benchmark.h>
 
+#include "antipode/core/parameters.hpp"
 #include "antipode/geometry/sample_hands.hpp"
 #include "antipode/grasp/hand_image.hpp"
 #include "antipode/grasp/svm_model.hpp"
+#include "antipode/interfaces/grasp_selector.hpp"
 #include "antipode/io/load_cloud.hpp"
+#include "antipode/plugin/plugin_host.hpp"
 
 namespace antipode {
 namespace {
@@ -96,26 +100,77 @@ void BM_Classify4000(benchmark::State& state) {
 }
 BENCHMARK(BM_Classify4000)->Unit(benchmark::kMillisecond)->UseRealTime();
 
-// File -> hypotheses (4,000 samples) -> classified grasps, 2 threads.
+// The selector of trees/detect.yaml (cluster_selector, its defaults), loaded as the tree
+// loads it.
+const GraspSelector& detect_selector() {
+  static PluginHost host(std::vector<std::string>{});
+  static const std::shared_ptr<GraspSelector> selector = [] {
+    host.load_library(std::string(ANTIPODE_BENCH_PLUGIN_DIR) + "/" +
+                      plugin_file_name("cluster_selector"));
+    const Parameters params(YAML::Load("{}"), "component 'selector'", "detect.yaml");
+    return std::dynamic_pointer_cast<GraspSelector>(host.create("cluster_selector", params));
+  }();
+  return *selector;
+}
+
+// The selector's screen of table_mug.pcd's hypotheses (as trees/detect.yaml samples them).
+void BM_Screen(benchmark::State& state) {
+  if (!have_inputs(state)) return;
+  const HandSet set =
+      sample_hands(load_cloud(kScene), detect_sampling(false, true), RandomStream(1));
+  const GraspSelector& selector = detect_selector();
+  std::size_t left = 0;
+  for (auto _ : state) {
+    const HandSet screened = selector.screen(set, {});
+    left = static_cast<std::size_t>(
+        std::count_if(screened.hands.begin(), screened.hands.end(),
+                      [](const Hand& h) { return h.rejection == Rejection::kNone; }));
+  }
+  state.counters["hands"] = static_cast<double>(set.hands.size());
+  state.counters["left"] = static_cast<double>(left);
+}
+BENCHMARK(BM_Screen)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+// File -> hypotheses (4,000 samples) -> the selector's screen -> classified grasps, 2 threads:
+// what trees/detect.yaml does (ScreenHands, then ClassifyHands on the hands left).
+// Argument `objects`: 0 samples everything the support leaves (objects: all), 1 finds the
+// objects on the support first and samples only them (objects: auto, as trees/detect.yaml).
+// Argument `screen`: 1 screens the hypotheses before classifying them (as the tree does), 0
+// classifies them all.
 void BM_FileToClassifiedGrasps(benchmark::State& state) {
   if (!have_inputs(state)) return;
   const SvmModel& svm = model();
-  std::size_t hands = 0, grasps = 0;
+  const bool screen = state.range(1) != 0;
+  const GraspSelector& selector = detect_selector();
+  std::size_t hands = 0, classified = 0, grasps = 0;
   for (auto _ : state) {
-    const HandSet set = sample_hands(load_cloud(kScene),
-                                     detect_sampling(false, state.range(0) != 0), RandomStream(1));
+    HandSet set = sample_hands(load_cloud(kScene), detect_sampling(false, state.range(0) != 0),
+                               RandomStream(1));
+    hands = set.hands.size();
+    if (screen) {
+      set = selector.screen(set, {});
+      set.hands.erase(std::remove_if(set.hands.begin(), set.hands.end(),
+                                     [](const Hand& h) { return h.rejection != Rejection::kNone; }),
+                      set.hands.end());
+    }
     const auto values =
         svm.decision_values(hand_descriptors(set, set.geometry, svm.descriptor.image, 2), 2);
-    hands = set.hands.size();
+    classified = set.hands.size();
     grasps = static_cast<std::size_t>(
         std::count_if(values.begin(), values.end(), [](double v) { return v >= 0.0; }));
   }
   state.counters["hands"] = static_cast<double>(hands);
+  state.counters["classified"] = static_cast<double>(classified);
   state.counters["grasps"] = static_cast<double>(grasps);
 }
-// Argument: 0 samples everything the support leaves (objects: all), 1 finds the objects on
-// the support first and samples only them (objects: auto, as trees/detect.yaml).
-BENCHMARK(BM_FileToClassifiedGrasps)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_FileToClassifiedGrasps)
+    ->ArgNames({"objects", "screen"})
+    ->Args({0, 0})
+    ->Args({1, 0})
+    ->Args({0, 1})
+    ->Args({1, 1})
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
 
 }  // namespace
 }  // namespace antipode

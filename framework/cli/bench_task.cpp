@@ -51,6 +51,7 @@ std::vector<std::pair<std::string, std::string>> task_overrides(const TaskSettin
       {"cell.seed", std::to_string(task.seed)},
       {"cell.render_threads", threads},
       {"sampler.threads", threads},
+      {"selector.threads", threads},
       {"views", yaml_list(task.variant->views)},
       {"picture_file", picture_file(settings, task)}};
   if (!settings.noise.empty()) entries.emplace_back("cell.noise", settings.noise);

@@ -72,6 +72,7 @@ std::vector<std::pair<std::string, std::string>> shared_entries(const ClutterBen
            {"cell.object_count", std::to_string(o.objects_per_run)},
            {"cell.render_threads", t},
            {"sampler.threads", t},
+           {"selector.threads", t},
            {"classifier.threads", t}})
     entries.push_back(std::move(entry));
   if (o.objects != "procedural") entries.emplace_back("cell.objects", fs::absolute(o.objects));

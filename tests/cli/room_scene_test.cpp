@@ -47,14 +47,19 @@ TEST_F(RoomSceneTest, TheBestGraspsLieOnTheObjectsOnTheTable) {
     EXPECT_TRUE(on_table(hands[i])) << hands[i].dump();
     objects.insert(hands[i]["object"].get<int>());
   }
-  for (const auto& hand : hands) EXPECT_TRUE(on_table(hand)) << hand.dump();
-  EXPECT_GE(objects.size(), 2u) << "the best grasps are spread over the objects";
+  for (const auto& hand : hands) {
+    EXPECT_TRUE(on_table(hand)) << hand.dump();
+    objects.insert(hand["object"].get<int>());
+  }
+  EXPECT_EQ(objects.size(), 3u) << "each of the table's three objects has grasps";
 }
 
-// Without the scene stage the room is sampled too: hands lie off the table.
-TEST_F(RoomSceneTest, SamplingEverythingPutsHandsOnTheRoom) {
-  const auto hands = detect("--set sampler.objects=all");
-  EXPECT_TRUE(std::any_of(hands.begin(), hands.end(), [](const auto& h) { return !on_table(h); }));
+// Without the scene stage the room is sampled too: its walls, floor and shelf take most of
+// the samples, and few grasps are left on the objects.
+TEST_F(RoomSceneTest, SamplingEverythingSpendsTheSamplesOnTheRoom) {
+  const std::size_t on_objects = detect("").size();
+  const std::size_t everywhere = detect("--set sampler.objects=all").size();
+  EXPECT_LT(4 * everywhere, on_objects) << last_output_;
 }
 
 }  // namespace

@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <regex>
@@ -190,6 +191,79 @@ TEST_F(PipelineNodesTest, AMisbehavingPlannerFailsItsNodeWithTheReason) {
                    {"nan", "the planner returned waypoint 1 with a position that is not finite"},
                    {"times", "the planner returned 1 times for 2 waypoints"},
                    {"empty", "the planner returned a solved plan without waypoints"}});
+}
+
+// ScreenHands marks what the selector rules out before classification; ClassifyHands then
+// classifies only the other hands and passes the screened ones on as they were.
+TEST_F(PipelineNodesTest, ScreenedHandsAreNotClassified) {
+  bt::Tree tree = load(R"(
+components:
+  cell: { plugin: line_cell, points: 5 }
+  sampler: { plugin: point_sampler }
+  classifier: { plugin: height_classifier }
+  selector: { plugin: best_first, screen_below_m: 0.025 }
+main: t
+trees:
+  t:
+    Sequence:
+      - CaptureCloud: { cell: cell, cloud: "{cloud}" }
+      - SampleHands: { sampler: sampler, cloud: "{cloud}", hands: "{hands}" }
+      - ScreenHands: { selector: selector, hands: "{hands}", screened: "{screened}" }
+      - ClassifyHands: { classifier: classifier, hands: "{screened}", classified: "{scored}" }
+)");
+  std::vector<std::string> lines;
+  tree.set_log_sink([&](const bt::Node&, const std::string& line) { lines.push_back(line); });
+  ASSERT_EQ(tree.tick_while_running(), bt::Status::kSuccess);
+  const auto scored = tree.blackboard().get<HandSetPtr>("scored");
+  ASSERT_EQ(scored->hands.size(), 5u);
+  for (std::size_t i = 0; i < 5; ++i) {
+    const Hand& hand = scored->hands[i];
+    const bool screened = i < 3;  // at z = 0, 0.01 and 0.02
+    EXPECT_EQ(hand.rejection, screened ? Rejection::kOutOfWorkspace : Rejection::kNone) << i;
+    EXPECT_EQ(hand.label, screened ? HandLabel::kUnknown : HandLabel::kPositive) << i;
+    EXPECT_DOUBLE_EQ(hand.score, screened ? 0.0 : hand.position_m().z()) << i;
+  }
+  EXPECT_NE(
+      std::find(lines.begin(), lines.end(), "2 of 5 hands left to classify (3 out of workspace)"),
+      lines.end());
+  EXPECT_NE(std::find(lines.begin(), lines.end(),
+                      "2 of 2 hands classified as grasps (3 rejected before, not classified)"),
+            lines.end());
+}
+
+// A screen that leaves nothing, or a selector whose screen misbehaves, fails ScreenHands with
+// the reason; nothing is passed on.
+TEST_F(PipelineNodesTest, ScreenHandsFailsWithTheReason) {
+  const auto tree_with = [&](const std::string& selector) {
+    return load(R"(
+components:
+  cell: { plugin: line_cell, points: 5 }
+  sampler: { plugin: point_sampler }
+  selector: )" + selector +
+                R"(
+main: t
+trees:
+  t:
+    Sequence:
+      - CaptureCloud: { cell: cell, cloud: "{cloud}" }
+      - SampleHands: { sampler: sampler, cloud: "{cloud}", hands: "{hands}" }
+      - ScreenHands: { name: screen, selector: selector, hands: "{hands}", screened: "{screened}" }
+)");
+  };
+  for (const auto& [selector, reason] :
+       {std::pair<std::string, std::string>{"{ plugin: best_first, screen_below_m: 1 }",
+                                            "the selector's screen left no hand (5 out of "
+                                            "workspace)"},
+        {"{ plugin: garbage_selector, garbage: drop }", "the selector returned 4 hands for 5"},
+        {"{ plugin: garbage_selector, garbage: score }",
+         "the selector changed hand 0 (a screen only sets rejections)"},
+        {"{ plugin: garbage_selector, garbage: throw }",
+         "the selector failed: the robot file vanished"}}) {
+    bt::Tree tree = tree_with(selector);
+    EXPECT_EQ(failure_of(tree, "screen"), reason) << selector;
+    EXPECT_EQ(tree.blackboard().has("screened"), reason.find("left no hand") != std::string::npos)
+        << selector;
+  }
 }
 
 TEST_F(PipelineNodesTest, LoopOverScenesCountsSeedsAndOutcomes) {

@@ -422,6 +422,57 @@ TEST_F(ClusterSelectorTest, ABallWidestBeyondTheFingertipsIsNotAGrasp) {
   EXPECT_EQ(strict.hands[0].rejection, Rejection::kWidestBeyondTheTips);
 }
 
+// The screen (before classification) drops what select() would drop whatever the score, but
+// leaves the hands widest beyond the fingertips, which select() tries when nothing else is
+// left; only rejections change.
+TEST_F(ClusterSelectorTest, TheScreenDropsWhatTheGeometryRulesOutAndLeavesTheTipsToSelection) {
+  auto cloud = std::make_shared<Cloud>();
+  Hand beyond_tips = around_ball(0.075, *cloud);
+  Hand rim = across_band(-0.01, -0.006, *cloud);
+  std::vector<Hand> hands = {top_down(0.3, 0, 0.05),
+                             top_down(0.4, 0, 0.1, 1.0, 0.08),
+                             top_down(0.5, 0, 0.1, 1.0, 0.02),
+                             beyond_tips,
+                             rim,
+                             top_down(0.6, 0, 0.1)};
+  hands[1].rejection = Rejection::kNotAntipodal;  // an earlier stage's reason stays
+  for (Hand& hand : hands) hand.label = HandLabel::kUnknown, hand.score = 0.0;
+  HandSet set = on_table(hands);
+  set.cloud = cloud;
+  const auto selector = create("min_cluster_size: 1\nunseen_is_free: true");
+  const HandSet screened = selector->screen(set, {});
+  ASSERT_EQ(screened.hands.size(), hands.size());
+  EXPECT_EQ(screened.cloud, set.cloud);
+  const std::vector<Rejection> expected = {Rejection::kBelowSupport,      Rejection::kNotAntipodal,
+                                           Rejection::kApertureLimit,     Rejection::kNone,
+                                           Rejection::kFingersOverAnEdge, Rejection::kNone};
+  for (std::size_t i = 0; i < hands.size(); ++i) {
+    EXPECT_EQ(screened.hands[i].rejection, expected[i]) << "hand " << i;
+    EXPECT_TRUE(screened.hands[i].X_FrameHand.isApprox(hands[i].X_FrameHand)) << "hand " << i;
+    EXPECT_EQ(screened.hands[i].label, HandLabel::kUnknown) << "hand " << i;
+  }
+  // Classified after the screen or not, the selection is the same.
+  const auto classify = [](HandSet s) {
+    for (Hand& hand : s.hands)
+      if (hand.rejection == Rejection::kNone) hand.label = HandLabel::kPositive, hand.score = 1.0;
+    return s;
+  };
+  const HandSet direct = selector->select(classify(set), {});
+  const HandSet after_screen = selector->select(classify(screened), {});
+  ASSERT_EQ(direct.hands.size(), after_screen.hands.size());
+  ASSERT_EQ(grasp_count(direct), 1u);
+  EXPECT_EQ(grasp_count(after_screen), 1u);
+  for (std::size_t i = 0; i < direct.hands.size(); ++i) {
+    EXPECT_EQ(direct.hands[i].rejection, after_screen.hands[i].rejection) << "hand " << i;
+    EXPECT_TRUE(direct.hands[i].X_FrameHand.isApprox(after_screen.hands[i].X_FrameHand));
+  }
+  // With the last hand gone, the ball beyond the tips is the last resort: it was kept for it.
+  set.hands.pop_back();
+  const HandSet last = selector->select(classify(selector->screen(set, {})), {});
+  ASSERT_EQ(grasp_count(last), 1u);
+  EXPECT_NEAR(last.hands[0].position_m().x(), 0.0, 1e-12);
+}
+
 // Hands on two objects: #0 around x = 0 (scores 5, 4, 3), #1 around x = 0.3 (scores 2, 1).
 HandSet on_two_objects() {
   std::vector<Hand> hands;

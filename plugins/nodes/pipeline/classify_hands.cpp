@@ -1,6 +1,7 @@
 #include <algorithm>
 #include <cmath>
 #include <string>
+#include <vector>
 
 #include "antipode/bt/action_node.hpp"
 #include "antipode/interfaces/classifier.hpp"
@@ -10,22 +11,37 @@
 namespace antipode::pipeline {
 namespace {
 
-// What is wrong with `out` as a classification of `in`: other hands, or scores that are
-// not numbers. "" when nothing is.
-std::string classification_problem(const HandSet& in, const HandSet& out) {
-  if (out.hands.size() != in.hands.size())
+// The hands of `in` without a rejection, as a set of their own, and where each came from.
+// A hand an earlier stage rejected (ScreenHands) is not worth describing.
+HandSet candidates_of(const HandSet& in, std::vector<std::size_t>& where) {
+  HandSet candidates{in.cloud, {}, in.geometry, in.support, in.objects};
+  for (std::size_t i = 0; i < in.hands.size(); ++i) {
+    if (in.hands[i].rejection != Rejection::kNone) continue;
+    where.push_back(i);
+    candidates.hands.push_back(in.hands[i]);
+  }
+  return candidates;
+}
+
+// What is wrong with `out` as a classification of the hands of `in` at `where`: other
+// hands, or scores that are not numbers. "" when nothing is.
+std::string classification_problem(const HandSet& in, const std::vector<std::size_t>& where,
+                                   const HandSet& out) {
+  if (out.hands.size() != where.size())
     return "returned " + std::to_string(out.hands.size()) + " hands for " +
-           std::to_string(in.hands.size());
-  for (std::size_t i = 0; i < out.hands.size(); ++i) {
-    if (!std::isfinite(out.hands[i].score))
+           std::to_string(where.size());
+  for (std::size_t k = 0; k < out.hands.size(); ++k) {
+    const std::size_t i = where[k];
+    if (!std::isfinite(out.hands[k].score))
       return "gave hand " + std::to_string(i) + " a score that is not a number";
-    if (!out.hands[i].X_FrameHand.matrix().isApprox(in.hands[i].X_FrameHand.matrix()))
+    if (!out.hands[k].X_FrameHand.matrix().isApprox(in.hands[i].X_FrameHand.matrix()))
       return "moved hand " + std::to_string(i);
   }
   return "";
 }
 
-/// Scores and labels hands with a classifier; fails when no hand is labelled a grasp.
+/// Scores and labels hands with a classifier; fails when no hand is labelled a grasp. Hands
+/// that already have a rejection pass through as they are.
 class ClassifyHands final : public bt::SyncActionNode {
  public:
   using SyncActionNode::SyncActionNode;
@@ -34,33 +50,43 @@ class ClassifyHands final : public bt::SyncActionNode {
             bt::NodeCategory::kAction,
             {bt::component_port<Classifier>("classifier", "the classifier to use"),
              bt::input_port<HandSetPtr>("hands", "hypotheses to classify"),
-             bt::output_port<HandSetPtr>("classified", "the same hands, scored and labelled")},
+             bt::output_port<HandSetPtr>(
+                 "classified",
+                 "the same hands, scored and labelled (those an earlier stage rejected as "
+                 "they were)")},
             0,
             0,
-            "Scores and labels hand hypotheses (paper section 4).",
+            "Scores and labels hand hypotheses (paper section 4); hands an earlier stage "
+            "rejected (ScreenHands) are not classified.",
             {}};
   }
 
  protected:
   bt::Status tick() override {
     const HandSetPtr in = get_input<HandSetPtr>("hands");
-    auto classified = std::make_shared<HandSet>(*in);
+    std::vector<std::size_t> where;
+    HandSet scored = candidates_of(*in, where);
     // A classifier's fault (it threw, or gave back something that is not a classification of
     // these hands) fails this node with the reason; nothing wrong is passed on.
     if (const auto error = plugin_error(
-            [&] { component<Classifier>("classifier").classify(*classified, stop_token()); })) {
+            [&] { component<Classifier>("classifier").classify(scored, stop_token()); })) {
       set_failure_reason("the classifier failed: " + *error);
       return bt::Status::kFailure;
     }
-    if (const std::string problem = classification_problem(*in, *classified); !problem.empty()) {
+    if (const std::string problem = classification_problem(*in, where, scored); !problem.empty()) {
       set_failure_reason("the classifier " + problem);
       return bt::Status::kFailure;
     }
+    auto classified = std::make_shared<HandSet>(*in);
+    for (std::size_t k = 0; k < where.size(); ++k)
+      classified->hands[where[k]] = std::move(scored.hands[k]);
     const auto grasps =
         std::count_if(classified->hands.begin(), classified->hands.end(),
                       [](const Hand& hand) { return hand.label == HandLabel::kPositive; });
-    log(std::to_string(grasps) + " of " + std::to_string(classified->hands.size()) +
-        " hands classified as grasps");
+    const std::size_t skipped = in->hands.size() - where.size();
+    log(std::to_string(grasps) + " of " + std::to_string(where.size()) +
+        " hands classified as grasps" +
+        (skipped > 0 ? " (" + std::to_string(skipped) + " rejected before, not classified)" : ""));
     set_output("classified", HandSetPtr(std::move(classified)));
     if (grasps == 0) {
       set_failure_reason("no hand was classified as a grasp");

@@ -9,6 +9,7 @@ namespace antipode::pipeline {
 void register_load_cloud(bt::NodeRegistry& registry);
 void register_capture_cloud(bt::NodeRegistry& registry);
 void register_sample_hands(bt::NodeRegistry& registry);
+void register_screen_hands(bt::NodeRegistry& registry);
 void register_classify_hands(bt::NodeRegistry& registry);
 void register_select_grasps(bt::NodeRegistry& registry);
 void register_plan_reach(bt::NodeRegistry& registry);

@@ -9,6 +9,7 @@ const antipode::PluginFactory kFactories[] = {
     {"node", "LoadCloud", "reads a PCD or PLY file", nullptr, &register_load_cloud},
     {"node", "CaptureCloud", "captures a cloud from a cell", nullptr, &register_capture_cloud},
     {"node", "SampleHands", "samples hand hypotheses", nullptr, &register_sample_hands},
+    {"node", "ScreenHands", "drops hands before classification", nullptr, &register_screen_hands},
     {"node", "ClassifyHands", "scores and labels hands", nullptr, &register_classify_hands},
     {"node", "SelectGrasps", "ranks grasps", nullptr, &register_select_grasps},
     {"node", "PlanReach", "plans an arm motion to a grasp", nullptr, &register_plan_reach},

@@ -74,6 +74,24 @@ std::string selection_problem(const HandSet& given, const HandSet& selection) {
   return "";
 }
 
+std::string screening_problem(const HandSet& given, const HandSet& screened) {
+  if (screened.cloud != given.cloud) return "returned its screen with another cloud";
+  if (screened.hands.size() != given.hands.size())
+    return "returned " + std::to_string(screened.hands.size()) + " hands for " +
+           std::to_string(given.hands.size());
+  for (std::size_t i = 0; i < given.hands.size(); ++i) {
+    const Hand& before = given.hands[i];
+    const Hand& after = screened.hands[i];
+    if (!after.X_FrameHand.matrix().isApprox(before.X_FrameHand.matrix()) ||
+        after.score != before.score || after.label != before.label)
+      return "changed hand " + std::to_string(i) + " (a screen only sets rejections)";
+    if (before.rejection != Rejection::kNone && after.rejection != before.rejection)
+      return "changed the rejection of hand " + std::to_string(i) + " from '" +
+             to_string(before.rejection) + "'";
+  }
+  return "";
+}
+
 std::string plan_problem(const Eigen::Isometry3d& X_BaseHand, const Trajectory& trajectory) {
   if (!X_BaseHand.matrix().allFinite()) return "planned a grasp pose that is not finite";
   if (trajectory.positions_rad.empty()) return "returned a solved plan without waypoints";

@@ -48,6 +48,10 @@ std::string sampling_problem(const HandSet& hands);
 /// slack): a grasp is one of them or a mean of some.
 std::string selection_problem(const HandSet& given, const HandSet& selection);
 
+/// A selector's screen of `given`: the same cloud and hands in the same order, each with its
+/// pose, score and label, and its rejection unless that was kNone.
+std::string screening_problem(const HandSet& given, const HandSet& screened);
+
 /// A planner's solved result: a finite final pose, and a trajectory with at least one
 /// waypoint, one position per joint in each, finite values and non-decreasing times.
 std::string plan_problem(const Eigen::Isometry3d& X_BaseHand, const Trajectory& trajectory);

@@ -1,29 +1,13 @@
-#include <algorithm>
-#include <map>
 #include <string>
-#include <vector>
 
 #include "antipode/bt/action_node.hpp"
 #include "antipode/interfaces/grasp_selector.hpp"
 #include "nodes.hpp"
 #include "plugin_output_checks.hpp"
+#include "rejection_summary.hpp"
 
 namespace antipode::pipeline {
 namespace {
-
-// "12 clustered, 3 in collision, ...": why the selection's hands were not chosen, most
-// frequent first.
-std::string rejections(const HandSet& selection) {
-  std::map<std::string, int> count;
-  for (const Hand& hand : selection.hands) ++count[to_string(hand.rejection)];
-  std::vector<std::pair<int, std::string>> order;
-  for (const auto& [reason, n] : count) order.emplace_back(-n, reason);
-  std::sort(order.begin(), order.end());
-  std::string text;
-  for (const auto& [n, reason] : order)
-    text += (text.empty() ? "" : ", ") + std::to_string(-n) + " " + reason;
-  return text.empty() ? "no hands" : text;
-}
 
 /// Selects and ranks grasps with a selector; fails when it finds none.
 class SelectGrasps final : public bt::SyncActionNode {
@@ -78,7 +62,7 @@ class SelectGrasps final : public bt::SyncActionNode {
     log(std::to_string(chosen) + " grasps selected");
     set_output("grasps", HandSetPtr(selection));
     if (chosen == 0) {
-      set_failure_reason("the selector found no grasp (" + rejections(*selection) + ")");
+      set_failure_reason("the selector found no grasp (" + rejection_summary(*selection) + ")");
       return bt::Status::kFailure;
     }
     set_output("best", selection->hands.front());

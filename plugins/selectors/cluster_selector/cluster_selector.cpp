@@ -6,6 +6,12 @@
 #include <map>
 #include <numeric>
 #include <optional>
+#include <tuple>
+#include <utility>
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
 
 #include "antipode/core/error.hpp"
 #include "antipode/geometry/hand_body.hpp"
@@ -108,26 +114,46 @@ Rejection misplaced(const Hand& hand, const HandGeometry& g, const Fixtures& f,
   return Rejection::kNone;
 }
 
-// The checks of each hand on its own (docs/selection.md, steps 1-3): sets the rejections of
-// `hands` (the input's) and returns their held widths (0 for hands not measured).
-std::vector<double> screen(std::vector<Hand>& hands, const HandSet& in, const Fixtures& f,
-                           const SelectionOptions& o) {
+// Whether `check_each` also drops the hands widest beyond the fingertips. Before classification
+// it must not: select() tries them after all when nothing else is left, and then needs them
+// classified.
+enum class TipsCheck { kApply, kLeaveForSelection };
+
+// The checks of one hand on its own (docs/selection.md, steps 1-3): its rejection, and its held
+// width when it was measured (else 0). `scratch` is working space.
+std::pair<Rejection, double> check_one(const Hand& hand, const HandSet& in, const Fixtures& f,
+                                       const SelectionOptions& o, TipsCheck tips,
+                                       std::vector<float>& scratch) {
   const HandGeometry& g = in.geometry;
+  if (const Rejection why = misplaced(hand, g, f, o); why != Rejection::kNone) return {why, 0.0};
+  const double held = held_width_m(hand, *in.cloud, o.width_trim, o.squeeze_turn_deg, scratch);
+  if (held < g.min_aperture_m) return {Rejection::kApertureLimit, held};
+  if (finger_cover(hand, *in.cloud, g, o.width_trim, scratch) < o.min_finger_cover)
+    return {Rejection::kFingersOverAnEdge, held};
+  if (tips == TipsCheck::kApply && o.fingertip_margin_m > 0.0 &&
+      contact_start_m(hand, *in.cloud, kContactPatchM) > g.depth_m - o.fingertip_margin_m)
+    return {Rejection::kWidestBeyondTheTips, held};
+  return {Rejection::kNone, held};
+}
+
+// check_one for every selectable hand of `hands` (the input's), `o.threads` at a time (each
+// hand on its own: the same result for any number): sets their rejections and returns their
+// held widths (0 for hands not measured).
+std::vector<double> check_each(std::vector<Hand>& hands, const HandSet& in, const Fixtures& f,
+                               const SelectionOptions& o, TipsCheck tips = TipsCheck::kApply) {
   std::vector<double> held(hands.size(), 0.0);
-  std::vector<float> scratch;
-  for (std::size_t i = 0; i < hands.size(); ++i) {
-    if (!selectable(hands[i])) continue;
-    hands[i].rejection = misplaced(hands[i], g, f, o);
-    if (hands[i].rejection != Rejection::kNone) continue;
-    held[i] = held_width_m(hands[i], *in.cloud, o.width_trim, o.squeeze_turn_deg, scratch);
-    if (held[i] < g.min_aperture_m)
-      hands[i].rejection = Rejection::kApertureLimit;
-    else if (finger_cover(hands[i], *in.cloud, g, o.width_trim, scratch) < o.min_finger_cover)
-      hands[i].rejection = Rejection::kFingersOverAnEdge;
-    else if (o.fingertip_margin_m > 0.0 && contact_start_m(hands[i], *in.cloud, kContactPatchM) >
-                                               g.depth_m - o.fingertip_margin_m)
-      hands[i].rejection = Rejection::kWidestBeyondTheTips;
-  }
+  tbb::task_arena arena(o.threads > 0 ? o.threads : tbb::task_arena::automatic);
+  arena.execute([&] {
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, hands.size(), 32),
+                      [&](const tbb::blocked_range<std::size_t>& range) {
+                        std::vector<float> scratch;
+                        for (std::size_t i = range.begin(); i < range.end(); ++i) {
+                          if (!selectable(hands[i])) continue;
+                          std::tie(hands[i].rejection, held[i]) =
+                              check_one(hands[i], in, f, o, tips, scratch);
+                        }
+                      });
+  });
   return held;
 }
 
@@ -156,7 +182,7 @@ ClusterSelector::ClusterSelector(const Parameters& params)
 
 namespace {
 
-// Clusters the hands `screen` kept, ranks the clusters' grasps and keeps the first that are
+// Clusters the hands `check_each` kept, ranks the clusters' grasps and keeps the first that are
 // free to reach (docs/selection.md, steps 4-8); the selection's result, as select() returns.
 HandSet choose(std::vector<Hand> hands, const std::vector<double>& held, const HandSet& in,
                const Fixtures& f, const SelectionOptions& o, const ArmReach* arm,
@@ -285,11 +311,19 @@ HandSet choose(std::vector<Hand> hands, const std::vector<double>& held, const H
 
 }  // namespace
 
+HandSet ClusterSelector::screen(const HandSet& in, const SelectionContext& context) const {
+  if (!in.cloud) throw Error("cluster_selector: the hand set has no cloud");
+  context.stop.throw_if_stop_requested("cluster_selector");
+  HandSet out = in;
+  check_each(out.hands, in, fixtures_of(in, options_), options_, TipsCheck::kLeaveForSelection);
+  return out;
+}
+
 HandSet ClusterSelector::select(const HandSet& in, const SelectionContext& context) const {
   if (!in.cloud) throw Error("cluster_selector: the hand set has no cloud");
   const Fixtures f = fixtures_of(in, options_);
   std::vector<Hand> hands = in.hands;
-  const std::vector<double> held = screen(hands, in, f, options_);
+  const std::vector<double> held = check_each(hands, in, f, options_);
   HandSet out = choose(hands, held, in, f, options_, arm_.get(), context);
   const bool chosen = !out.hands.empty() && out.hands.front().rejection == Rejection::kNone;
   if (chosen || !options_.fingertip_last_resort) return out;

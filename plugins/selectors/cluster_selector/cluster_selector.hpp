@@ -40,6 +40,11 @@ class ClusterSelector final : public GraspSelector {
   /// the grasps. See GraspSelector::select for the layout of the result.
   HandSet select(const HandSet& hands, const SelectionContext& context) const override;
 
+  /// select()'s checks of each hand on its own, but the fingertip one (which select() waives
+  /// when nothing else is left): below the support, into the bin's walls, outside the
+  /// aperture, fingers over an edge.
+  HandSet screen(const HandSet& hands, const SelectionContext& context) const override;
+
  private:
   SelectionOptions options_;
   std::shared_ptr<const ArmReach> arm_;  // null for a free-floating hand

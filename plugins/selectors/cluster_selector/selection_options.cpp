@@ -64,6 +64,7 @@ SelectionOptions read_selection_options(const Parameters& params) {
   o.penalty_tolerance_m2 =
       params.number_in("penalty_tolerance_m2", o.penalty_tolerance_m2, 0.0, 1.0);
   o.max_grasps = std::size_t(params.number_in("max_grasps", double(o.max_grasps), 1, 1e6));
+  o.threads = int(whole(params, "threads", o.threads, 0, 256));
   o.arm.robot_file =
       resolve_path(params.get<std::string>("robot", o.arm.robot_file), params.file());
   o.arm.arm_tip = params.get<std::string>("arm_tip", o.arm.arm_tip);

@@ -89,6 +89,9 @@ struct SelectionOptions {
   double penalty_tolerance_m2 = 1e-6;
   /// How many grasps to return.
   std::size_t max_grasps = 10;
+  /// Workers for the checks of each hand (steps 1-3, and the screen); 0: one per core. The
+  /// result is the same for any number.
+  int threads = 0;
   /// The arm (arm_reach.hpp): with a robot file, a grasp is kept only when the arm reaches
   /// it and its stand-off free of collisions (kNoIk, kNoIkAtPreGrasp, kInCollision otherwise).
   ArmReachOptions arm;

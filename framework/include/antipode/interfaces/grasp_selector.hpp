@@ -1,7 +1,8 @@
 #pragma once
 /// @file
 /// GraspSelector: chooses and ranks the grasps to try from classified hands (paper
-/// section 5.1), keeping the reason for every hand it drops.
+/// section 5.1), keeping the reason for every hand it drops; and screens out, before
+/// classification, the hands it would drop whatever their score.
 
 #include "antipode/core/cloud.hpp"
 #include "antipode/core/stop_token.hpp"
@@ -46,6 +47,22 @@ class GraspSelector : public Component {
   /// concurrently. Throws antipode::Error only for unusable input (a set without a cloud),
   /// and Cancelled when `context.stop` asks to stop.
   virtual HandSet select(const HandSet& hands, const SelectionContext& context) const = 0;
+
+  /// The hands this selector would drop whatever a classifier made of them - judged by the
+  /// geometry alone (the support, the box's walls, the aperture, ...) - marked with their
+  /// reasons, so that a classifier need not describe them (the node `ScreenHands` before
+  /// `ClassifyHands`, which classifies only the hands without a rejection).
+  ///
+  /// Contract: the result is `hands` with the same hands in the same order, unchanged but for
+  /// the rejection of some hands that had none. What `select` then chooses from the
+  /// screened hands, classified, is what it chooses from all of them, classified: a screen
+  /// only saves work. The default screens out nothing. Deterministic; may be called
+  /// concurrently. Throws antipode::Error only for unusable input (a set without a cloud),
+  /// and Cancelled when `context.stop` asks to stop.
+  virtual HandSet screen(const HandSet& hands, const SelectionContext& context) const {
+    (void)context;
+    return hands;
+  }
 };
 
 }  // namespace antipode
