@@ -11,6 +11,7 @@
 #include <yaml-cpp/yaml.h>
 
 #include "antipode/core/error.hpp"
+#include "antipode/geometry/narrowest_extent.hpp"
 
 namespace fs = std::filesystem;
 
@@ -107,20 +108,10 @@ bool BenchObject::graspable_in_pose(int k, int poses, double min_width_m,
   const Eigen::Matrix3d rotation = (Eigen::AngleAxisd(rpy.z(), Eigen::Vector3d::UnitZ()) *
                                     Eigen::AngleAxisd(rpy.x(), Eigen::Vector3d::UnitX()))
                                        .toRotationMatrix();
-  // The narrowest horizontal extent, over directions one degree apart.
-  double narrowest = 1e30;
-  for (int degree = 0; degree < 180; ++degree) {
-    const double a = degree * M_PI / 180.0;
-    const Eigen::Vector3d across =
-        rotation.transpose() * Eigen::Vector3d(std::cos(a), std::sin(a), 0);
-    double lo = 1e30, hi = -1e30;
-    for (const auto& v : *vertices) {
-      const double d = across.dot(v);
-      lo = std::min(lo, d);
-      hi = std::max(hi, d);
-    }
-    narrowest = std::min(narrowest, hi - lo);
-  }
+  std::vector<Eigen::Vector3d> placed;
+  placed.reserve(vertices->size());
+  for (const auto& v : *vertices) placed.push_back(rotation * v);
+  const double narrowest = narrowest_horizontal_extent_m(placed);
   return narrowest >= min_width_m && narrowest <= max_width_m;
 }
 

@@ -9,6 +9,13 @@
 
 namespace antipode::cli {
 
+/// The gripper's range in the paper's setting (Baxter's gripper, docs/cell.md): an object
+/// whose narrowest horizontal extent as it lies is outside it cannot be held from above, and
+/// finding no grasp on it is the right answer. The isolation bench counts such attempts
+/// apart; the clutter bench tells such objects apart among those left in the box.
+constexpr double kMinGraspableWidthM = 0.03;
+constexpr double kMaxGraspableWidthM = 0.07;
+
 /// One test object: how the cell's `object` parameter names it (a procedural shape or a
 /// mesh in a folder, as a YAML flow mapping without its pose) and whether the gripper can
 /// hold it at all (an object without a width in the gripper's range is counted apart).

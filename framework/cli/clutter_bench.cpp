@@ -15,7 +15,9 @@
 
 #include "antipode/bt/loader.hpp"
 #include "antipode/core/error.hpp"
+#include "antipode/interfaces/cell.hpp"
 #include "antipode/interfaces/clearing_run.hpp"
+#include "bench_objects.hpp"
 #include "bench_processes.hpp"
 #include "bench_report.hpp"
 #include "bench_shard.hpp"
@@ -112,6 +114,30 @@ Json cycle_json(const ClearingCycle& cycle) {
   return out;
 }
 
+// What was left in the cell at the end of a run, from its ground truth (a simulated cell's):
+// `left_objects` (name and narrowest horizontal extent of each) and `left_graspable` (how many
+// of them a gripper of the paper's range could hold from above as they lay). Nothing when the
+// tree has no cell or the cell has no ground truth.
+void record_what_was_left(const bt::Tree& tree, Json& out) {
+  for (const std::string& name : tree.component_names()) {
+    const auto cell = std::dynamic_pointer_cast<const Cell>(tree.component(name));
+    if (!cell) continue;
+    const std::vector<ObjectTruth> truth = cell->object_truth();
+    if (truth.empty() && out["left"].get<int>() != 0) return;
+    Json left = Json::array();
+    int graspable = 0;
+    for (const ObjectTruth& object : truth) {
+      left.push_back(
+          {{"name", object.name}, {"narrowest_horizontal_m", object.narrowest_horizontal_m}});
+      graspable += object.narrowest_horizontal_m >= kMinGraspableWidthM &&
+                   object.narrowest_horizontal_m <= kMaxGraspableWidthM;
+    }
+    out["left_objects"] = left;
+    out["left_graspable"] = graspable;
+    return;
+  }
+}
+
 // This process's resident memory (MB, from /proc/self/status; 0 where there is none), after
 // handing freed memory back to the system: a process that runs many episodes must not grow.
 double resident_mb() {
@@ -144,6 +170,7 @@ Json run_one(const Session& session, const RunSettings& settings, std::size_t in
       out["lost"] = run.objects_lost();
       out["stop"] = to_string(run.stop);
       out["summary"] = run.summary();
+      record_what_was_left(tree, out);
       Json cycles = Json::array();
       for (const ClearingCycle& cycle : run.cycles) cycles.push_back(cycle_json(cycle));
       out["cycles"] = cycles;
@@ -223,6 +250,16 @@ void print_clutter_summary(std::ostream& out, const Json& s, const std::string& 
   out << protocol.removed_name << " " << s["removed"] << " / " << s["objects"] << " = "
       << interval(s["removed_rate"]) << " (" << published(false) << "); lost off the table "
       << s["lost"] << "\n";
+  if (s.contains("left_graspable")) {
+    const int left = s["objects"].get<int>() - s["removed"].get<int>() - s["lost"].get<int>();
+    const int graspable = s["removed"].get<int>() + s["left_graspable"].get<int>();
+    out << "objects left " << left << ", of which " << left - s["left_graspable"].get<int>()
+        << " lay too wide or too thin for the gripper across every horizontal direction (narrowest "
+        << "horizontal extent outside " << 100 * kMinGraspableWidthM << "-"
+        << 100 * kMaxGraspableWidthM
+        << " cm); removed of the objects it could hold: " << s["removed"] << " / " << graspable
+        << " = " << interval(s["removed_of_graspable_rate"]) << "\n";
+  }
   out << "cycles " << s["cycles"] << ", of which found no grasp " << s["no_grasp"] << "\n";
   out << "failures by class:";
   for (const auto& [reason, count] : s["reasons"].items()) out << "  " << reason << " " << count;
@@ -238,6 +275,8 @@ void print_clutter_summary(std::ostream& out, const Json& s, const std::string& 
 
 Json summarise_clutter(const Json& runs) {
   int attempts = 0, successes = 0, objects = 0, lost = 0, cycles = 0, no_grasp = 0, errors = 0;
+  int left_graspable = 0;
+  bool truth = true;  // every run says what was left
   Json reasons = Json::object(), groups = Json::object(), stops = Json::object();
   std::vector<double> cycle_s, run_s;
   for (const Json& run : runs) {
@@ -249,6 +288,8 @@ Json summarise_clutter(const Json& runs) {
     successes += run["successes"].get<int>();
     objects += run["objects"].get<int>();
     lost += std::max(0, run["lost"].get<int>());
+    truth = truth && run.contains("left_graspable");
+    if (truth) left_graspable += run["left_graspable"].get<int>();
     const std::string stop = run["stop"];
     stops[stop] = stops.value(stop, 0) + 1;
     run_s.push_back(run["wall_s"].get<double>());
@@ -263,22 +304,28 @@ Json summarise_clutter(const Json& runs) {
       groups[group] = groups.value(group, 0) + 1;
     }
   }
-  return {{"runs", runs.size()},
-          {"errors", errors},
-          {"attempts", attempts},
-          {"successes", successes},
-          {"objects", objects},
-          {"removed", successes},
-          {"lost", lost},
-          {"success_rate", rate(successes, attempts)},
-          {"removed_rate", rate(successes, objects)},
-          {"cycles", cycles},
-          {"no_grasp", no_grasp},
-          {"reasons", reasons},
-          {"paper_classes", groups},
-          {"stops", stops},
-          {"cycle_s_median", percentile(cycle_s, 0.5)},
-          {"run_s_median", percentile(run_s, 0.5)}};
+  Json summary = {{"runs", runs.size()},
+                  {"errors", errors},
+                  {"attempts", attempts},
+                  {"successes", successes},
+                  {"objects", objects},
+                  {"removed", successes},
+                  {"lost", lost},
+                  {"success_rate", rate(successes, attempts)},
+                  {"removed_rate", rate(successes, objects)},
+                  {"cycles", cycles},
+                  {"no_grasp", no_grasp},
+                  {"reasons", reasons},
+                  {"paper_classes", groups},
+                  {"stops", stops},
+                  {"cycle_s_median", percentile(cycle_s, 0.5)},
+                  {"run_s_median", percentile(run_s, 0.5)}};
+  // The objects the gripper could hold as they lay: those removed and those left that fit.
+  if (truth && errors < int(runs.size())) {
+    summary["left_graspable"] = left_graspable;
+    summary["removed_of_graspable_rate"] = rate(successes, successes + left_graspable);
+  }
+  return summary;
 }
 
 int bench_clutter_command(const ClutterBenchOptions& options) {

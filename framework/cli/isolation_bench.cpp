@@ -23,11 +23,6 @@ namespace {
 
 using Json = nlohmann::ordered_json;
 
-// The gripper's range in the paper's setting: objects narrower or wider in every
-// direction cannot be held, and finding no grasp on them is the right answer.
-constexpr double kMinGraspableWidthM = 0.03;
-constexpr double kMaxGraspableWidthM = 0.07;
-
 std::vector<const BenchVariant*> chosen_variants(const std::vector<std::string>& names) {
   std::vector<std::string> known;
   for (const auto& v : isolation_variants()) known.push_back(v.name);

@@ -1,10 +1,12 @@
 // The report's section for a clutter bench (antipode bench clutter): settings and command,
-// grasp success and objects removed beside the paper's, failures in the paper's groups, how
-// the runs ended, each run's line, seconds; a chart of each run.
+// grasp success and objects removed beside the paper's, what was left and whether the gripper
+// could hold it, failures in the paper's groups, how the runs ended, each run's line and
+// objects left, seconds; a chart of each run.
 #include <cstdio>
 #include <filesystem>
 
 #include "bar_chart.hpp"
+#include "bench_objects.hpp"
 #include "clutter_protocols.hpp"
 #include "report_sections.hpp"
 
@@ -15,8 +17,8 @@ using Json = nlohmann::ordered_json;
 
 std::string settings_text(const Json& r) {
   const int runs = r["runs"], first = r["seed"];
-  return std::to_string(runs) + " runs of " + r["objects_per_run"].dump() +
-         " objects (" + object_set_name(r["objects"]) + "), seeds " + std::to_string(first) + "-" +
+  return std::to_string(runs) + " runs of " + r["objects_per_run"].dump() + " objects (" +
+         object_set_name(r["objects"]) + "), seeds " + std::to_string(first) + "-" +
          std::to_string(first + runs - 1) + ", tree `" + r["tree"].get<std::string>() + "`, " +
          noise_phrase(r) + "; " + machine_phrase(r) + ", " + r["jobs"].dump() + " process(es), " +
          wall_time(r["wall_s"]) + " of wall time.\n\n";
@@ -55,6 +57,33 @@ std::string headline(const Json& r) {
   return markdown_table({"", protocol.success_name + " (successes / attempts)",
                          protocol.removed_name + " (removed / placed)"},
                         rows);
+}
+
+// What the objects left say about the removal rate (runs whose cell has ground truth).
+std::string what_was_left(const Json& s) {
+  if (!s.contains("left_graspable")) return "";
+  const int removed = s["removed"], left_graspable = s["left_graspable"];
+  const int left = s["objects"].get<int>() - removed - s["lost"].get<int>();
+  char text[600];
+  std::snprintf(text, sizeof text,
+                "Of the %d objects left in the box, %d lay too wide or too thin for the gripper "
+                "across every horizontal direction (their narrowest horizontal extent outside "
+                "%.0f-%.0f cm, the isolation bench's criterion; some still had a part it could "
+                "hold, such as a mug's handle). Removed of the objects it could hold: ",
+                left, left - left_graspable, 100 * kMinGraspableWidthM, 100 * kMaxGraspableWidthM);
+  return text + rate_with_interval(removed, removed + left_graspable) + ".\n\n";
+}
+
+// "004_sugar_box 9.4 cm, 025_mug 8.1 cm": a run's objects left with their narrowest widths.
+std::string left_objects(const Json& run) {
+  std::string text;
+  for (const Json& object : run["left_objects"]) {
+    char width[32];
+    std::snprintf(width, sizeof width, " %.1f cm",
+                  100 * object["narrowest_horizontal_m"].get<double>());
+    text += (text.empty() ? "" : ", ") + object["name"].get<std::string>() + width;
+  }
+  return text.empty() ? "-" : text;
 }
 
 std::string failures(const Json& s) {
@@ -121,11 +150,15 @@ std::string per_run(const Json& r, const PlotPlace& plots, const std::string& na
     chart.values[0].push_back(objects ? 100.0 * removed / objects : 0.0);
     chart.values[1].push_back(attempts ? 100.0 * run["successes"].get<int>() / attempts : -1.0);
     rows.push_back({run["seed"].dump(), run["summary"].get<std::string>(), run["stop"]});
+    if (run.contains("left_objects")) rows.back().push_back(left_objects(run));
   }
   const std::string file = name + "-runs.png";
   write_bar_chart(chart, (std::filesystem::path(plots.dir) / file).string());
-  return "![per run](" + plots.link + "/" + file + ")\n\n" +
-         markdown_table({"seed", "run", "ended"}, rows);
+  std::vector<std::string> header = {"seed", "run", "ended"};
+  if (!rows.empty() && rows.front().size() == 4)
+    header.push_back("left (narrowest horizontal extent)");
+  for (auto& row : rows) row.resize(header.size());
+  return "![per run](" + plots.link + "/" + file + ")\n\n" + markdown_table(header, rows);
 }
 
 }  // namespace
@@ -141,7 +174,7 @@ ReportSection clutter_section(const Json& report, const std::string& name, const
   if (report["tree"] != protocol.tree || report["noise"] != "tree")
     section.title += ", " + setting_words(report, "", "", protocol.tree, "");
   section.markdown = settings_text(report) + command_text(report, name) + headline(report) + "\n" +
-                     failures(s) + per_run(report, plots, name);
+                     what_was_left(s) + failures(s) + per_run(report, plots, name);
   return section;
 }
 

@@ -33,6 +33,30 @@ GraspAttempt execute(Cell& cell, const Hand& hand) {
 
 double top_of_cylinder(const BulletCell& cell) { return cell.scene().table.top_z_m + 0.1; }
 
+// The cell's ground truth of what is left: each object's name, pose and narrowest horizontal
+// extent; a picked object leaves it.
+TEST(Grasp, TheObjectTruthNamesWhatIsLeftAndHowWideItLies) {
+  CellOptions options;
+  options.sensor.scale = 0.0;
+  const BulletCell box(parse("placement: isolated\nobjects:\n  - { shape: box, size_m: [0.09, "
+                             "0.17, 0.05], position_m: [0.72, -0.12] }\n"),
+                       options);
+  std::vector<ObjectTruth> truth = box.object_truth();
+  ASSERT_EQ(truth.size(), 1u);
+  EXPECT_EQ(truth[0].name, "box");
+  EXPECT_NEAR(truth[0].narrowest_horizontal_m, 0.09, 1e-3) << "lying flat: too wide to hold";
+  EXPECT_NEAR(truth[0].X_BaseObject.translation().x(), 0.72, 0.002);
+
+  BulletCell cell = cylinder_cell(0.05);
+  truth = cell.object_truth();
+  ASSERT_EQ(truth.size(), 1u);
+  EXPECT_EQ(truth[0].name, "cylinder");
+  EXPECT_NEAR(truth[0].narrowest_horizontal_m, 0.05, 0.002) << "its faceted mesh";
+  const Hand hand = top_down(0.72, -0.12, top_of_cylinder(cell) + 0.005);
+  ASSERT_EQ(execute(cell, hand).outcome, GraspOutcome::kSuccess);
+  EXPECT_TRUE(cell.object_truth().empty()) << "a picked object leaves the cell";
+}
+
 TEST(Grasp, HandAroundA5cmCylinderLiftsIt) {
   BulletCell cell = cylinder_cell(0.05);
   const Hand hand = top_down(0.72, -0.12, top_of_cylinder(cell) + 0.005);

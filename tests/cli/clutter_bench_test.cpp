@@ -33,9 +33,22 @@ TEST_F(ClutterBenchTest, EveryRunRemovesObjects) {
     EXPECT_TRUE(s.contains(key)) << key;
   EXPECT_EQ(s["errors"], 0);
   ASSERT_EQ(r["run_records"].size(), 2u);
+  int left_graspable = 0;
   for (const auto& run : r["run_records"]) {
     EXPECT_GE(run["removed"].get<int>(), 1) << run.dump(1);
     EXPECT_LE(run["cycles"].size(), 2u * run["objects"].get<std::size_t>());
+    // The simulated cell names what was left and how wide each object lay.
+    ASSERT_EQ(run["left_objects"].size(), run["left"].get<std::size_t>()) << run.dump(1);
+    int fits = 0;
+    for (const auto& object : run["left_objects"]) {
+      EXPECT_FALSE(object["name"].get<std::string>().empty());
+      const double width = object["narrowest_horizontal_m"];
+      EXPECT_GT(width, 0.005) << object.dump();
+      EXPECT_LT(width, 0.3) << object.dump();
+      fits += width >= 0.03 && width <= 0.07;
+    }
+    EXPECT_EQ(run["left_graspable"], fits);
+    left_graspable += fits;
     for (const auto& cycle : run["cycles"]) {
       EXPECT_TRUE(cycle.contains("reason")) << cycle.dump();
       // The cell counts what is left: a success takes the held object out, nothing comes back.
@@ -49,6 +62,10 @@ TEST_F(ClutterBenchTest, EveryRunRemovesObjects) {
     }
   }
   EXPECT_LE(s["successes"].get<int>(), s["attempts"].get<int>());
+  EXPECT_EQ(s["left_graspable"], left_graspable);
+  const int removed = s["removed"];
+  EXPECT_DOUBLE_EQ(s["removed_of_graspable_rate"]["rate"].get<double>(),
+                   double(removed) / (removed + left_graspable));
 }
 
 TEST_F(ClutterBenchTest, TheSameResultsForAnyNumberOfProcesses) {
@@ -109,6 +126,8 @@ TEST_F(ClutterBenchTest, ReportWritesMarkdownAndAChart) {
   EXPECT_NE(markdown.find(counts), std::string::npos) << counts << "\n" << markdown;
   EXPECT_NE(markdown.find("--runs 2 --objects-per-run 2 --seed 3"), std::string::npos);
   EXPECT_NE(markdown.find("![per run](images/clutter-small-runs.png)"), std::string::npos);
+  EXPECT_NE(markdown.find("Removed of the objects it could hold: "), std::string::npos);
+  EXPECT_NE(markdown.find("| left (narrowest horizontal extent) |"), std::string::npos);
   std::ifstream png(file("images/clutter-small-runs.png"), std::ios::binary);
   char signature[8] = {};
   png.read(signature, 8);

@@ -13,6 +13,7 @@
 
 #include "antipode/core/error.hpp"
 #include "antipode/geometry/point_index.hpp"
+#include "convex_hull.hpp"
 #include "euclidean_clusters.hpp"
 #include "plane_facing.hpp"
 #include "plane_fit.hpp"
@@ -106,30 +107,6 @@ std::optional<Candidate> next_plane(const Points& points, std::vector<std::int32
   return candidate;
 }
 
-// Convex hull (counter-clockwise, Andrew's monotone chain) of 2-D points.
-std::vector<Eigen::Vector2f> convex_hull(std::vector<Eigen::Vector2f> p) {
-  std::sort(p.begin(), p.end(), [](const Eigen::Vector2f& a, const Eigen::Vector2f& b) {
-    return a.x() < b.x() || (a.x() == b.x() && a.y() < b.y());
-  });
-  if (p.size() < 3) return p;
-  const auto turn = [](const Eigen::Vector2f& o, const Eigen::Vector2f& a,
-                       const Eigen::Vector2f& b) {
-    return (a - o).x() * (b - o).y() - (a - o).y() * (b - o).x();
-  };
-  std::vector<Eigen::Vector2f> hull(2 * p.size());
-  std::size_t k = 0;
-  for (std::size_t i = 0; i < p.size(); ++i) {
-    while (k >= 2 && turn(hull[k - 2], hull[k - 1], p[i]) <= 0.0f) --k;
-    hull[k++] = p[i];
-  }
-  for (std::size_t i = p.size() - 1, lower = k + 1; i > 0; --i) {
-    while (k >= lower && turn(hull[k - 2], hull[k - 1], p[i - 1]) <= 0.0f) --k;
-    hull[k++] = p[i - 1];
-  }
-  hull.resize(k - 1);
-  return hull;
-}
-
 bool inside(const std::vector<Eigen::Vector2f>& hull, const Eigen::Vector2f& q) {
   if (hull.size() < 3) return false;
   for (std::size_t i = 0; i < hull.size(); ++i) {
@@ -173,7 +150,7 @@ std::vector<SceneObject> objects_on(const Points& points, const Candidate& c,
   std::vector<Eigen::Vector2f> footprint;
   for (const std::int32_t i : largest_patch(points, c.inliers, kVoxel_m))
     footprint.push_back(flat(points[std::size_t(i)]));
-  const std::vector<Eigen::Vector2f> hull = convex_hull(std::move(footprint));
+  const std::vector<Eigen::Vector2f> hull = geometry::convex_hull(std::move(footprint));
   std::vector<std::int32_t> above;
   std::size_t below = 0;
   for (std::size_t i = 0; i < points.size(); ++i) {

@@ -4,6 +4,7 @@ find_package(TBB REQUIRED)
 find_package(nanoflann REQUIRED)
 list(APPEND ANTIPODE_SOURCES
   ${CMAKE_CURRENT_LIST_DIR}/bin.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/convex_hull.cpp
   ${CMAKE_CURRENT_LIST_DIR}/crop.cpp
   ${CMAKE_CURRENT_LIST_DIR}/euclidean_clusters.cpp
   ${CMAKE_CURRENT_LIST_DIR}/grid_search.cpp
@@ -11,6 +12,7 @@ list(APPEND ANTIPODE_SOURCES
   ${CMAKE_CURRENT_LIST_DIR}/hand_search.cpp
   ${CMAKE_CURRENT_LIST_DIR}/hand_search_parameters.cpp
   ${CMAKE_CURRENT_LIST_DIR}/local_frame.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/narrowest_extent.cpp
   ${CMAKE_CURRENT_LIST_DIR}/occlusion.cpp
   ${CMAKE_CURRENT_LIST_DIR}/plane_facing.cpp
   ${CMAKE_CURRENT_LIST_DIR}/plane_fit.cpp

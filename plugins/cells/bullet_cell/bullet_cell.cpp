@@ -5,6 +5,7 @@
 #include <filesystem>
 
 #include "antipode/core/error.hpp"
+#include "antipode/geometry/narrowest_extent.hpp"
 
 namespace antipode::cells {
 namespace {
@@ -138,6 +139,22 @@ BulletCell::BulletCell(SceneSpec scene, const CellOptions& options)
 }
 
 JointState BulletCell::arm_state() const { return arm_ ? arm_->home() : JointState{}; }
+
+std::vector<ObjectTruth> BulletCell::object_truth() const {
+  std::vector<ObjectTruth> truth;
+  for (const int id : objects()) {
+    ObjectTruth object{world_->name(id), world_->pose(id), 0.0};
+    if (const auto mesh = world_->visual(id)) {
+      std::vector<Eigen::Vector3d> vertices;
+      vertices.reserve(mesh->vertices.size());
+      for (const Eigen::Vector3f& v : mesh->vertices)
+        vertices.push_back(object.X_BaseObject * v.cast<double>());
+      object.narrowest_horizontal_m = narrowest_horizontal_extent_m(vertices);
+    }
+    truth.push_back(std::move(object));
+  }
+  return truth;
+}
 
 std::vector<std::string> BulletCell::view_names() const {
   std::vector<std::string> names;

@@ -35,6 +35,8 @@ class BulletCell final : public Cell {
   Cloud capture(const std::vector<std::string>& views) override;
   JointState arm_state() const override;
   std::optional<int> objects_left() const override { return int(objects().size()); }
+  /// Each object's name, pose and narrowest horizontal extent (from its rendered mesh).
+  std::vector<ObjectTruth> object_truth() const override;
   GraspAttempt execute(const GraspRequest& request) override;
   void reset(std::uint64_t seed) override;
 

@@ -134,6 +134,10 @@ const btCollisionObject& PhysicsWorld::object(int id) const {
 BodyRole PhysicsWorld::role(int id) const { return bodies_.at(id)->role; }
 const std::string& PhysicsWorld::name(int id) const { return bodies_.at(id)->name; }
 
+std::shared_ptr<const TriangleMesh> PhysicsWorld::visual(int id) const {
+  return bodies_.at(id)->visual;
+}
+
 std::vector<int> PhysicsWorld::ids(BodyRole role) const {
   std::vector<int> out;
   for (const auto& [id, entry] : bodies_)

@@ -87,6 +87,8 @@ class PhysicsWorld {
     Eigen::Isometry3d pose;
   };
   std::vector<Visual> visuals() const;
+  /// The mesh drawn for body `id` (in its body frame), null when it is not rendered.
+  std::shared_ptr<const TriangleMesh> visual(int id) const;
 
  private:
   struct Entry;

@@ -7,6 +7,8 @@
 #include <string>
 #include <vector>
 
+#include <Eigen/Geometry>
+
 #include "antipode/core/cloud.hpp"
 #include "antipode/core/hand.hpp"
 #include "antipode/core/trajectory.hpp"
@@ -14,6 +16,16 @@
 #include "antipode/interfaces/grasp_attempt.hpp"
 
 namespace antipode {
+
+/// What a cell with ground truth (a simulated one) knows of an object in its workspace.
+struct ObjectTruth {
+  std::string name;  ///< its name in the scene ("004_sugar_box", "cylinder 3", ...)
+  Eigen::Isometry3d X_BaseObject = Eigen::Isometry3d::Identity();  ///< its pose now
+  /// Its narrowest horizontal extent as it lies now (narrowest_extent.hpp, with +z of the
+  /// base frame up): a gripper closing horizontally holds it from above only when this lies
+  /// within its aperture. Metres.
+  double narrowest_horizontal_m = 0.0;
+};
 
 class Cell : public Component {
  public:
@@ -41,6 +53,11 @@ class Cell : public Component {
   /// objects knocked off the table); nullopt when the cell cannot tell (a real cell without
   /// ground truth). A clear-the-box loop ends when it reaches 0.
   virtual std::optional<int> objects_left() const { return std::nullopt; }
+
+  /// The objects left in the workspace (as objects_left() counts them), as the cell's ground
+  /// truth has them, for benches and tests that explain what was left and why; empty when the
+  /// cell has none (a real cell).
+  virtual std::vector<ObjectTruth> object_truth() const { return {}; }
 
   /// Restores the cell's initial state for `seed`.
   virtual void reset(std::uint64_t seed) = 0;
