@@ -709,8 +709,39 @@ TEST_F(ClusterSelectorTest, RejectsBadParameters) {
             std::string::npos);
   EXPECT_NE(creation_error("min_finger_cover: 1.5").find("'min_finger_cover' must be in [0, 1]"),
             std::string::npos);
+  EXPECT_NE(creation_error("threads: 1.5").find("'threads' must be a whole number"),
+            std::string::npos);
+  EXPECT_NE(creation_error("threads: 300").find("'threads' must be in [0, 256]"),
+            std::string::npos);
   const HandSet no_cloud;
   EXPECT_THROW(create("{}")->select(no_cloud, {}), Error);
+  EXPECT_THROW(create("{}")->screen(no_cloud, {}), Error);
+}
+
+// The checks of each hand run on `threads` workers: the same screen and selection for any
+// number.
+TEST_F(ClusterSelectorTest, TheSameResultForAnyNumberOfThreads) {
+  std::vector<Hand> hands;
+  for (int i = 0; i < 300; ++i)
+    hands.push_back(top_down(0.01 * (i % 30), 0.01 * (i / 30), 0.03 + 0.001 * (i % 50),
+                             1.0 + 0.01 * i, 0.015 + 0.0002 * i));
+  const HandSet set = on_table(hands);
+  const HandSet one = create("threads: 1")->screen(set, {});
+  const HandSet two = create("threads: 2")->screen(set, {});
+  std::size_t screened = 0;
+  for (std::size_t i = 0; i < hands.size(); ++i) {
+    EXPECT_EQ(one.hands[i].rejection, two.hands[i].rejection) << i;
+    screened += one.hands[i].rejection != Rejection::kNone;
+  }
+  EXPECT_GT(screened, 0u);
+  EXPECT_LT(screened, hands.size());
+  const HandSet chosen_one = create("threads: 1")->select(set, {});
+  const HandSet chosen_two = create("threads: 2")->select(set, {});
+  ASSERT_EQ(chosen_one.hands.size(), chosen_two.hands.size());
+  for (std::size_t i = 0; i < chosen_one.hands.size(); ++i) {
+    EXPECT_EQ(chosen_one.hands[i].rejection, chosen_two.hands[i].rejection) << i;
+    EXPECT_TRUE(chosen_one.hands[i].X_FrameHand.isApprox(chosen_two.hands[i].X_FrameHand)) << i;
+  }
 }
 
 // With Baxter's model, a grasp the right arm cannot reach is dropped for want of inverse
