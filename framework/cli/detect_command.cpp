@@ -8,6 +8,7 @@
 #include "antipode/bt/loader.hpp"
 #include "antipode/core/error.hpp"
 #include "antipode/geometry/scene_layout.hpp"
+#include "antipode/interfaces/grasp_selector.hpp"
 #include "antipode/interfaces/hand_set.hpp"
 #include "commands.hpp"
 #include "exit_codes.hpp"
@@ -66,8 +67,10 @@ std::string per_object(const HandSet& set, bool grasps_only) {
 }
 
 // What --explain prints: the scene the sampler found, how many hands each stage kept (per
-// object) and where the best grasps lie.
-void print_explanation(const HandSet* sampled, const HandSet* classified, std::size_t best) {
+// object; the screen's reasons, when the tree screens into {screened}) and where the best
+// grasps lie.
+void print_explanation(const HandSet* sampled, const HandSet* screened, const HandSet* classified,
+                       std::size_t best) {
   if (sampled == nullptr) {
     std::cout << "explain: the tree stopped before sampling\n";
     return;
@@ -79,6 +82,12 @@ void print_explanation(const HandSet* sampled, const HandSet* classified, std::s
             << "\n";
   std::cout << "hypotheses: " << sampled->hands.size()
             << " (per object: " << per_object(*sampled, false) << ")\n";
+  if (screened != nullptr) {
+    const auto left = std::count_if(screened->hands.begin(), screened->hands.end(),
+                                    [](const Hand& hand) { return selectable(hand); });
+    std::cout << "left to classify by the selector's screen: " << left << " ("
+              << rejection_counts(screened->hands, false) << ")\n";
+  }
   if (classified == nullptr) return;
   std::vector<const Hand*> grasps;
   for (const Hand& hand : classified->hands) {
@@ -104,7 +113,8 @@ int detect_command(const DetectOptions& options) {
   const bt::Status status = tree.tick_while_running();
   if (const HandSet* set = hand_set(tree, options.hands_entry)) print_summary(*set, 5);
   if (options.explain)
-    print_explanation(hand_set(tree, "hands"), hand_set(tree, options.hands_entry), 12);
+    print_explanation(hand_set(tree, "hands"), hand_set(tree, "screened"),
+                      hand_set(tree, options.hands_entry), 12);
   std::cout << options.tree_path << ": " << bt::to_string(status) << "\n";
   return status == bt::Status::kSuccess ? kExitSuccess : kExitTreeFailed;
 }

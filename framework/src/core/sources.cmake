@@ -10,5 +10,6 @@ list(APPEND ANTIPODE_SOURCES
   ${CMAKE_CURRENT_LIST_DIR}/names.cpp
   ${CMAKE_CURRENT_LIST_DIR}/parameters.cpp
   ${CMAKE_CURRENT_LIST_DIR}/random.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/rejection_counts.cpp
   ${CMAKE_CURRENT_LIST_DIR}/stop_token.cpp
   ${CMAKE_CURRENT_LIST_DIR}/view_selection.cpp)

@@ -5,7 +5,6 @@
 #include "antipode/interfaces/grasp_selector.hpp"
 #include "nodes.hpp"
 #include "plugin_output_checks.hpp"
-#include "rejection_summary.hpp"
 
 namespace antipode::pipeline {
 namespace {
@@ -53,7 +52,7 @@ class ScreenHands final : public bt::SyncActionNode {
     }
     const auto left = std::count_if(screened->hands.begin(), screened->hands.end(),
                                     [](const Hand& hand) { return selectable(hand); });
-    const std::string dropped = rejection_summary(*screened, false);
+    const std::string dropped = rejection_counts(screened->hands, false);
     log(std::to_string(left) + " of " + std::to_string(screened->hands.size()) +
         " hands left to classify (" + dropped + ")");
     set_output("screened", HandSetPtr(std::move(screened)));

@@ -4,7 +4,6 @@
 #include "antipode/interfaces/grasp_selector.hpp"
 #include "nodes.hpp"
 #include "plugin_output_checks.hpp"
-#include "rejection_summary.hpp"
 
 namespace antipode::pipeline {
 namespace {
@@ -62,7 +61,8 @@ class SelectGrasps final : public bt::SyncActionNode {
     log(std::to_string(chosen) + " grasps selected");
     set_output("grasps", HandSetPtr(selection));
     if (chosen == 0) {
-      set_failure_reason("the selector found no grasp (" + rejection_summary(*selection) + ")");
+      set_failure_reason("the selector found no grasp (" + rejection_counts(selection->hands) +
+                         ")");
       return bt::Status::kFailure;
     }
     set_output("best", selection->hands.front());

@@ -1,15 +1,16 @@
-#include "rejection_summary.hpp"
-
 #include <algorithm>
 #include <map>
+#include <string>
 #include <utility>
 #include <vector>
 
-namespace antipode::pipeline {
+#include "antipode/core/hand.hpp"
 
-std::string rejection_summary(const HandSet& hands, bool count_kept) {
+namespace antipode {
+
+std::string rejection_counts(const std::vector<Hand>& hands, bool count_kept) {
   std::map<std::string, int> count;
-  for (const Hand& hand : hands.hands)
+  for (const Hand& hand : hands)
     if (count_kept || hand.rejection != Rejection::kNone) ++count[to_string(hand.rejection)];
   std::vector<std::pair<int, std::string>> order;
   for (const auto& [reason, n] : count) order.emplace_back(-n, reason);
@@ -20,4 +21,4 @@ std::string rejection_summary(const HandSet& hands, bool count_kept) {
   return text.empty() ? "no hands" : text;
 }
 
-}  // namespace antipode::pipeline
+}  // namespace antipode
