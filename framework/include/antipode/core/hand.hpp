@@ -41,12 +41,6 @@ enum class Rejection : std::uint8_t {
 const char* to_string(HandLabel label);
 const char* to_string(Rejection reason);
 
-struct Hand;
-/// "12 clustered into another grasp, 3 in collision": how many of `hands` each rejection
-/// dropped, most frequent first (ties by name); hands without one are counted as "none"
-/// when `count_kept`, else left out. "no hands" when nothing is counted.
-std::string rejection_counts(const std::vector<Hand>& hands, bool count_kept = true);
-
 /// One hand hypothesis. The pose is X_FrameHand: hand frame expressed in `frame` (the
 /// cloud's frame). Rotation columns are the approach (x), closing (y) and axis (z)
 /// directions; the origin is the centre of the palm face (see hand_geometry.hpp).
@@ -72,5 +66,10 @@ struct Hand {
   Eigen::Vector3d axis() const { return X_FrameHand.linear().col(2); }
   Eigen::Vector3d position_m() const { return X_FrameHand.translation(); }
 };
+
+/// "12 clustered into another grasp, 3 in collision": how many of `hands` each rejection
+/// dropped, most frequent first (ties by name); hands without one are counted as "none"
+/// when `count_kept`, else left out. "no hands" when nothing is counted.
+std::string rejection_counts(const std::vector<Hand>& hands, bool count_kept = true);
 
 }  // namespace antipode
