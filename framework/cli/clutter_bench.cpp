@@ -251,9 +251,9 @@ void print_clutter_summary(std::ostream& out, const Json& s, const std::string& 
       << interval(s["removed_rate"]) << " (" << published(false) << "); lost off the table "
       << s["lost"] << "\n";
   if (s.contains("left_graspable")) {
-    const int left = s["objects"].get<int>() - s["removed"].get<int>() - s["lost"].get<int>();
     const int graspable = s["removed"].get<int>() + s["left_graspable"].get<int>();
-    out << "objects left " << left << ", of which " << left - s["left_graspable"].get<int>()
+    out << "objects left " << s["left"] << ", of which "
+        << s["left"].get<int>() - s["left_graspable"].get<int>()
         << " lay too wide or too thin for the gripper across every horizontal direction (narrowest "
         << "horizontal extent outside " << 100 * kMinGraspableWidthM << "-"
         << 100 * kMaxGraspableWidthM
@@ -275,7 +275,7 @@ void print_clutter_summary(std::ostream& out, const Json& s, const std::string& 
 
 Json summarise_clutter(const Json& runs) {
   int attempts = 0, successes = 0, objects = 0, lost = 0, cycles = 0, no_grasp = 0, errors = 0;
-  int left_graspable = 0;
+  int left = 0, left_graspable = 0;
   bool truth = true;  // every run says what was left
   Json reasons = Json::object(), groups = Json::object(), stops = Json::object();
   std::vector<double> cycle_s, run_s;
@@ -289,7 +289,10 @@ Json summarise_clutter(const Json& runs) {
     objects += run["objects"].get<int>();
     lost += std::max(0, run["lost"].get<int>());
     truth = truth && run.contains("left_graspable");
-    if (truth) left_graspable += run["left_graspable"].get<int>();
+    if (truth) {
+      left += int(run["left_objects"].size());
+      left_graspable += run["left_graspable"].get<int>();
+    }
     const std::string stop = run["stop"];
     stops[stop] = stops.value(stop, 0) + 1;
     run_s.push_back(run["wall_s"].get<double>());
@@ -322,6 +325,7 @@ Json summarise_clutter(const Json& runs) {
                   {"run_s_median", percentile(run_s, 0.5)}};
   // The objects the gripper could hold as they lay: those removed and those left that fit.
   if (truth && errors < int(runs.size())) {
+    summary["left"] = left;
     summary["left_graspable"] = left_graspable;
     summary["removed_of_graspable_rate"] = rate(successes, successes + left_graspable);
   }

@@ -62,8 +62,7 @@ std::string headline(const Json& r) {
 // What the objects left say about the removal rate (runs whose cell has ground truth).
 std::string what_was_left(const Json& s) {
   if (!s.contains("left_graspable")) return "";
-  const int removed = s["removed"], left_graspable = s["left_graspable"];
-  const int left = s["objects"].get<int>() - removed - s["lost"].get<int>();
+  const int removed = s["removed"], left = s["left"], left_graspable = s["left_graspable"];
   char text[600];
   std::snprintf(text, sizeof text,
                 "Of the %d objects left in the box, %d lay too wide or too thin for the gripper "

@@ -63,6 +63,8 @@ TEST_F(ClutterBenchTest, EveryRunRemovesObjects) {
   }
   EXPECT_LE(s["successes"].get<int>(), s["attempts"].get<int>());
   EXPECT_EQ(s["left_graspable"], left_graspable);
+  EXPECT_EQ(s["left"].get<int>(),
+            s["objects"].get<int>() - s["removed"].get<int>() - s["lost"].get<int>());
   const int removed = s["removed"];
   EXPECT_DOUBLE_EQ(s["removed_of_graspable_rate"]["rate"].get<double>(),
                    double(removed) / (removed + left_graspable));

@@ -77,9 +77,13 @@ class ClassifyHands final : public bt::SyncActionNode {
       set_failure_reason("the classifier " + problem);
       return bt::Status::kFailure;
     }
-    auto classified = std::make_shared<HandSet>(*in);
-    for (std::size_t k = 0; k < where.size(); ++k)
-      classified->hands[where[k]] = std::move(scored.hands[k]);
+    // The input's hands in order: the classified ones moved in, the others as they were.
+    auto classified =
+        std::make_shared<HandSet>(HandSet{in->cloud, {}, in->geometry, in->support, in->objects});
+    classified->hands.reserve(in->hands.size());
+    for (std::size_t i = 0, k = 0; i < in->hands.size(); ++i)
+      classified->hands.push_back(k < where.size() && where[k] == i ? std::move(scored.hands[k++])
+                                                                    : in->hands[i]);
     const auto grasps =
         std::count_if(classified->hands.begin(), classified->hands.end(),
                       [](const Hand& hand) { return hand.label == HandLabel::kPositive; });
