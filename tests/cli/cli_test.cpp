@@ -347,6 +347,28 @@ TEST_F(DetectTest, ExplainNamesTheSupportTheObjectsAndWhereTheBestGraspsLie) {
   for (const auto& hand : document["hands"]) EXPECT_EQ(hand["object"], 0);
 }
 
+// OpenBLAS picks its matrix kernel for the CPU it runs on; the SVM's decision values, and so
+// the grasps, must not depend on which (OPENBLAS_CORETYPE forces a kernel: the SSE one of
+// 2008 and, where the CPU has them, the AVX2 and FMA one).
+TEST_F(DetectTest, TheSameGraspsWhicheverMatrixKernelTheCpuGets) {
+  const std::string mug = std::string(ANTIPODE_TEST_DATA_DIR) + "/clouds/table_mug.pcd";
+  if (!fs::exists(mug)) GTEST_SKIP() << "no " << mug << " (../shared/data is absent)";
+  if (!__builtin_cpu_supports("avx2") || !__builtin_cpu_supports("fma"))
+    GTEST_SKIP() << "this CPU has no AVX2 and FMA kernel to compare with";
+  std::map<std::string, std::string> grasps;
+  for (const char* core : {"Nehalem", "Haswell"}) {
+    const std::string out = (dir_ / (std::string(core) + ".json")).string();
+    const Result result = run("detect " + mug + " --tree " + tree_ + " --out " + out +
+                                  " --set sampler.samples=1000 --set selector.max_grasps=100",
+                              "OPENBLAS_CORETYPE=" + std::string(core));
+    ASSERT_EQ(result.exit_code, 0) << result.out;
+    std::ifstream in(out);
+    grasps[core] = std::string(std::istreambuf_iterator<char>(in), {});
+  }
+  ASSERT_NE(grasps["Nehalem"].find("\"score\""), std::string::npos);
+  EXPECT_EQ(grasps["Nehalem"], grasps["Haswell"]);
+}
+
 // A single object without a table: no support surface, the whole cloud is searched.
 TEST_F(DetectTest, ExplainSaysWhenThereIsNoSupport) {
   if (!fs::exists(krylon_)) GTEST_SKIP() << "no " << krylon_ << " (../shared/data is absent)";

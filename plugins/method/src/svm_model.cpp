@@ -11,8 +11,8 @@
 
 #include "antipode/core/binary_file.hpp"
 #include "antipode/core/error.hpp"
-#include "float_product.hpp"
 #include "image_options_io.hpp"
+#include "matrix_product.hpp"
 #include "number_codes.hpp"
 
 namespace antipode {
@@ -31,6 +31,7 @@ constexpr int kMaxOption = 4096;  // bound on each image option read from a file
 
 using RowMatrixF = Eigen::Matrix<float, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
 using ConstRowMapF = Eigen::Map<const RowMatrixF>;
+using RowMatrixD = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
 
 std::string number(double value) {
   std::ostringstream out;
@@ -218,86 +219,93 @@ void for_each_block(std::size_t n, int threads, const Body& body) {
   });
 }
 
+// Decision values are computed in double precision from the model's single-precision
+// numbers. OpenBLAS picks its matrix kernel for the CPU it runs on, and kernels round
+// differently: in single precision, decision values differed in the 7th digit between CPUs,
+// enough to reorder hands of nearly equal score and so change which grasp a clear-the-box
+// cycle executes - and every cycle after it. In double precision they differ in the 16th
+// digit, below any difference between two hands' scores. The reduced features z are
+// rounded to single precision, as reduce() returns them for training, so that
+// decision_values() and decision_values_reduced(reduce()) agree exactly.
+
 // Rows [first, first + count) of `rows` (width `dim`), minus `offset`, in a zero-padded
 // kBlockRows x dim matrix.
-RowMatrixF padded_block(const float* rows, std::size_t first, std::size_t count, std::size_t dim,
+RowMatrixD padded_block(const float* rows, std::size_t first, std::size_t count, std::size_t dim,
                         const std::vector<float>* offset) {
-  RowMatrixF block = RowMatrixF::Zero(SvmModel::kBlockRows, static_cast<Eigen::Index>(dim));
+  RowMatrixD block = RowMatrixD::Zero(SvmModel::kBlockRows, static_cast<Eigen::Index>(dim));
   for (std::size_t r = 0; r < count; ++r) {
     const float* row = rows + (first + r) * dim;
     for (std::size_t c = 0; c < dim; ++c) {
       block(static_cast<Eigen::Index>(r), static_cast<Eigen::Index>(c)) =
-          offset == nullptr ? row[c] : row[c] - (*offset)[c];
+          offset == nullptr ? double(row[c]) : double(row[c]) - double((*offset)[c]);
     }
   }
   return block;
 }
 
-RowMatrixF reduce_block(const SvmModel& m, const float* rows, std::size_t first,
+// The reduced features of a block, each rounded to single precision.
+RowMatrixD reduce_block(const SvmModel& m, const float* rows, std::size_t first,
                         std::size_t count) {
   const auto d = static_cast<Eigen::Index>(m.input_dimension());
   const auto k = static_cast<Eigen::Index>(m.components());
-  const RowMatrixF centred = padded_block(rows, first, count, m.input_dimension(), &m.mean);
-  RowMatrixF z(centred.rows(), k);
+  const RowMatrixD centred = padded_block(rows, first, count, m.input_dimension(), &m.mean);
+  const RowMatrixD basis = ConstRowMapF(m.basis.data(), k, d).cast<double>();
+  RowMatrixD z(centred.rows(), k);
   detail::multiply_transposed(centred.data(), std::size_t(centred.rows()), std::size_t(d),
-                              m.basis.data(), std::size_t(k), z.data());
-  for (Eigen::Index j = 0; j < k; ++j) z.col(j) *= m.scale[static_cast<std::size_t>(j)];
-  return z;
+                              basis.data(), std::size_t(k), z.data());
+  for (Eigen::Index j = 0; j < k; ++j) z.col(j) *= double(m.scale[static_cast<std::size_t>(j)]);
+  return z.cast<float>().cast<double>();
 }
 
 // Support vectors are scored in chunks of this many, so that a chunk's kernel values
-// (kBlockRows x kChunk floats, 512 KiB) stay in cache between the matrix product, the
+// (kBlockRows x kChunk doubles, 1 MiB) stay in cache between the matrix product, the
 // kernel function and the weighted sum.
 constexpr Eigen::Index kSupportChunk = 1024;
 
 // K(z_r, sv_i) for every row r of z and support vector i of `support`, in place of their
 // dot products `k`; `z_squared` and `sv_squared` are the rows' squared norms (only the
 // Gaussian kernel uses them: |z - sv|^2 = |z|^2 + |sv|^2 - 2 z . sv).
-void apply_kernel(const SvmKernel& kernel, const Eigen::VectorXf& z_squared,
-                  const Eigen::RowVectorXf& sv_squared, RowMatrixF& k) {
+void apply_kernel(const SvmKernel& kernel, const Eigen::VectorXd& z_squared,
+                  const Eigen::RowVectorXd& sv_squared, RowMatrixD& k) {
   if (kernel.type == SvmKernelType::kRbf) {
     // One contiguous row at a time: Eigen vectorizes exp() over plain arrays, not through
-    // replicate(), which would call the C library's scalar expf for every value.
-    const auto gamma = static_cast<float>(kernel.gamma);
+    // replicate(), which would call the C library's scalar exp for every value.
     for (Eigen::Index r = 0; r < k.rows(); ++r) {
       auto row = k.row(r).array();
-      row = ((sv_squared.array() + z_squared(r) - 2.0f * row).max(0.0f) * -gamma).exp();
+      row = ((sv_squared.array() + z_squared(r) - 2.0 * row).max(0.0) * -kernel.gamma).exp();
     }
     return;
   }
-  const Eigen::ArrayXXf base =
-      static_cast<float>(kernel.gamma) * k.array() + static_cast<float>(kernel.coef0);
-  Eigen::ArrayXXf power = base;
+  const Eigen::ArrayXXd base = kernel.gamma * k.array() + kernel.coef0;
+  Eigen::ArrayXXd power = base;
   for (int i = 1; i < kernel.degree; ++i) power *= base;
   k = power.matrix();
 }
 
 // f(z_r) for the rows of z (kBlockRows x components), written to out[first + r] for the
-// first `count` rows. Kernel values are single precision (matrix products on the vector
-// units); they are summed in double precision.
-void score_block(const SvmModel& m, const RowMatrixF& z, std::size_t first, std::size_t count,
+// first `count` rows.
+void score_block(const SvmModel& m, const RowMatrixD& z, std::size_t first, std::size_t count,
                  double* out) {
   const auto k = static_cast<Eigen::Index>(m.components());
   const auto nsv = static_cast<Eigen::Index>(m.support_vector_count());
   const bool gaussian = m.kernel.type == SvmKernelType::kRbf;
-  const Eigen::VectorXf z_squared =
-      gaussian ? z.rowwise().squaredNorm().eval() : Eigen::VectorXf::Zero(z.rows());
+  const Eigen::VectorXd z_squared =
+      gaussian ? z.rowwise().squaredNorm().eval() : Eigen::VectorXd::Zero(z.rows());
   const Eigen::Map<const Eigen::VectorXd> alpha(m.alpha.data(), nsv);
   Eigen::VectorXd sum = Eigen::VectorXd::Zero(z.rows());
-  RowMatrixF values;
-  Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> values_double;
+  RowMatrixD support;
+  RowMatrixD values;
   for (Eigen::Index c = 0; c < nsv; c += kSupportChunk) {
     const Eigen::Index width = std::min(kSupportChunk, nsv - c);
-    const ConstRowMapF support(m.support_vectors.data() + c * k, width, k);
-    const Eigen::RowVectorXf sv_squared = gaussian
+    support = ConstRowMapF(m.support_vectors.data() + c * k, width, k).cast<double>();
+    const Eigen::RowVectorXd sv_squared = gaussian
                                               ? support.rowwise().squaredNorm().transpose().eval()
-                                              : Eigen::RowVectorXf::Zero(width);
+                                              : Eigen::RowVectorXd::Zero(width);
     values.resize(z.rows(), width);
     detail::multiply_transposed(z.data(), std::size_t(z.rows()), std::size_t(k), support.data(),
                                 std::size_t(width), values.data());
     apply_kernel(m.kernel, z_squared, sv_squared, values);
-    values_double = values.cast<double>();  // a plain matrix: the product below vectorizes
-    sum.noalias() += values_double * alpha.segment(c, width);
+    sum.noalias() += values * alpha.segment(c, width);
   }
   for (std::size_t r = 0; r < count; ++r)
     out[first + r] = sum(static_cast<Eigen::Index>(r)) - m.rho;
@@ -369,11 +377,11 @@ std::vector<float> SvmModel::reduce(const float* rows, std::size_t n, std::size_
   for_each_block(n, threads, [&](std::size_t b) {
     const std::size_t first = b * kBlockRows;
     const std::size_t count = block_rows(n, b);
-    const RowMatrixF z = reduce_block(*this, rows, first, count);
+    const RowMatrixD z = reduce_block(*this, rows, first, count);
     for (std::size_t r = 0; r < count; ++r) {
       for (std::size_t j = 0; j < k; ++j) {
         reduced[(first + r) * k + j] =
-            z(static_cast<Eigen::Index>(r), static_cast<Eigen::Index>(j));
+            static_cast<float>(z(static_cast<Eigen::Index>(r), static_cast<Eigen::Index>(j)));
       }
     }
   });
