@@ -35,7 +35,8 @@ double trimmed_extent_m(const Hand& hand, const Cloud& cloud, const Eigen::Vecto
   const auto hi = static_cast<std::ptrdiff_t>(std::ceil((1.0 - trim) * last));
   std::nth_element(along.begin(), along.begin() + lo, along.end());
   const float low = along[static_cast<std::size_t>(lo)];
-  std::nth_element(along.begin(), along.begin() + hi, along.end());
+  // Everything after position lo is now at least `low`: the hi-th value is among them.
+  if (hi > lo) std::nth_element(along.begin() + lo + 1, along.begin() + hi, along.end());
   const double bulk = static_cast<double>(along[static_cast<std::size_t>(hi)] - low);
   return std::min(full, bulk / (1.0 - 2.0 * trim));
 }
