@@ -249,7 +249,8 @@ RowMatrixD padded_block(const float* rows, std::size_t first, std::size_t count,
 
 // The model's basis and support vectors in double precision, converted once per call of
 // decision_values() or reduce() and shared, read-only, by every block: converting them per
-// block cost about a tenth of the decision time (4 blocks for a typical scene).
+// block (4 blocks for table_mug.pcd's 476 screened hands) made the whole detection about 7%
+// slower (docs/results.md, Speed).
 struct DoubleModel {
   RowMatrixD basis;            ///< components x input dimension
   RowMatrixD support;          ///< support vectors x components
