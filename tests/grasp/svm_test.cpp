@@ -248,21 +248,31 @@ TEST(SvmTest, CrossValidationChoosesAmongKernels) {
 }
 
 TEST(SvmTest, DecisionValuesDoNotDependOnThreadsOrBatching) {
-  const SvmModel& model = trained();
   const TrainingSet& set = held_out();
-  const auto one = model.decision_values(set.features.data(), set.size(), set.dimension, 1);
-  const auto two = model.decision_values(set.features.data(), set.size(), set.dimension, 2);
-  EXPECT_EQ(one, two);
-  // A row alone gives the value it has in a batch (fixed, padded blocks).
-  for (const std::size_t i : {std::size_t{0}, std::size_t{130}, set.size() - 1}) {
-    const auto alone = model.decision_values(set.row(i), 1, set.dimension, 1);
-    EXPECT_EQ(alone[0], one[i]) << i;
+  for (const SvmModel* kernel_model : {&trained(), &trained_rbf()}) {
+    const SvmModel& model = *kernel_model;
+    SCOPED_TRACE(kernel_name(model.kernel.type));
+    const auto one = model.decision_values(set.features.data(), set.size(), set.dimension, 1);
+    const auto two = model.decision_values(set.features.data(), set.size(), set.dimension, 2);
+    EXPECT_EQ(one, two);
+    // A row alone gives the value it has in a batch (fixed, padded blocks).
+    for (const std::size_t i : {std::size_t{0}, std::size_t{130}, set.size() - 1}) {
+      const auto alone = model.decision_values(set.row(i), 1, set.dimension, 1);
+      EXPECT_EQ(alone[0], one[i]) << i;
+    }
+    // And the reduced features scored apart give the same values.
+    const auto reduced = model.reduce(set.features.data(), set.size(), set.dimension, 2);
+    EXPECT_EQ(model.decision_values_reduced(reduced.data(), set.size(), 1), one);
   }
+  const SvmModel& model = trained();
+  const auto one = model.decision_values(set.features.data(), set.size(), set.dimension, 1);
   std::vector<std::vector<float>> rows;
   for (std::size_t i = 0; i < set.size(); ++i)
     rows.emplace_back(set.row(i), set.row(i) + set.dimension);
   EXPECT_EQ(model.decision_values(rows, 2), one);
   EXPECT_TRUE(model.decision_values(nullptr, 0, set.dimension, 2).empty());
+  EXPECT_EQ(error_of([&] { model.decision_values(nullptr, 0, set.dimension, -1); }),
+            "SVM model: threads must be >= 0, got -1");
   const std::string wrong = error_of([&] { model.decision_values(set.row(0), 1, 100, 1); });
   EXPECT_NE(wrong.find("descriptors of 100 numbers, but the model takes " +
                        std::to_string(set.dimension)),

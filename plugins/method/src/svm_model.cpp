@@ -247,43 +247,43 @@ RowMatrixD padded_block(const float* rows, std::size_t first, std::size_t count,
   return block;
 }
 
-// The model's basis and support vectors in double precision, converted once per call of
-// decision_values() or reduce() and shared, read-only, by every block: converting them per
-// block (4 blocks for table_mug.pcd's 476 screened hands) made the whole detection about 7%
-// slower (docs/results.md, Speed).
-struct DoubleModel {
-  RowMatrixD basis;            ///< components x input dimension
-  RowMatrixD support;          ///< support vectors x components
-  Eigen::RowVectorXd squared;  ///< the support vectors' squared norms (Gaussian kernel)
+// The model's numbers in double precision are converted once per call of reduce() or
+// decision_values() and shared, read-only, by every block: converting them per block (4
+// blocks for table_mug.pcd's 476 screened hands) made the whole detection about 7% slower
+// (docs/results.md, Speed).
 
-  static DoubleModel of_basis(const SvmModel& m) {
-    DoubleModel out;
-    out.basis = ConstRowMapF(m.basis.data(), Eigen::Index(m.components()),
-                             Eigen::Index(m.input_dimension()))
-                    .cast<double>();
-    return out;
-  }
+// The PCA basis, components x input dimension.
+RowMatrixD double_basis(const SvmModel& m) {
+  return ConstRowMapF(m.basis.data(), Eigen::Index(m.components()),
+                      Eigen::Index(m.input_dimension()))
+      .cast<double>();
+}
 
-  static DoubleModel of(const SvmModel& m, bool with_basis) {
-    DoubleModel out = with_basis ? of_basis(m) : DoubleModel{};
-    out.support = ConstRowMapF(m.support_vectors.data(), Eigen::Index(m.support_vector_count()),
+// The support vectors, and their squared norms for the Gaussian kernel.
+struct DoubleSupport {
+  RowMatrixD vectors;          ///< support vectors x components
+  Eigen::RowVectorXd squared;  ///< empty for the polynomial kernel
+
+  static DoubleSupport of(const SvmModel& m) {
+    DoubleSupport out;
+    out.vectors = ConstRowMapF(m.support_vectors.data(), Eigen::Index(m.support_vector_count()),
                                Eigen::Index(m.components()))
                       .cast<double>();
     if (m.kernel.type == SvmKernelType::kRbf)
-      out.squared = out.support.rowwise().squaredNorm().transpose();
+      out.squared = out.vectors.rowwise().squaredNorm().transpose();
     return out;
   }
 };
 
 // The reduced features of a block, each rounded to single precision.
-RowMatrixD reduce_block(const SvmModel& m, const DoubleModel& dm, const float* rows,
+RowMatrixD reduce_block(const SvmModel& m, const RowMatrixD& basis, const float* rows,
                         std::size_t first, std::size_t count) {
   const auto d = static_cast<Eigen::Index>(m.input_dimension());
   const auto k = static_cast<Eigen::Index>(m.components());
   const RowMatrixD centred = padded_block(rows, first, count, m.input_dimension(), &m.mean);
   RowMatrixD z(centred.rows(), k);
   detail::multiply_transposed(centred.data(), std::size_t(centred.rows()), std::size_t(d),
-                              dm.basis.data(), std::size_t(k), z.data());
+                              basis.data(), std::size_t(k), z.data());
   for (Eigen::Index j = 0; j < k; ++j) z.col(j) *= double(m.scale[static_cast<std::size_t>(j)]);
   return z.cast<float>().cast<double>();
 }
@@ -293,10 +293,10 @@ RowMatrixD reduce_block(const SvmModel& m, const DoubleModel& dm, const float* r
 // kernel function and the weighted sum.
 constexpr Eigen::Index kSupportChunk = 1024;
 
-// K(z_r, sv_i) for the first `rows` rows r of z and every support vector i of `support`, in
-// place of their dot products `k` (the zero-padded rows after them are left as they are:
-// their values are never read); `z_squared` and `sv_squared` are the rows' squared norms
-// (only the Gaussian kernel uses them: |z - sv|^2 = |z|^2 + |sv|^2 - 2 z . sv).
+// K(z_r, sv_i) for the first `rows` rows r of z and every support vector i, in place of
+// their dot products `k` (the zero rows that pad a block follow them and are left as they
+// are: their values are never read); `z_squared` and `sv_squared` are the rows' squared
+// norms (only the Gaussian kernel uses them: |z - sv|^2 = |z|^2 + |sv|^2 - 2 z . sv).
 void apply_kernel(const SvmKernel& kernel, Eigen::Index rows, const Eigen::VectorXd& z_squared,
                   const Eigen::RowVectorXd& sv_squared, RowMatrixD& k) {
   if (kernel.type == SvmKernelType::kRbf) {
@@ -308,16 +308,16 @@ void apply_kernel(const SvmKernel& kernel, Eigen::Index rows, const Eigen::Vecto
     }
     return;
   }
-  const Eigen::ArrayXXd base = kernel.gamma * k.array() + kernel.coef0;
+  const Eigen::ArrayXXd base = kernel.gamma * k.topRows(rows).array() + kernel.coef0;
   Eigen::ArrayXXd power = base;
   for (int i = 1; i < kernel.degree; ++i) power *= base;
-  k = power.matrix();
+  k.topRows(rows) = power.matrix();
 }
 
 // f(z_r) for the rows of z (kBlockRows x components), written to out[first + r] for the
 // first `count` rows.
-void score_block(const SvmModel& m, const DoubleModel& dm, const RowMatrixD& z, std::size_t first,
-                 std::size_t count, double* out) {
+void score_block(const SvmModel& m, const DoubleSupport& support, const RowMatrixD& z,
+                 std::size_t first, std::size_t count, double* out) {
   const auto k = static_cast<Eigen::Index>(m.components());
   const auto nsv = static_cast<Eigen::Index>(m.support_vector_count());
   const bool gaussian = m.kernel.type == SvmKernelType::kRbf;
@@ -329,10 +329,10 @@ void score_block(const SvmModel& m, const DoubleModel& dm, const RowMatrixD& z, 
   for (Eigen::Index c = 0; c < nsv; c += kSupportChunk) {
     const Eigen::Index width = std::min(kSupportChunk, nsv - c);
     const Eigen::RowVectorXd sv_squared =
-        gaussian ? dm.squared.segment(c, width).eval() : Eigen::RowVectorXd::Zero(width);
+        gaussian ? support.squared.segment(c, width).eval() : Eigen::RowVectorXd::Zero(width);
     values.resize(z.rows(), width);
     detail::multiply_transposed(z.data(), std::size_t(z.rows()), std::size_t(k),
-                                dm.support.data() + c * k, std::size_t(width), values.data());
+                                support.vectors.data() + c * k, std::size_t(width), values.data());
     apply_kernel(m.kernel, Eigen::Index(count), z_squared, sv_squared, values);
     sum.noalias() += values * alpha.segment(c, width);
   }
@@ -405,11 +405,11 @@ std::vector<float> SvmModel::reduce(const float* rows, std::size_t n, std::size_
   std::vector<float> reduced(n * k);
   check_threads(threads);
   if (n == 0) return reduced;
-  const DoubleModel dm = DoubleModel::of_basis(*this);
+  const RowMatrixD basis = double_basis(*this);
   for_each_block(n, threads, [&](std::size_t b) {
     const std::size_t first = b * kBlockRows;
     const std::size_t count = block_rows(n, b);
-    const RowMatrixD z = reduce_block(*this, dm, rows, first, count);
+    const RowMatrixD z = reduce_block(*this, basis, rows, first, count);
     for (std::size_t r = 0; r < count; ++r) {
       for (std::size_t j = 0; j < k; ++j) {
         reduced[(first + r) * k + j] =
@@ -426,11 +426,12 @@ std::vector<double> SvmModel::decision_values(const float* rows, std::size_t n, 
   std::vector<double> values(n);
   check_threads(threads);
   if (n == 0) return values;
-  const DoubleModel dm = DoubleModel::of(*this, true);
+  const RowMatrixD basis = double_basis(*this);
+  const DoubleSupport support = DoubleSupport::of(*this);
   for_each_block(n, threads, [&](std::size_t b) {
     const std::size_t first = b * kBlockRows;
     const std::size_t count = block_rows(n, b);
-    score_block(*this, dm, reduce_block(*this, dm, rows, first, count), first, count,
+    score_block(*this, support, reduce_block(*this, basis, rows, first, count), first, count,
                 values.data());
   });
   return values;
@@ -452,12 +453,12 @@ std::vector<double> SvmModel::decision_values_reduced(const float* reduced, std:
   std::vector<double> values(n);
   check_threads(threads);
   if (n == 0) return values;
-  const DoubleModel dm = DoubleModel::of(*this, false);
+  const DoubleSupport support = DoubleSupport::of(*this);
   for_each_block(n, threads, [&](std::size_t b) {
     const std::size_t first = b * kBlockRows;
     const std::size_t count = block_rows(n, b);
-    score_block(*this, dm, padded_block(reduced, first, count, components(), nullptr), first, count,
-                values.data());
+    score_block(*this, support, padded_block(reduced, first, count, components(), nullptr), first,
+                count, values.data());
   });
   return values;
 }
