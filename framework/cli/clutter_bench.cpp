@@ -4,12 +4,14 @@
 #include <algorithm>
 
 #include <chrono>
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <iomanip>
 #include <iostream>
 #include <map>
+#include <optional>
 #include <sstream>
 #include <thread>
 
@@ -17,6 +19,7 @@
 #include "antipode/core/error.hpp"
 #include "antipode/interfaces/cell.hpp"
 #include "antipode/interfaces/clearing_run.hpp"
+#include "antipode/io/gripper_file.hpp"
 #include "bench_objects.hpp"
 #include "bench_processes.hpp"
 #include "bench_report.hpp"
@@ -40,6 +43,8 @@ struct RunSettings {
   std::string pictures_dir;  ///< failed attempts drawn here as seed-S-cycle-NN.png ("" = none)
   int threads = 2;
   std::vector<std::pair<std::string, std::string>> entries;  ///< the same for every run
+  /// Objects left whose narrowest horizontal extent lies in [min, max] count as holdable.
+  std::pair<double, double> graspable_m{kMinGraspableWidthM, kMaxGraspableWidthM};
 };
 
 // `o` with the protocol's tree and object count where the options leave them open.
@@ -61,6 +66,7 @@ void check_options(const ClutterBenchOptions& o) {
   if (o.objects != "procedural" && !fs::is_directory(o.objects))
     throw Error("--objects: '" + o.objects + "' is neither 'procedural' nor a folder of meshes");
   parse_overrides(o.set);  // throws for an entry without '='
+  if (!o.gripper_path.empty()) read_gripper_file(o.gripper_path);  // throws for a bad file
 }
 
 // The --set entries every run shares, the user's last.
@@ -79,6 +85,7 @@ std::vector<std::pair<std::string, std::string>> shared_entries(const ClutterBen
     entries.push_back(std::move(entry));
   if (o.objects != "procedural") entries.emplace_back("cell.objects", fs::absolute(o.objects));
   if (!o.noise.empty()) entries.emplace_back("cell.noise", o.noise);
+  if (!o.gripper_path.empty()) entries.emplace_back("sampler.hand", fs::absolute(o.gripper_path));
   for (auto& entry : parse_overrides(o.set)) entries.push_back(std::move(entry));
   return entries;
 }
@@ -116,9 +123,10 @@ Json cycle_json(const ClearingCycle& cycle) {
 
 // What was left in the cell at the end of a run, from its ground truth (a simulated cell's):
 // `left_objects` (name and narrowest horizontal extent of each) and `left_graspable` (how many
-// of them a gripper of the paper's range could hold from above as they lay). Nothing when the
-// tree has no cell or the cell has no ground truth.
-void record_what_was_left(const bt::Tree& tree, Json& out) {
+// of them have a width in `graspable_m`, so that the gripper could hold them from above as
+// they lay). Nothing when the tree has no cell or the cell has no ground truth.
+void record_what_was_left(const bt::Tree& tree, const std::pair<double, double>& graspable_m,
+                          Json& out) {
   for (const std::string& name : tree.component_names()) {
     const auto cell = std::dynamic_pointer_cast<const Cell>(tree.component(name));
     if (!cell) continue;
@@ -129,11 +137,12 @@ void record_what_was_left(const bt::Tree& tree, Json& out) {
     for (const ObjectTruth& object : truth) {
       left.push_back(
           {{"name", object.name}, {"narrowest_horizontal_m", object.narrowest_horizontal_m}});
-      graspable += object.narrowest_horizontal_m >= kMinGraspableWidthM &&
-                   object.narrowest_horizontal_m <= kMaxGraspableWidthM;
+      graspable += object.narrowest_horizontal_m >= graspable_m.first &&
+                   object.narrowest_horizontal_m <= graspable_m.second;
     }
     out["left_objects"] = left;
     out["left_graspable"] = graspable;
+    out["graspable_width_m"] = {graspable_m.first, graspable_m.second};
     return;
   }
 }
@@ -170,7 +179,7 @@ Json run_one(const Session& session, const RunSettings& settings, std::size_t in
       out["lost"] = run.objects_lost();
       out["stop"] = to_string(run.stop);
       out["summary"] = run.summary();
-      record_what_was_left(tree, out);
+      record_what_was_left(tree, settings.graspable_m, out);
       Json cycles = Json::array();
       for (const ClearingCycle& cycle : run.cycles) cycles.push_back(cycle_json(cycle));
       out["cycles"] = cycles;
@@ -252,11 +261,11 @@ void print_clutter_summary(std::ostream& out, const Json& s, const std::string& 
       << s["lost"] << "\n";
   if (s.contains("left_graspable")) {
     const int graspable = s["removed"].get<int>() + s["left_graspable"].get<int>();
+    const auto [min_m, max_m] = summary_graspable_width_m(s);
     out << "objects left " << s["left"] << ", of which "
         << s["left"].get<int>() - s["left_graspable"].get<int>()
         << " lay too wide or too thin for the gripper across every horizontal direction (narrowest "
-        << "horizontal extent outside " << 100 * kMinGraspableWidthM << "-"
-        << 100 * kMaxGraspableWidthM
+        << "horizontal extent outside " << 100 * min_m << "-" << 100 * max_m
         << " cm); removed of the objects it could hold: " << s["removed"] << " / " << graspable
         << " = " << interval(s["removed_of_graspable_rate"]) << "\n";
   }
@@ -273,9 +282,22 @@ void print_clutter_summary(std::ostream& out, const Json& s, const std::string& 
   out << "\nmedian seconds: cycle " << s["cycle_s_median"] << ", run " << s["run_s_median"] << "\n";
 }
 
+std::pair<double, double> graspable_width_m(double min_aperture_m, double max_aperture_m) {
+  // Rounded to 0.1 mm first, so that an aperture of exactly 3 cm is not taken for 3.0000001.
+  const auto cm = [](double m) { return std::round(m * 1000.0) / 10.0; };
+  return {std::ceil(cm(min_aperture_m)) / 100.0, std::floor(cm(max_aperture_m)) / 100.0};
+}
+
+std::pair<double, double> summary_graspable_width_m(const Json& summary) {
+  if (!summary.contains("graspable_width_m")) return {kMinGraspableWidthM, kMaxGraspableWidthM};
+  const Json& range = summary["graspable_width_m"];
+  return {range[0].get<double>(), range[1].get<double>()};
+}
+
 Json summarise_clutter(const Json& runs) {
   int attempts = 0, successes = 0, objects = 0, lost = 0, cycles = 0, no_grasp = 0, errors = 0;
   int left = 0, left_graspable = 0;
+  Json graspable_width = {kMinGraspableWidthM, kMaxGraspableWidthM};
   bool truth = true;  // every run says what was left
   Json reasons = Json::object(), groups = Json::object(), stops = Json::object();
   std::vector<double> cycle_s, run_s;
@@ -292,6 +314,7 @@ Json summarise_clutter(const Json& runs) {
     if (truth) {
       left += int(run["left_objects"].size());
       left_graspable += run["left_graspable"].get<int>();
+      if (run.contains("graspable_width_m")) graspable_width = run["graspable_width_m"];
     }
     const std::string stop = run["stop"];
     stops[stop] = stops.value(stop, 0) + 1;
@@ -328,6 +351,7 @@ Json summarise_clutter(const Json& runs) {
     summary["left"] = left;
     summary["left_graspable"] = left_graspable;
     summary["removed_of_graspable_rate"] = rate(successes, successes + left_graspable);
+    summary["graspable_width_m"] = graspable_width;
   }
   return summary;
 }
@@ -347,6 +371,12 @@ int bench_clutter_command(const ClutterBenchOptions& options) {
   const int cores = int(std::max(1u, std::thread::hardware_concurrency()));
   settings.threads = std::max(1, cores / o.jobs);
   settings.entries = shared_entries(o, settings.threads);
+  std::optional<GripperFile> gripper;
+  if (!o.gripper_path.empty()) {
+    gripper = read_gripper_file(o.gripper_path);
+    settings.graspable_m =
+        graspable_width_m(gripper->geometry.min_aperture_m, gripper->geometry.max_aperture_m);
+  }
 
   std::cout << "clutter bench (" << o.protocol << "): " << o.runs << " runs of "
             << o.objects_per_run << " objects (" << o.objects << "), " << o.jobs << " process(es)";
@@ -393,6 +423,7 @@ int bench_clutter_command(const ClutterBenchOptions& options) {
                    {"wall_s", wall_s},
                    {"summary", summary},
                    {"run_records", runs}};
+    if (gripper) report["gripper"] = {{"file", o.gripper_path}, {"name", gripper->name}};
     if (!shard.whole()) report["shard"] = shard_json(shard, std::size_t(o.runs));
     write_report(std::cout, o.report_path, report);
   }

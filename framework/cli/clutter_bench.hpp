@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <ostream>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <nlohmann/json.hpp>
@@ -26,6 +27,9 @@ struct ClutterBenchOptions {
   std::vector<std::string> set;  ///< --set overrides of the tree, applied last
   std::string shard;             ///< "i/n": run only that shard of the runs ("" = all)
   std::string pictures_dir;      ///< failed attempts drawn as seed-S-cycle-NN.png ("" = none)
+  /// A gripper file (antipode/io/gripper_file.hpp) for the sampler's `hand`, whose apertures
+  /// also set which objects left count as holdable ("" = the tree's gripper, Baxter's range).
+  std::string gripper_path;
 };
 
 /// Runs the clear-the-box runs in `jobs` processes (the same results for any number), prints
@@ -37,12 +41,22 @@ int bench_clutter_command(const ClutterBenchOptions& options);
 /// lost, success_rate and removed_rate with 95% intervals, cycles, no_grasp (cycles that found
 /// no grasp), reasons (failure classes of the attempts), paper_classes (the paper's groups:
 /// perception, dropped, collision, reach, other), stops and the median seconds of a cycle
-/// and of a run.
+/// and of a run; with the cell's ground truth also left, left_graspable,
+/// removed_of_graspable_rate and graspable_width_m (the holdable range [min, max]).
 nlohmann::ordered_json summarise_clutter(const nlohmann::ordered_json& runs);
 
 /// Prints a clutter report's summary as the bench does after its runs, beside the published
 /// figures of `protocol` ("paper", "vgn-pile", "vgn-packed").
 void print_clutter_summary(std::ostream& out, const nlohmann::ordered_json& summary,
                            const std::string& protocol);
+
+/// The widths [min, max] (metres) a gripper with these apertures holds, as the benches count
+/// objects: the apertures rounded inwards to whole centimetres (Baxter's 2.9-7.2 cm give the
+/// paper's 3-7 cm).
+std::pair<double, double> graspable_width_m(double min_aperture_m, double max_aperture_m);
+
+/// A clutter summary's holdable range: its graspable_width_m, or Baxter's for reports that
+/// have none.
+std::pair<double, double> summary_graspable_width_m(const nlohmann::ordered_json& summary);
 
 }  // namespace antipode::cli

@@ -179,6 +179,9 @@ void add_bench_clutter(CLI::App& bench, antipode::cli::ClutterBenchOptions& o) {
                       "Draw every failed attempt into this folder (seed-S-cycle-NN.png)");
   clutter->add_option("--shard", o.shard,
                       "i/n: run every n-th run from the i-th (then bench merge)");
+  clutter->add_option("--gripper", o.gripper_path,
+                      "A gripper file (robots/grippers/) for the sampler; its apertures set which "
+                      "objects left count as holdable (default: the tree's, Baxter's)");
 }
 
 void add_bench(CLI::App& app, Commands& commands) {

@@ -7,6 +7,7 @@
 
 #include "bar_chart.hpp"
 #include "bench_objects.hpp"
+#include "clutter_bench.hpp"
 #include "clutter_protocols.hpp"
 #include "report_sections.hpp"
 
@@ -38,6 +39,7 @@ std::string command_text(const Json& r, const std::string& name) {
   c += " --seed " + r["seed"].dump();
   if (r["tree"] != protocol.tree) c += " --tree " + shell_word(r["tree"]);
   if (r["noise"] != "tree") c += " --noise " + shell_word(r["noise"]);
+  if (r.contains("gripper")) c += " --gripper " + shell_word(r["gripper"]["file"]);
   return "```sh\n" + c + set_options(r) + " --jobs 2 --report " + name + ".json\n```\n\n";
 }
 
@@ -63,13 +65,14 @@ std::string headline(const Json& r) {
 std::string what_was_left(const Json& s) {
   if (!s.contains("left_graspable")) return "";
   const int removed = s["removed"], left = s["left"], left_graspable = s["left_graspable"];
+  const auto [min_m, max_m] = summary_graspable_width_m(s);
   char text[600];
   std::snprintf(text, sizeof text,
                 "Of the %d objects left in the box, %d lay too wide or too thin for the gripper "
                 "across every horizontal direction (their narrowest horizontal extent outside "
-                "%.0f-%.0f cm, the isolation bench's criterion; some still had a part it could "
-                "hold, such as a mug's handle). Removed of the objects it could hold: ",
-                left, left - left_graspable, 100 * kMinGraspableWidthM, 100 * kMaxGraspableWidthM);
+                "%.0f-%.0f cm, the gripper's apertures rounded inwards; some still had a part it "
+                "could hold, such as a mug's handle). Removed of the objects it could hold: ",
+                left, left - left_graspable, 100 * min_m, 100 * max_m);
   return text + rate_with_interval(removed, removed + left_graspable) + ".\n\n";
 }
 
@@ -170,6 +173,8 @@ ReportSection clutter_section(const Json& report, const std::string& name, const
                    : protocol.name == "vgn-pile" ? std::string("VGN pile: ")
                                                  : std::string("VGN packed: ")) +
                   object_set_name(report["objects"]);
+  if (report.contains("gripper"))
+    section.title += ", " + report["gripper"]["name"].get<std::string>();
   if (report["tree"] != protocol.tree || report["noise"] != "tree")
     section.title += ", " + setting_words(report, "", "", protocol.tree, "");
   section.markdown = settings_text(report) + command_text(report, name) + headline(report) + "\n" +

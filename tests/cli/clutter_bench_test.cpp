@@ -196,6 +196,24 @@ TEST_F(ClutterBenchTest, VgnRoundsFollowTheirRules) {
   EXPECT_GE(successes, 1) << r["summary"].dump(1);
 }
 
+// --gripper: the sampler searches for the file's gripper (the model trained for it would
+// refuse Baxter's hands), the cell executes it, and the objects left count as holdable by
+// its apertures, rounded inwards to whole centimetres (Baxter's 2.9-7.2 cm: 3-7 cm).
+TEST_F(ClutterBenchTest, AGripperFileSetsTheHandAndWhatCountsAsHoldable) {
+  const auto r = report(
+      "--protocol vgn-pile --runs 2 --seed 2000 --jobs 2 --gripper "
+      "robots/grippers/parallel_8cm.yaml --set "
+      "classifier.model=models/hog_svm_8cm.model",
+      "eight.json");
+  EXPECT_EQ(r["gripper"]["name"], "8 cm gripper");
+  EXPECT_EQ(r["summary"]["errors"], 0) << r["summary"].dump(1);
+  EXPECT_GE(r["summary"]["successes"].get<int>(), 1) << r["summary"].dump(1);
+  EXPECT_EQ(r["summary"]["graspable_width_m"], nlohmann::json::parse("[0.01, 0.08]"));
+  const auto baxter = report("--runs 1 --objects-per-run 1", "baxter.json");
+  EXPECT_EQ(baxter["summary"]["graspable_width_m"], nlohmann::json::parse("[0.03, 0.07]"));
+  EXPECT_FALSE(baxter.contains("gripper"));
+}
+
 // --pictures draws every attempt the cell executed and that failed, named by seed and cycle,
 // and nothing else.
 TEST_F(ClutterBenchTest, PicturesShowEveryFailedAttempt) {
@@ -248,6 +266,8 @@ TEST_F(ClutterBenchTest, BadOptionsAreOneLineErrors) {
   expect_error("--objects /no/such/folder", "neither 'procedural' nor a folder");
   expect_error("--tree trees/none.yaml", "no tree file");
   expect_error("--set cell.object_count=0", "'object_count' must be in [1, 100]");
+  expect_error("--gripper robots/grippers/none.yaml",
+               "gripper file 'robots/grippers/none.yaml': no such file");
 }
 
 }  // namespace

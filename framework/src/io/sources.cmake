@@ -1,6 +1,7 @@
 # Cloud input: PCD and PLY files through PCL (kept private: no PCL type in a public header).
 find_package(PCL 1.10 REQUIRED COMPONENTS common io)
 list(APPEND ANTIPODE_SOURCES
+  ${CMAKE_CURRENT_LIST_DIR}/gripper_file.cpp
   ${CMAKE_CURRENT_LIST_DIR}/load_cloud.cpp
   ${CMAKE_CURRENT_LIST_DIR}/pcd_ascii.cpp
   ${CMAKE_CURRENT_LIST_DIR}/pcd_header.cpp

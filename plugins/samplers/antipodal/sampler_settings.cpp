@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "antipode/geometry/bin.hpp"
+#include "antipode/io/gripper_file.hpp"
 
 namespace antipode::samplers {
 namespace {
@@ -61,26 +62,6 @@ int integer(const Parameters& params, const std::string& key, int fallback, int 
   return value;
 }
 
-HandGeometry hand_geometry(const Parameters& params) {
-  const Parameters p = params.child("hand");
-  HandGeometry h;
-  h.finger_width_m = number(p, "finger_width_m", h.finger_width_m, 0.0, false);
-  h.outer_diameter_m = number(p, "outer_diameter_m", h.outer_diameter_m, 0.0, false);
-  h.depth_m = number(p, "depth_m", h.depth_m, 0.0, false);
-  h.height_m = number(p, "height_m", h.height_m, 0.0, false);
-  h.init_bite_m = number(p, "init_bite_m", h.init_bite_m, 0.0, false);
-  h.min_aperture_m = number(p, "min_aperture_m", h.min_aperture_m, 0.0, false);
-  h.max_aperture_m = number(p, "max_aperture_m", h.max_aperture_m, 0.0, false);
-  h.palm_thickness_m = number(p, "palm_thickness_m", h.palm_thickness_m, 0.0, true);
-  p.reject_unknown();
-  try {
-    h.validate();
-  } catch (const Error& error) {
-    params.fail("hand", error.message());
-  }
-  return h;
-}
-
 SupportPlaneMode support_mode(const Parameters& params) {
   const std::string value = params.get<std::string>("support_plane", "auto");
   if (value == "auto") return SupportPlaneMode::kAuto;
@@ -92,7 +73,7 @@ SupportPlaneMode support_mode(const Parameters& params) {
 
 HandSearchParameters search_parameters(const Parameters& params) {
   HandSearchParameters s;
-  s.hand = hand_geometry(params);
+  s.hand = hand_geometry_parameter(params, "hand");
   s.samples = static_cast<std::size_t>(integer(params, "samples", 4000, 1));
   s.frame_radius_m = number(params, "neighbourhood_radius_m", s.frame_radius_m, 0.0, false);
   s.frame.min_points = static_cast<std::size_t>(integer(params, "min_neighbours", 10, 9));
