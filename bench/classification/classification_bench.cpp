@@ -4,6 +4,7 @@
 // Run with
 //   classification_bench --benchmark_repetitions=20 --benchmark_report_aggregates_only=true
 #include <algorithm>
+#include <chrono>
 #include <filesystem>
 
 #include <benchmark/benchmark.h>
@@ -131,21 +132,35 @@ void BM_Screen(benchmark::State& state) {
 }
 BENCHMARK(BM_Screen)->Unit(benchmark::kMillisecond)->UseRealTime();
 
+// Milliseconds since `start`, and `start` moved to now: the stage that just ended.
+double lap_ms(std::chrono::steady_clock::time_point& start) {
+  const auto now = std::chrono::steady_clock::now();
+  const double ms = std::chrono::duration<double, std::milli>(now - start).count();
+  start = now;
+  return ms;
+}
+
 // File -> hypotheses (4,000 samples) -> the selector's screen -> classified grasps, 2 threads:
 // what trees/detect.yaml does (ScreenHands, then ClassifyHands on the hands left).
 // Argument `objects`: 0 samples everything the support leaves (objects: all), 1 finds the
 // objects on the support first and samples only them (objects: auto, as trees/detect.yaml).
 // Argument `screen`: 1 screens the hypotheses before classifying them (as the tree does), 0
 // classifies them all.
+// The counters `load_ms`, `sample_ms`, `screen_ms`, `describe_ms` and `svm_ms` are each
+// stage's wall time per iteration (the budget of the detection, stage by stage).
 void BM_FileToClassifiedGrasps(benchmark::State& state) {
   if (!have_inputs(state)) return;
   const SvmModel& svm = model();
   const bool screen = state.range(1) != 0;
   const GraspSelector& selector = detect_selector();
   std::size_t hands = 0, classified = 0, grasps = 0;
+  double load_ms = 0, sample_ms = 0, screen_ms = 0, describe_ms = 0, svm_ms = 0;
   for (auto _ : state) {
-    HandSet set = sample_hands(load_cloud(kScene), detect_sampling(false, state.range(0) != 0),
-                               RandomStream(1));
+    auto start = std::chrono::steady_clock::now();
+    const Cloud cloud = load_cloud(kScene);
+    load_ms += lap_ms(start);
+    HandSet set = sample_hands(cloud, detect_sampling(false, state.range(0) != 0), RandomStream(1));
+    sample_ms += lap_ms(start);
     hands = set.hands.size();
     if (screen) {
       set = selector.screen(set, {});
@@ -153,8 +168,11 @@ void BM_FileToClassifiedGrasps(benchmark::State& state) {
                                      [](const Hand& h) { return h.rejection != Rejection::kNone; }),
                       set.hands.end());
     }
-    const auto values =
-        svm.decision_values(hand_descriptors(set, set.geometry, svm.descriptor.image, 2), 2);
+    screen_ms += lap_ms(start);
+    const auto descriptors = hand_descriptors(set, set.geometry, svm.descriptor.image, 2);
+    describe_ms += lap_ms(start);
+    const auto values = svm.decision_values(descriptors, 2);
+    svm_ms += lap_ms(start);
     classified = set.hands.size();
     grasps = static_cast<std::size_t>(
         std::count_if(values.begin(), values.end(), [](double v) { return v >= 0.0; }));
@@ -162,6 +180,12 @@ void BM_FileToClassifiedGrasps(benchmark::State& state) {
   state.counters["hands"] = static_cast<double>(hands);
   state.counters["classified"] = static_cast<double>(classified);
   state.counters["grasps"] = static_cast<double>(grasps);
+  const auto per_iteration = benchmark::Counter::kAvgIterations;
+  state.counters["load_ms"] = benchmark::Counter(load_ms, per_iteration);
+  state.counters["sample_ms"] = benchmark::Counter(sample_ms, per_iteration);
+  state.counters["screen_ms"] = benchmark::Counter(screen_ms, per_iteration);
+  state.counters["describe_ms"] = benchmark::Counter(describe_ms, per_iteration);
+  state.counters["svm_ms"] = benchmark::Counter(svm_ms, per_iteration);
 }
 BENCHMARK(BM_FileToClassifiedGrasps)
     ->ArgNames({"objects", "screen"})

@@ -49,18 +49,22 @@ double held_width_m(const Hand& hand, const Cloud& cloud, double trim, double ma
     return trimmed_extent_m(hand, cloud, turned_closing(hand, a * kStepRad, b * kStepRad), trim,
                             scratch);
   };
-  // Steepest descent over the grid of turns, one step about either axis at a time.
+  // Steepest descent over the grid of turns, one step about either axis at a time. The turn
+  // just left is never measured again: it is the one step back, and it was wider.
   int a = 0, b = 0;
+  int back_a = 0, back_b = 0;  // the step that leads back to the turn before (none at first)
   double width = width_at(0, 0);
   for (;;) {
     int best_a = a, best_b = b;
     double best = width - kMinShrinkM;
     for (const auto& [da, db] : {std::pair{1, 0}, {-1, 0}, {0, 1}, {0, -1}}) {
       if (std::abs(a + da) > max_steps || std::abs(b + db) > max_steps) continue;
+      if (da == back_a && db == back_b && (back_a != 0 || back_b != 0)) continue;
       const double w = width_at(a + da, b + db);
       if (w < best) best = w, best_a = a + da, best_b = b + db;
     }
     if (best_a == a && best_b == b) return width;
+    back_a = a - best_a, back_b = b - best_b;
     a = best_a, b = best_b, width = best;
   }
 }
