@@ -9,6 +9,7 @@
 #include "antipode/geometry/local_frame.hpp"
 #include "antipode/geometry/point_index.hpp"
 #include "antipode/geometry/preprocess.hpp"
+#include "antipode/geometry/scene_layout.hpp"
 #include "antipode/geometry/support_plane.hpp"
 #include "antipode/io/load_cloud.hpp"
 #include "bench_data.hpp"
@@ -114,6 +115,24 @@ void BM_SupportPlane(benchmark::State& state) {
   state.counters["inliers"] = static_cast<double>(inliers);
 }
 BENCHMARK(BM_SupportPlane)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+// The scene stage of `objects: auto` (trees/detect.yaml): candidate planes, the support and
+// the objects on it, on the preprocessed cloud.
+void BM_SceneLayout(benchmark::State& state) {
+  if (!have_scene(state)) return;
+  const Cloud cloud = preprocess(load_cloud(kScene), PreprocessOptions{});
+  Eigen::Vector3f sensor = Eigen::Vector3f::Zero();  // the views' mean origin
+  for (const Eigen::Vector3f& origin : cloud.view_origins_m)
+    sensor += origin / static_cast<float>(cloud.view_origins_m.size());
+  std::size_t objects = 0;
+  for (auto _ : state) {
+    const SceneLayout layout = find_scene_layout(cloud, sensor, SceneOptions{}, RandomStream(1));
+    objects = layout.objects.size();
+    benchmark::DoNotOptimize(layout.object_of_point.data());
+  }
+  state.counters["objects"] = static_cast<double>(objects);
+}
+BENCHMARK(BM_SceneLayout)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 }  // namespace
 }  // namespace antipode

@@ -48,13 +48,23 @@ std::vector<std::int32_t> within(const Points& points, const std::vector<std::in
   return out;
 }
 
-// The RANSAC plane with the most inliers among an even stride of `among`.
+// How many of `points` lie within `distance_m` of the plane.
+std::size_t count_within(const Points& points, const SupportPlane& plane, float distance_m) {
+  std::size_t count = 0;
+  for (const Eigen::Vector3f& p : points) count += std::fabs(plane.distance(p)) <= distance_m;
+  return count;
+}
+
+// The RANSAC plane with the most inliers among an even stride of `among`. The scoring points
+// are copied out once: every hypothesis then reads them in order (this loop was a quarter of
+// the scene stage's time when it gathered them through their indices for each hypothesis).
 std::optional<SupportPlane> ransac_plane(const Points& points,
                                          const std::vector<std::int32_t>& among,
                                          const SceneOptions& o, RandomStream& random) {
   const std::size_t stride = (among.size() + kMaxScoringPoints - 1) / kMaxScoringPoints;
-  std::vector<std::int32_t> scoring;
-  for (std::size_t k = 0; k < among.size(); k += stride) scoring.push_back(among[k]);
+  Points scoring;
+  for (std::size_t k = 0; k < among.size(); k += stride)
+    scoring.push_back(points[static_cast<std::size_t>(among[k])]);
   std::optional<SupportPlane> best;
   std::size_t best_count = 0;
   for (int iteration = 0; iteration < o.plane_iterations; ++iteration) {
@@ -66,7 +76,7 @@ std::optional<SupportPlane> ransac_plane(const Points& points,
     if (!(cross.norm() > 1e-4f)) continue;
     SupportPlane plane{cross.normalized(), 0.0f, 0};
     plane.offset = -plane.normal.dot(a);
-    const std::size_t count = within(points, scoring, plane, o.plane_distance_m).size();
+    const std::size_t count = count_within(scoring, plane, o.plane_distance_m);
     if (count > best_count) best = plane, best_count = count;
   }
   return best;
