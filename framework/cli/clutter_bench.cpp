@@ -365,9 +365,14 @@ int bench_clutter_command(const ClutterBenchOptions& options) {
   RunSettings settings;
   settings.tree_path = o.tree_path;
   settings.pictures_dir = o.pictures_dir;
-  if (!o.pictures_dir.empty()) fs::create_directories(o.pictures_dir);
   std::ifstream tree_file(o.tree_path);
   settings.tree_yaml.assign(std::istreambuf_iterator<char>(tree_file), {});
+  // The pictures are the tree's: it draws them from the `picture_prefix` entry the bench sets.
+  if (!o.pictures_dir.empty() && settings.tree_yaml.find("{picture_prefix}") == std::string::npos)
+    throw Error("--pictures: the tree '" + o.tree_path +
+                "' draws no pictures (it reads no {picture_prefix} entry; trees/clear_box.yaml "
+                "does)");
+  if (!o.pictures_dir.empty()) fs::create_directories(o.pictures_dir);
   const int cores = int(std::max(1u, std::thread::hardware_concurrency()));
   settings.threads = std::max(1, cores / o.jobs);
   settings.entries = shared_entries(o, settings.threads);

@@ -268,6 +268,10 @@ TEST_F(ClutterBenchTest, BadOptionsAreOneLineErrors) {
   expect_error("--set cell.object_count=0", "'object_count' must be in [1, 100]");
   expect_error("--gripper robots/grippers/none.yaml",
                "gripper file 'robots/grippers/none.yaml': no such file");
+  // A tree that draws nothing is an error, not a folder left empty.
+  expect_error("--protocol vgn-pile --pictures " + file("vgn-pictures"),
+               "--pictures: the tree 'trees/vgn_round.yaml' draws no pictures");
+  EXPECT_FALSE(std::filesystem::exists(file("vgn-pictures")));
 }
 
 }  // namespace
