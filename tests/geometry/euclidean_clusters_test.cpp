@@ -11,6 +11,7 @@
 
 #include <gtest/gtest.h>
 
+#include "antipode/core/error.hpp"
 #include "antipode/geometry/point_index.hpp"
 
 namespace antipode::geometry {
@@ -106,6 +107,15 @@ TEST(EuclideanClusters, ChainsJoinAndGapsSplit) {
   EXPECT_EQ(euclidean_clusters(points, all, 0.04f).size(), 1u);
   EXPECT_EQ(euclidean_clusters(points, all, 0.005f).size(), 20u);
   EXPECT_TRUE(euclidean_clusters(points, {}, 0.01f).empty());
+}
+
+TEST(EuclideanClusters, ToleranceOutsideItsRangeIsAnError) {
+  const std::vector<Eigen::Vector3f> points = {{0, 0, 0}};
+  for (const float tolerance_m :
+       {0.0f, -0.01f, 1e-20f, 1e20f, std::numeric_limits<float>::quiet_NaN()}) {
+    SCOPED_TRACE(tolerance_m);
+    EXPECT_THROW(euclidean_clusters(points, {0}, tolerance_m), Error);
+  }
 }
 
 TEST(EuclideanClusters, PointsThatAreNotFiniteStandAlone) {

@@ -9,10 +9,12 @@
 // as soon as one pair of their members is closer than the tolerance, and pairs of cells
 // already joined are not looked at again.
 //
-// Distances are measured as nanoflann measures them (point_index.hpp: the squared
-// differences summed in single precision in x, y, z order, less than the squared tolerance),
-// so the components are the ones region growing with ball queries of radius `tolerance_m`
-// (PCL's EuclideanClusterExtraction) finds. Region growing over a nanoflann tree spent most
+// Distances are measured as nanoflann's leaf test measures them (the squared differences
+// summed in single precision in x, y, z order, less than the squared tolerance), so the
+// components are the ones region growing with ball queries of radius `tolerance_m` (PCL's
+// EuclideanClusterExtraction) finds - up to a distance within a rounding step of the
+// tolerance, where the tree's pruning, summed in another order, may skip a point its leaf
+// test would take. Region growing over a nanoflann tree spent most
 // of the scene stage's time on the support plane of table_mug.pcd (7,054 members, 2 cm
 // tolerance: some 70 neighbours per ball query); with the grid, and RANSAC's scoring made
 // lean, the scene stage went from 24.3 to 11.4 ms (sampling_bench BM_SceneLayout, side by
@@ -24,7 +26,10 @@
 #include <cmath>
 #include <numeric>
 #include <optional>
+#include <string>
 #include <unordered_map>
+
+#include "antipode/core/error.hpp"
 
 namespace antipode::geometry {
 namespace {
@@ -94,6 +99,9 @@ bool any_pair_closer(const std::vector<Eigen::Vector3f>& points, const std::vect
 std::vector<std::vector<std::int32_t>> euclidean_clusters(
     const std::vector<Eigen::Vector3f>& points, const std::vector<std::int32_t>& members,
     float tolerance_m) {
+  if (!(tolerance_m >= 1e-15f && tolerance_m <= 1e15f))
+    throw Error("euclidean_clusters: tolerance_m must be in [1e-15, 1e15] m, got " +
+                std::to_string(tolerance_m));
   std::vector<std::int32_t> sorted = members;
   std::sort(sorted.begin(), sorted.end());
   const float limit = tolerance_m * tolerance_m;  // as PointIndex::radius_search squares it

@@ -8,8 +8,9 @@
 // a build for a wider set would give other bits, hence other scores, on other CPUs. SLEEF's
 // deterministic exp (the `cinz` functions: 1-ulp, no fused multiply-add) computes the same
 // bits with SSE2, AVX or AVX-512, so the kernel is picked by the CPU the program runs on
-// and the decision values stay the same everywhere. On an AVX-512 CPU this took the SVM stage
-// of table_mug.pcd's detection from 82 to 62 ms (classification_bench
+// and the exponentials add nothing to what differs between CPUs (docs/classification.md:
+// the matrix products' last bits; the grasps stay the same). On an AVX-512 CPU this took the SVM
+// stage of table_mug.pcd's detection from 82 to 62 ms (classification_bench
 // BM_FileToClassifiedGrasps, old and new builds side by side; docs/classification.md, speed
 // and size). x86-64 only (its intrinsics and CPU checks).
 
@@ -20,7 +21,7 @@ namespace antipode::detail {
 /// The instruction sets exp_in_place can use, narrowest first.
 enum class ExpKernel { kScalar, kSse2, kAvx, kAvx512 };
 
-/// The widest kernel this CPU runs (x86-64; kScalar elsewhere).
+/// The widest kernel this CPU runs: kSse2 at least.
 ExpKernel widest_exp_kernel();
 
 /// Whether this CPU runs `kernel`.

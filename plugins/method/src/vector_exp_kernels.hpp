@@ -1,7 +1,7 @@
 #pragma once
 // The per-instruction-set loops of vector_exp.cpp. Each lives in a file of its own, compiled
 // for its instruction set (plugins/method/CMakeLists.txt) and called only on CPUs that have
-// it; those files include nothing but the intrinsics and SLEEF headers, so that no inline
+// it; those files include nothing but <cstddef>, the intrinsics and SLEEF, so that no inline
 // function compiled for a wider set can stand in for the portable one elsewhere.
 
 #include <cstddef>
