@@ -14,11 +14,10 @@
 // components are the ones region growing with ball queries of radius `tolerance_m` (PCL's
 // EuclideanClusterExtraction) finds - up to a distance within a rounding step of the
 // tolerance, where the tree's pruning, summed in another order, may skip a point its leaf
-// test would take. Region growing over a nanoflann tree spent most
-// of the scene stage's time on the support plane of table_mug.pcd (7,054 members, 2 cm
-// tolerance: some 70 neighbours per ball query); with the grid, and RANSAC's scoring made
-// lean, the scene stage went from 24.3 to 11.4 ms (sampling_bench BM_SceneLayout, side by
-// side).
+// test would take. Region growing over a nanoflann tree, a ball query per table point at a
+// 2 cm tolerance, spent most of the scene stage's time on table_mug.pcd (perf: the tree's
+// searches half of it); with the grid, and RANSAC's scoring made lean, the scene stage went
+// from 24.3 to 11.4 ms (sampling_bench BM_SceneLayout, side by side).
 #include "euclidean_clusters.hpp"
 
 #include <algorithm>

@@ -52,14 +52,14 @@ double held_width_m(const Hand& hand, const Cloud& cloud, double trim, double ma
   // Steepest descent over the grid of turns, one step about either axis at a time. The turn
   // just left is never measured again: it is the one step back, and it was wider.
   int a = 0, b = 0;
-  int back_a = 0, back_b = 0;  // the step that leads back to the turn before (none at first)
+  int back_a = 0, back_b = 0;  // the step back to the turn before ({0, 0}, no step, at first)
   double width = width_at(0, 0);
   for (;;) {
     int best_a = a, best_b = b;
     double best = width - kMinShrinkM;
     for (const auto& [da, db] : {std::pair{1, 0}, {-1, 0}, {0, 1}, {0, -1}}) {
       if (std::abs(a + da) > max_steps || std::abs(b + db) > max_steps) continue;
-      if (da == back_a && db == back_b && (back_a != 0 || back_b != 0)) continue;
+      if (da == back_a && db == back_b) continue;
       const double w = width_at(a + da, b + db);
       if (w < best) best = w, best_a = a + da, best_b = b + db;
     }
