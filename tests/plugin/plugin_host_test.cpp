@@ -1,5 +1,6 @@
 #include "antipode/plugin/plugin_host.hpp"
 
+#include <dlfcn.h>
 #include <gtest/gtest.h>
 #include <unistd.h>
 
@@ -91,6 +92,24 @@ TEST(PluginHostTest, ComponentKeepsItsLibraryLoadedAfterTheHostIsGone) {
   }
   // Calls into the plugin's code: would crash if the library had been unloaded.
   EXPECT_EQ(std::static_pointer_cast<Cell>(component)->capture({}).size(), 2u);
+}
+
+bool mapped(const std::string& path) {
+  void* handle = dlopen(path.c_str(), RTLD_NOW | RTLD_NOLOAD);
+  if (handle != nullptr) dlclose(handle);
+  return handle != nullptr;
+}
+
+TEST(PluginHostTest, AnAcceptedLibraryStaysMappedAfterItsLastOwnerAndARefusedOneDoesNot) {
+  {
+    PluginHost host(std::vector<std::string>{});
+    ASSERT_EQ(host.load_library(kGood).state, PluginRecord::State::kLoaded);
+    ASSERT_EQ(host.load_library(bad("wrong_abi")).state, PluginRecord::State::kRefused);
+    host.create("line_cell", params("points: 2"));
+  }
+  // Worker threads and thread-local destructors may still run its code after this point.
+  EXPECT_TRUE(mapped(kGood));
+  EXPECT_FALSE(mapped(bad("wrong_abi")));
 }
 
 TEST(PluginHostTest, MissingFileIsRefusedWithDlerrorText) {

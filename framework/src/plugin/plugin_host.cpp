@@ -23,7 +23,11 @@
 namespace antipode {
 namespace fs = std::filesystem;
 
-/// An open library; dlclose()d when the last owner (host or component) lets go.
+/// An open library; dlclose()d when the last owner (host or component) lets go. An accepted
+/// library is marked RTLD_NODELETE (keep_mapped), so that dlclose() leaves its code mapped
+/// until the process exits: threads outlive components - a TBB worker may still be returning
+/// through a task the plugin instantiated, and a thread's exit runs TLS destructors of the
+/// libraries the plugin pulled in (OpenCV's) - and must not jump into unmapped code.
 struct PluginHost::Library {
   void* handle = nullptr;
   std::string path;
@@ -63,6 +67,11 @@ std::string installed_plugin_dir() {
   }
   const fs::path library_dir = fs::path(info.dli_fname).parent_path();
   return (library_dir / ANTIPODE_PLUGIN_DIR_BESIDE_LIBRARY).lexically_normal().string();
+}
+
+// Promotes an open library to RTLD_NODELETE (see PluginHost::Library).
+void keep_mapped(const std::string& path) {
+  if (void* handle = dlopen(path.c_str(), RTLD_NOW | RTLD_NOLOAD | RTLD_NODELETE)) dlclose(handle);
 }
 
 }  // namespace
@@ -242,6 +251,7 @@ const PluginRecord& PluginHost::load_library(const std::string& path) {
     records_.push_back(std::move(record));
     return records_.back();
   }
+  keep_mapped(path);
   library->descriptor = descriptor;
   record.state = PluginRecord::State::kLoaded;
   record.name = descriptor->name;
