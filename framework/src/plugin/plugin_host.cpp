@@ -54,9 +54,10 @@ std::vector<std::string> split_path_list(const char* text) {
   return parts;
 }
 
-// The descriptor fields the host reads end with `factories`.
+// The descriptor fields the host reads end with `factories`, a pointer: its size is a pointer's.
 constexpr std::size_t kDescriptorBytesRead =
-    offsetof(PluginDescriptor, factories) + sizeof(const PluginFactory*);
+    offsetof(PluginDescriptor, factories) +
+    sizeof(PluginDescriptor::factories);  // NOLINT(bugprone-sizeof-expression): the field's size
 
 // <directory of libantipode.so>/antipode/plugins: found at run time, so an installed tree
 // works from whatever prefix it was installed to.
