@@ -13,6 +13,7 @@
 #include "antipode/geometry/support_plane.hpp"
 #include "antipode/io/load_cloud.hpp"
 #include "bench_data.hpp"
+#include "cloud_select.hpp"
 
 namespace antipode {
 namespace {
@@ -121,9 +122,7 @@ BENCHMARK(BM_SupportPlane)->Unit(benchmark::kMillisecond)->UseRealTime();
 void BM_SceneLayout(benchmark::State& state) {
   if (!have_scene(state)) return;
   const Cloud cloud = preprocess(load_cloud(kScene), PreprocessOptions{});
-  Eigen::Vector3f sensor = Eigen::Vector3f::Zero();  // the views' mean origin
-  for (const Eigen::Vector3f& origin : cloud.view_origins_m)
-    sensor += origin / static_cast<float>(cloud.view_origins_m.size());
+  const Eigen::Vector3f sensor = geometry::sensor_position(cloud);  // as sample_hands finds it
   std::size_t objects = 0;
   for (auto _ : state) {
     const SceneLayout layout = find_scene_layout(cloud, sensor, SceneOptions{}, RandomStream(1));

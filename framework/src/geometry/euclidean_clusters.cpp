@@ -23,6 +23,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 #include <numeric>
 #include <optional>
 #include <string>
@@ -125,10 +126,10 @@ std::vector<std::vector<std::int32_t>> euclidean_clusters(
   Components components(cells.size());
   for (std::size_t c = 0; c < cells.size(); ++c) {
     if (!cells[c]) continue;
+    const Cell& here = *cells[c];
     for (int dx = -2; dx <= 2; ++dx)
       for (int dy = -2; dy <= 2; ++dy)
         for (int dz = -2; dz <= 2; ++dz) {
-          const Cell& here = *cells[c];
           const auto other = cell_of.find({here[0] + dx, here[1] + dy, here[2] + dz});
           if (other == cell_of.end() || other->second <= c) continue;
           if (components.root(c) == components.root(other->second)) continue;
@@ -139,12 +140,12 @@ std::vector<std::vector<std::int32_t>> euclidean_clusters(
 
   // Clusters in the order of their smallest member, each in increasing order.
   std::vector<std::vector<std::int32_t>> clusters;
-  std::unordered_map<std::size_t, std::size_t> cluster_of_root;
+  constexpr std::size_t kNone = std::numeric_limits<std::size_t>::max();
+  std::vector<std::size_t> cluster_of_root(cells.size(), kNone);  // roots are cell indices
   for (std::size_t k = 0; k < sorted.size(); ++k) {
-    const std::size_t root = components.root(cell_of_member[k]);
-    const auto [it, added] = cluster_of_root.emplace(root, clusters.size());
-    if (added) clusters.emplace_back();
-    clusters[it->second].push_back(sorted[k]);
+    std::size_t& cluster = cluster_of_root[components.root(cell_of_member[k])];
+    if (cluster == kNone) cluster = clusters.size(), clusters.emplace_back();
+    clusters[cluster].push_back(sorted[k]);
   }
   return clusters;
 }
