@@ -175,6 +175,8 @@ ReportSection clutter_section(const Json& report, const std::string& name, const
                   object_set_name(report["objects"]);
   if (report.contains("gripper"))
     section.title += ", " + report["gripper"]["name"].get<std::string>();
+  if (const std::string classifier = classifier_words(report); !classifier.empty())
+    section.title += ", " + classifier;
   if (report["tree"] != protocol.tree || report["noise"] != "tree")
     section.title += ", " + setting_words(report, "", "", protocol.tree, "");
   section.markdown = settings_text(report) + command_text(report, name) + headline(report) + "\n" +

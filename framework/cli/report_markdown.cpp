@@ -56,6 +56,19 @@ std::string setting_words(const nlohmann::ordered_json& report, const std::strin
   return words;
 }
 
+std::string classifier_words(const nlohmann::ordered_json& report) {
+  const std::string key = "classifier.plugin=";
+  std::string plugin;
+  for (const auto& entry : report.value("overrides", nlohmann::ordered_json::array())) {
+    const std::string text = entry.get<std::string>();
+    if (text.rfind(key, 0) == 0) plugin = text.substr(key.size());
+  }
+  if (plugin.empty()) return "";
+  if (plugin == "passthrough_classifier") return "no classifier (NC)";
+  if (plugin == "antipodal_classifier") return "the antipodal classifier (A)";
+  return "classifier `" + plugin + "`";
+}
+
 std::string object_set_name(const std::string& objects) {
   if (objects == "procedural") return "procedural shapes";
   std::string name = std::filesystem::path(objects).filename().string();

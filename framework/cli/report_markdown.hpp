@@ -42,6 +42,12 @@ std::string setting_words(const nlohmann::ordered_json& report, const std::strin
                           const std::string& name_a, const std::string& tree_b,
                           const std::string& name_b);
 
+/// The classifier a report's `--set classifier.plugin=P` puts in its tree's place, in the
+/// paper's variant words: "no classifier (NC)" for `passthrough_classifier`, "the antipodal
+/// classifier (A)" for `antipodal_classifier`, "classifier `P`" for any other; empty when
+/// the report keeps the tree's classifier.
+std::string classifier_words(const nlohmann::ordered_json& report);
+
 /// "procedural shapes" or the mesh folder's name ("ycb objects").
 std::string object_set_name(const std::string& objects);
 

@@ -149,6 +149,26 @@ TEST_F(ClutterBenchTest, ReportWritesMarkdownAndAChart) {
       "cannot read the notes");
 }
 
+// A run whose classifier is swapped by `--set` is reported apart, named as the paper names
+// its variants, with the option in its command.
+TEST_F(ClutterBenchTest, ReportNamesTheClassifierARunSwappedIn) {
+  const std::string nc = "--set classifier.plugin=passthrough_classifier";
+  report("--runs 1 --objects-per-run 2 --seed 3 " + nc, "clutter-nc.json");
+  report("--runs 1 --objects-per-run 2 --seed 3", "clutter-svm.json");
+  const CommandResult made = antipode("report " + file("clutter-svm.json") + " " +
+                                      file("clutter-nc.json") + " --out " + file("nc.md"));
+  ASSERT_EQ(made.exit_code, 0) << made.out;
+  std::ifstream in(file("nc.md"));
+  const std::string markdown((std::istreambuf_iterator<char>(in)), {});
+  EXPECT_NE(markdown.find("## Dense clutter: procedural shapes\n"), std::string::npos) << markdown;
+  EXPECT_NE(markdown.find("## Dense clutter: procedural shapes, no classifier (NC)\n"),
+            std::string::npos)
+      << markdown;
+  EXPECT_NE(markdown.find("--seed 3 " + nc + " --jobs 2 --report clutter-nc.json"),
+            std::string::npos)
+      << markdown;
+}
+
 TEST_F(ClutterBenchTest, MergeRefusesShardsThatAreNotOneWholeBench) {
   const std::string args = "--runs 2 --objects-per-run 1";
   report(args + " --seed 7 --shard 1/2", "1.json");
