@@ -10,6 +10,7 @@
 #include "clutter_bench.hpp"
 #include "clutter_protocols.hpp"
 #include "report_sections.hpp"
+#include "run_bootstrap.hpp"
 
 namespace antipode::cli {
 namespace {
@@ -59,6 +60,29 @@ std::string headline(const Json& r) {
   return markdown_table({"", protocol.success_name + " (successes / attempts)",
                          protocol.removed_name + " (removed / placed)"},
                         rows);
+}
+
+// The headline's rates again, with intervals that resample whole runs (run_bootstrap.hpp):
+// attempts within a run are not independent trials. Nothing for fewer than two runs.
+std::string between_runs(const Json& r) {
+  std::vector<RunCount> attempts, objects;
+  for (const Json& run : r.value("run_records", Json::array())) {
+    attempts.push_back({run["successes"].get<int>(), run["attempts"].get<int>()});
+    objects.push_back({run["removed"].get<int>(), run["objects"].get<int>()});
+    if (objects.back().trials < 0) return "";  // a cell without ground truth
+  }
+  if (attempts.size() < 2) return "";
+  const ClutterProtocol& protocol = protocol_of(r);
+  const auto interval = [](std::pair<double, double> bounds) {
+    char text[32];
+    std::snprintf(text, sizeof text, "[%.1f, %.1f]", 100 * bounds.first, 100 * bounds.second);
+    return std::string(text);
+  };
+  return "Between runs (the " + std::to_string(attempts.size()) +
+         " runs resampled whole, 2,000 bootstrap draws; attempts within a run are not "
+         "independent trials), the 95% intervals are " +
+         interval(run_bootstrap_interval(attempts)) + " for " + protocol.success_name + " and " +
+         interval(run_bootstrap_interval(objects)) + " for " + protocol.removed_name + ".\n\n";
 }
 
 // What the objects left say about the removal rate (runs whose cell has ground truth).
@@ -180,7 +204,8 @@ ReportSection clutter_section(const Json& report, const std::string& name, const
   if (report["tree"] != protocol.tree || report["noise"] != "tree")
     section.title += ", " + setting_words(report, "", "", protocol.tree, "");
   section.markdown = settings_text(report) + command_text(report, name) + headline(report) + "\n" +
-                     what_was_left(s) + failures(s) + per_run(report, plots, name);
+                     between_runs(report) + what_was_left(s) + failures(s) +
+                     per_run(report, plots, name);
   return section;
 }
 

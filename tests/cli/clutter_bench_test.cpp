@@ -169,6 +169,42 @@ TEST_F(ClutterBenchTest, ReportNamesTheClassifierARunSwappedIn) {
       << markdown;
 }
 
+// The report's between-runs intervals resample whole runs: two runs, one that succeeded in
+// every attempt and one in none, give draws of both (rate 1), neither (0) and one of each
+// (0.5), so the interval spans [0, 100]; two equal runs give their common rate.
+TEST_F(ClutterBenchTest, ReportResamplesWholeRunsForItsBetweenRunsIntervals) {
+  auto r = report("--runs 2 --objects-per-run 2 --seed 3", "runs.json");
+  ASSERT_EQ(r["run_records"].size(), 2u) << r.dump();
+  const auto between_runs = [&](int first_successes, int second_successes) {
+    r["run_records"][0]["attempts"] = 10;
+    r["run_records"][0]["successes"] = first_successes;
+    r["run_records"][1]["attempts"] = 10;
+    r["run_records"][1]["successes"] = second_successes;
+    std::ofstream(file("crafted.json")) << r.dump();
+    const CommandResult made =
+        antipode("report " + file("crafted.json") + " --out " + file("crafted.md"));
+    EXPECT_EQ(made.exit_code, 0) << made.out;
+    std::ifstream in(file("crafted.md"));
+    const std::string markdown((std::istreambuf_iterator<char>(in)), {});
+    const std::size_t at = markdown.find("Between runs (the 2 runs resampled whole");
+    EXPECT_NE(at, std::string::npos) << markdown;
+    const std::size_t end = markdown.find(" for grasp success", at);
+    return at == std::string::npos || end == std::string::npos
+               ? std::string()
+               : markdown.substr(markdown.rfind('[', end), end - markdown.rfind('[', end));
+  };
+  EXPECT_EQ(between_runs(10, 0), "[0.0, 100.0]");
+  EXPECT_EQ(between_runs(5, 5), "[50.0, 50.0]");
+  EXPECT_EQ(between_runs(7, 9), "[70.0, 90.0]");
+
+  // One run: no between-runs line.
+  report("--runs 1 --objects-per-run 2 --seed 3", "one_run.json");
+  ASSERT_EQ(antipode("report " + file("one_run.json") + " --out " + file("one.md")).exit_code, 0);
+  std::ifstream in(file("one.md"));
+  const std::string markdown((std::istreambuf_iterator<char>(in)), {});
+  EXPECT_EQ(markdown.find("Between runs"), std::string::npos) << markdown;
+}
+
 TEST_F(ClutterBenchTest, MergeRefusesShardsThatAreNotOneWholeBench) {
   const std::string args = "--runs 2 --objects-per-run 1";
   report(args + " --seed 7 --shard 1/2", "1.json");
