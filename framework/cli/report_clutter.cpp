@@ -67,6 +67,7 @@ std::string headline(const Json& r) {
 std::string between_runs(const Json& r) {
   std::vector<RunCount> attempts, objects;
   for (const Json& run : r.value("run_records", Json::array())) {
+    if (run.contains("error")) continue;  // counted apart, as in the summary
     attempts.push_back({run["successes"].get<int>(), run["attempts"].get<int>()});
     objects.push_back({run["removed"].get<int>(), run["objects"].get<int>()});
     if (objects.back().trials < 0) return "";  // a cell without ground truth

@@ -196,6 +196,9 @@ TEST_F(ClutterBenchTest, ReportResamplesWholeRunsForItsBetweenRunsIntervals) {
   EXPECT_EQ(between_runs(10, 0), "[0.0, 100.0]");
   EXPECT_EQ(between_runs(5, 5), "[50.0, 50.0]");
   EXPECT_EQ(between_runs(7, 9), "[70.0, 90.0]");
+  // A run that ended in an error is left out, as the summary leaves it out.
+  r["run_records"].push_back({{"seed", 5}, {"error", "the cell failed"}, {"wall_s", 1.0}});
+  EXPECT_EQ(between_runs(7, 9), "[70.0, 90.0]");
 
   // One run: no between-runs line.
   report("--runs 1 --objects-per-run 2 --seed 3", "one_run.json");
