@@ -18,12 +18,12 @@ namespace {
 using Json = nlohmann::ordered_json;
 
 std::string settings_text(const Json& r) {
-  const int runs = r["runs"], first = r["seed"];
-  return std::to_string(runs) + " runs of " + r["objects_per_run"].dump() + " objects (" +
-         object_set_name(r["objects"]) + "), seeds " + std::to_string(first) + "-" +
-         std::to_string(first + runs - 1) + ", tree `" + r["tree"].get<std::string>() + "`, " +
-         noise_phrase(r) + "; " + machine_phrase(r) + ", " + r["jobs"].dump() + " process(es), " +
-         wall_time(r["wall_s"]) + " of wall time.\n\n";
+  const int runs = r.at("runs"), first = r.at("seed");
+  return std::to_string(runs) + " runs of " + r.at("objects_per_run").dump() + " objects (" +
+         object_set_name(r.at("objects")) + "), seeds " + std::to_string(first) + "-" +
+         std::to_string(first + runs - 1) + ", tree `" + r.at("tree").get<std::string>() + "`, " +
+         noise_phrase(r) + "; " + machine_phrase(r) + ", " + r.at("jobs").dump() +
+         " process(es), " + wall_time(r.at("wall_s")) + " of wall time.\n\n";
 }
 
 const ClutterProtocol& protocol_of(const Json& r) {
@@ -34,27 +34,27 @@ std::string command_text(const Json& r, const std::string& name) {
   const ClutterProtocol& protocol = protocol_of(r);
   std::string c = "antipode bench clutter";
   if (protocol.name != "paper") c += " --protocol " + protocol.name;
-  c += " --objects " + shell_word(r["objects"]) + " --runs " + r["runs"].dump();
-  if (r["objects_per_run"] != protocol.objects_per_run)
-    c += " --objects-per-run " + r["objects_per_run"].dump();
-  c += " --seed " + r["seed"].dump();
-  if (r["tree"] != protocol.tree) c += " --tree " + shell_word(r["tree"]);
-  if (r["noise"] != "tree") c += " --noise " + shell_word(r["noise"]);
-  if (r.contains("gripper")) c += " --gripper " + shell_word(r["gripper"]["file"]);
+  c += " --objects " + shell_word(r.at("objects")) + " --runs " + r.at("runs").dump();
+  if (r.at("objects_per_run") != protocol.objects_per_run)
+    c += " --objects-per-run " + r.at("objects_per_run").dump();
+  c += " --seed " + r.at("seed").dump();
+  if (r.at("tree") != protocol.tree) c += " --tree " + shell_word(r.at("tree"));
+  if (r.at("noise") != "tree") c += " --noise " + shell_word(r.at("noise"));
+  if (r.contains("gripper")) c += " --gripper " + shell_word(r.at("gripper").at("file"));
   return "```sh\n" + c + set_options(r) + " --jobs 2 --report " + name + ".json\n```\n\n";
 }
 
 std::string headline(const Json& r) {
-  const Json& s = r["summary"];
+  const Json& s = r.at("summary");
   const ClutterProtocol& protocol = protocol_of(r);
   const auto pct = [](double v) {
     char text[16];
     std::snprintf(text, sizeof text, "%.1f%%", v);
     return v < 0 ? std::string("-") : std::string(text);
   };
-  std::vector<std::vector<std::string>> rows = {{"antipode (simulated cell)",
-                                                 rate_with_interval(s["successes"], s["attempts"]),
-                                                 rate_with_interval(s["removed"], s["objects"])}};
+  std::vector<std::vector<std::string>> rows = {
+      {"antipode (simulated cell)", rate_with_interval(s.at("successes"), s.at("attempts")),
+       rate_with_interval(s.at("removed"), s.at("objects"))}};
   for (const auto& p : protocol.published)
     rows.push_back({p.who, pct(p.success_pct), pct(p.removed_pct)});
   return markdown_table({"", protocol.success_name + " (successes / attempts)",
@@ -68,8 +68,8 @@ std::string between_runs(const Json& r) {
   std::vector<RunCount> attempts, objects;
   for (const Json& run : r.value("run_records", Json::array())) {
     if (run.contains("error")) continue;  // counted apart, as in the summary
-    attempts.push_back({run["successes"].get<int>(), run["attempts"].get<int>()});
-    objects.push_back({run["removed"].get<int>(), run["objects"].get<int>()});
+    attempts.push_back({run.at("successes").get<int>(), run.at("attempts").get<int>()});
+    objects.push_back({run.at("removed").get<int>(), run.at("objects").get<int>()});
     if (objects.back().trials < 0) return "";  // a cell without ground truth
   }
   if (attempts.size() < 2) return "";
@@ -89,7 +89,7 @@ std::string between_runs(const Json& r) {
 // What the objects left say about the removal rate (runs whose cell has ground truth).
 std::string what_was_left(const Json& s) {
   if (!s.contains("left_graspable")) return "";
-  const int removed = s["removed"], left = s["left"], left_graspable = s["left_graspable"];
+  const int removed = s.at("removed"), left = s.at("left"), left_graspable = s.at("left_graspable");
   const auto [min_m, max_m] = summary_graspable_width_m(s);
   char text[600];
   std::snprintf(text, sizeof text,
@@ -104,36 +104,36 @@ std::string what_was_left(const Json& s) {
 // "004_sugar_box 9.4 cm, 025_mug 8.1 cm": a run's objects left with their narrowest widths.
 std::string left_objects(const Json& run) {
   std::string text;
-  for (const Json& object : run["left_objects"]) {
+  for (const Json& object : run.at("left_objects")) {
     char width[32];
     std::snprintf(width, sizeof width, " %.1f cm",
-                  100 * object["narrowest_horizontal_m"].get<double>());
-    text += (text.empty() ? "" : ", ") + object["name"].get<std::string>() + width;
+                  100 * object.at("narrowest_horizontal_m").get<double>());
+    text += (text.empty() ? "" : ", ") + object.at("name").get<std::string>() + width;
   }
   return text.empty() ? "-" : text;
 }
 
 std::string failures(const Json& s) {
-  const int attempts = s["attempts"];
+  const int attempts = s.at("attempts");
   std::vector<std::vector<std::string>> rows;
-  for (const auto& [group, count] : s["paper_classes"].items()) {
+  for (const auto& [group, count] : s.at("paper_classes").items()) {
     char share[32];
     std::snprintf(share, sizeof share, "%.1f%%",
                   attempts ? 100.0 * count.get<int>() / attempts : 0);
     rows.push_back({group, count.dump(), share});
   }
   std::string classes;
-  for (const auto& [reason, count] : s["reasons"].items())
+  for (const auto& [reason, count] : s.at("reasons").items())
     classes += (classes.empty() ? "" : ", ") + reason + " " + count.dump();
   std::string stops;
-  for (const auto& [stop, count] : s["stops"].items())
+  for (const auto& [stop, count] : s.at("stops").items())
     stops += (stops.empty() ? "" : ", ") + stop + " " + count.dump();
   char seconds[160];
   std::snprintf(seconds, sizeof seconds,
                 "Median cycle (capture to outcome) %.2f s, median run %.1f s; %d of %d cycles "
                 "found no grasp; objects lost off the table: %d.\n\n",
-                s["cycle_s_median"].get<double>(), s["run_s_median"].get<double>(),
-                s["no_grasp"].get<int>(), s["cycles"].get<int>(), s["lost"].get<int>());
+                s.at("cycle_s_median").get<double>(), s.at("run_s_median").get<double>(),
+                s.at("no_grasp").get<int>(), s.at("cycles").get<int>(), s.at("lost").get<int>());
   return "Failures as the paper groups them (share of attempts):\n\n" +
          markdown_table({"group", "attempts", "share"}, rows) +
          "\nFailure classes: " + (classes.empty() ? "none" : classes) + ". Runs ended: " + stops +
@@ -145,38 +145,39 @@ constexpr std::size_t kRunsShownOneByOne = 20;
 
 std::string runs_in_short(const Json& r) {
   int cleared = 0, errors = 0;
-  for (const Json& run : r["run_records"]) {
+  for (const Json& run : r.at("run_records")) {
     if (run.contains("error")) {
       ++errors;
       continue;
     }
-    cleared += run["left"].get<int>() == 0 ? 1 : 0;
+    cleared += run.at("left").get<int>() == 0 ? 1 : 0;
   }
-  return std::to_string(r["run_records"].size()) + " runs: " + std::to_string(cleared) +
+  return std::to_string(r.at("run_records").size()) + " runs: " + std::to_string(cleared) +
          " ended with every object removed" +
          (errors ? ", " + std::to_string(errors) + " with an error" : std::string()) +
          " (each run's cycles are in the JSON report).\n";
 }
 
 std::string per_run(const Json& r, const PlotPlace& plots, const std::string& name) {
-  if (r["run_records"].size() > kRunsShownOneByOne) return runs_in_short(r);
+  if (r.at("run_records").size() > kRunsShownOneByOne) return runs_in_short(r);
   BarChart chart;
-  chart.title = "clear the box, per run: " + object_set_name(r["objects"]);
+  chart.title = "clear the box, per run: " + object_set_name(r.at("objects"));
   chart.value_label = "% of the run's objects / attempts";
   chart.series = {"objects removed", "grasp success"};
   chart.values.resize(2);
   std::vector<std::vector<std::string>> rows;
-  for (const Json& run : r["run_records"]) {
-    chart.groups.push_back("seed " + run["seed"].dump());
+  for (const Json& run : r.at("run_records")) {
+    chart.groups.push_back("seed " + run.at("seed").dump());
     if (run.contains("error")) {
       for (auto& v : chart.values) v.push_back(-1.0);
-      rows.push_back({run["seed"].dump(), "error: " + run["error"].get<std::string>(), ""});
+      rows.push_back({run.at("seed").dump(), "error: " + run.at("error").get<std::string>(), ""});
       continue;
     }
-    const int objects = run["objects"], attempts = run["attempts"], removed = run["removed"];
+    const int objects = run.at("objects"), attempts = run.at("attempts"),
+              removed = run.at("removed");
     chart.values[0].push_back(objects ? 100.0 * removed / objects : 0.0);
-    chart.values[1].push_back(attempts ? 100.0 * run["successes"].get<int>() / attempts : -1.0);
-    rows.push_back({run["seed"].dump(), run["summary"].get<std::string>(), run["stop"]});
+    chart.values[1].push_back(attempts ? 100.0 * run.at("successes").get<int>() / attempts : -1.0);
+    rows.push_back({run.at("seed").dump(), run.at("summary").get<std::string>(), run.at("stop")});
     if (run.contains("left_objects")) rows.back().push_back(left_objects(run));
   }
   const std::string file = name + "-runs.png";
@@ -191,18 +192,18 @@ std::string per_run(const Json& r, const PlotPlace& plots, const std::string& na
 }  // namespace
 
 ReportSection clutter_section(const Json& report, const std::string& name, const PlotPlace& plots) {
-  const Json& s = report["summary"];
+  const Json& s = report.at("summary");
   ReportSection section;
   const ClutterProtocol& protocol = protocol_of(report);
   section.title = (protocol.name == "paper"      ? std::string("Dense clutter: ")
                    : protocol.name == "vgn-pile" ? std::string("VGN pile: ")
                                                  : std::string("VGN packed: ")) +
-                  object_set_name(report["objects"]);
+                  object_set_name(report.at("objects"));
   if (report.contains("gripper"))
-    section.title += ", " + report["gripper"]["name"].get<std::string>();
+    section.title += ", " + report.at("gripper").at("name").get<std::string>();
   if (const std::string classifier = classifier_words(report); !classifier.empty())
     section.title += ", " + classifier;
-  if (report["tree"] != protocol.tree || report["noise"] != "tree")
+  if (report.at("tree") != protocol.tree || report.at("noise") != "tree")
     section.title += ", " + setting_words(report, "", "", protocol.tree, "");
   section.markdown = settings_text(report) + command_text(report, name) + headline(report) + "\n" +
                      between_runs(report) + what_was_left(s) + failures(s) +

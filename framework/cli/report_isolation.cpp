@@ -33,43 +33,43 @@ std::string paper_rate(const std::string& variant) {
 }
 
 std::vector<std::string> variants_of(const Json& r) {
-  return r["variants"].get<std::vector<std::string>>();
+  return r.at("variants").get<std::vector<std::string>>();
 }
 
 std::string settings_text(const Json& r) {
-  const int attempts = r["attempts_per_variant"], first = r["seed"];
+  const int attempts = r.at("attempts_per_variant"), first = r.at("seed");
   std::string held;
-  for (const auto& name : r["held_out"])
+  for (const auto& name : r.at("held_out"))
     held += (held.empty() ? "" : ", ") + name.get<std::string>();
-  return r["object_names"].size() > 0
-             ? std::to_string(r["object_names"].size()) + " " + object_set_name(r["objects"]) +
-                   " in " + r["poses"].dump() + " poses, " + std::to_string(attempts) +
-                   " attempts per variant, seeds " + std::to_string(first) + "-" +
-                   std::to_string(first + attempts - 1) + ", tree `" +
-                   r["tree"].get<std::string>() + "`, " + noise_phrase(r) +
+  return r.at("object_names").size() > 0
+             ? std::to_string(r.at("object_names").size()) + " " +
+                   object_set_name(r.at("objects")) + " in " + r.at("poses").dump() + " poses, " +
+                   std::to_string(attempts) + " attempts per variant, seeds " +
+                   std::to_string(first) + "-" + std::to_string(first + attempts - 1) + ", tree `" +
+                   r.at("tree").get<std::string>() + "`, " + noise_phrase(r) +
                    (held.empty() ? "" : ", held out: " + held) + "; " + machine_phrase(r) + ", " +
-                   r["jobs"].dump() + " process(es), " + wall_time(r["wall_s"]) +
+                   r.at("jobs").dump() + " process(es), " + wall_time(r.at("wall_s")) +
                    " of wall time.\n\n"
              : "";
 }
 
 std::string command_text(const Json& r, const std::string& name) {
-  std::string c = "antipode bench isolation --objects " + shell_word(r["objects"]) + " --poses " +
-                  r["poses"].dump() + " --attempts " + r["attempts_per_variant"].dump() +
-                  " --seed " + r["seed"].dump();
+  std::string c = "antipode bench isolation --objects " + shell_word(r.at("objects")) +
+                  " --poses " + r.at("poses").dump() + " --attempts " +
+                  r.at("attempts_per_variant").dump() + " --seed " + r.at("seed").dump();
   std::string variants, held;
-  for (const auto& v : r["variants"])
+  for (const auto& v : r.at("variants"))
     variants += (variants.empty() ? "" : ",") + v.get<std::string>();
-  for (const auto& o : r["held_out"]) held += (held.empty() ? "" : ",") + o.get<std::string>();
+  for (const auto& o : r.at("held_out")) held += (held.empty() ? "" : ",") + o.get<std::string>();
   c += " --variants " + variants;
   if (!held.empty()) c += " --held-out " + held;
-  if (r["tree"] != "trees/pick_isolated.yaml") c += " --tree " + shell_word(r["tree"]);
-  if (r["noise"] != "tree") c += " --noise " + shell_word(r["noise"]);
+  if (r.at("tree") != "trees/pick_isolated.yaml") c += " --tree " + shell_word(r.at("tree"));
+  if (r.at("noise") != "tree") c += " --noise " + shell_word(r.at("noise"));
   return "```sh\n" + c + set_options(r) + " --jobs 2 --report " + name + ".json\n```\n\n";
 }
 
 std::string headline(const Json& r) {
-  const Json& s = r["summary"];
+  const Json& s = r.at("summary");
   std::vector<std::string> header = {""};
   std::vector<std::vector<std::string>> rows = {{"graspable attempts"},
                                                 {"every attempt"},
@@ -80,17 +80,19 @@ std::string headline(const Json& r) {
                                                 {"the paper (real Baxter, 30 objects)"}};
   for (const auto& v : variants_of(r)) {
     header.push_back(variant_name(v));
-    const Json& g = s[v]["groups"];
-    rows[0].push_back(rate_with_interval(g["graspable"]["successes"], g["graspable"]["attempts"]));
-    rows[1].push_back(rate_with_interval(s[v]["successes"], s[v]["attempts"]));
-    rows[2].push_back(rate_with_interval(g["held_out"]["successes"], g["held_out"]["attempts"]));
-    rows[3].push_back(
-        rate_with_interval(g["not_graspable"]["successes"], g["not_graspable"]["attempts"]));
-    rows[4].push_back(
-        rate_with_interval(s[v]["found_grasp"]["successes"], s[v]["found_grasp"]["attempts"]));
-    const Json& f = s[v]["fidelity"];
-    rows[5].push_back(rate_with_interval(f["held"], f["executed"]) + ", " +
-                      f["as_detected"].dump() + " as detected");
+    const Json& g = s.at(v).at("groups");
+    rows[0].push_back(
+        rate_with_interval(g.at("graspable").at("successes"), g.at("graspable").at("attempts")));
+    rows[1].push_back(rate_with_interval(s.at(v).at("successes"), s.at(v).at("attempts")));
+    rows[2].push_back(
+        rate_with_interval(g.at("held_out").at("successes"), g.at("held_out").at("attempts")));
+    rows[3].push_back(rate_with_interval(g.at("not_graspable").at("successes"),
+                                         g.at("not_graspable").at("attempts")));
+    rows[4].push_back(rate_with_interval(s.at(v).at("found_grasp").at("successes"),
+                                         s.at(v).at("found_grasp").at("attempts")));
+    const Json& f = s.at(v).at("fidelity");
+    rows[5].push_back(rate_with_interval(f.at("held"), f.at("executed")) + ", " +
+                      f.at("as_detected").dump() + " as detected");
     rows[6].push_back(paper_rate(v));
   }
   // Rows no attempt falls in say nothing.
@@ -106,19 +108,19 @@ std::string per_object(const Json& r, const PlotPlace& plots, const std::string&
   std::vector<std::string> objects;
   std::map<std::string, std::map<std::string, std::pair<int, int>>> cells;
   std::map<std::string, std::pair<int, int>> graspable;  // graspable, all (first variant)
-  for (const Json& a : r["attempts"]) {
-    const std::string object = a["object"];
+  for (const Json& a : r.at("attempts")) {
+    const std::string object = a.at("object");
     if (!cells.count(object)) objects.push_back(object);
-    auto& cell = cells[object][a["variant"].get<std::string>()];
-    cell.first += a["outcome"] == "success" ? 1 : 0;
+    auto& cell = cells[object][a.at("variant").get<std::string>()];
+    cell.first += a.at("outcome") == "success" ? 1 : 0;
     ++cell.second;
-    if (a["variant"] == variants.front()) {
-      graspable[object].first += a["graspable"].get<bool>() ? 1 : 0;
+    if (a.at("variant") == variants.front()) {
+      graspable[object].first += a.at("graspable").get<bool>() ? 1 : 0;
       ++graspable[object].second;
     }
   }
   BarChart chart;
-  chart.title = "success per object: " + object_set_name(r["objects"]);
+  chart.title = "success per object: " + object_set_name(r.at("objects"));
   chart.value_label = "success % (all attempts)";
   chart.groups = objects;
   chart.values.resize(variants.size());
@@ -153,7 +155,7 @@ std::string per_variant_rows(const Json& r, const std::string& key, const std::s
   std::vector<std::string> names, header = {first};
   for (const auto& v : variants) {
     header.push_back(variant_name(v));
-    for (const auto& [name, value] : r["summary"][v][key].items())
+    for (const auto& [name, value] : r.at("summary").at(v).at(key).items())
       if (name != "success" && std::find(names.begin(), names.end(), name) == names.end())
         names.push_back(name);
   }
@@ -161,7 +163,7 @@ std::string per_variant_rows(const Json& r, const std::string& key, const std::s
   for (const auto& name : names) {
     rows.push_back({name});
     for (const auto& v : variants) {
-      const Json& values = r["summary"][v][key];
+      const Json& values = r.at("summary").at(v).at(key);
       char text[32];
       if (seconds)
         std::snprintf(text, sizeof text, "%.3f", values.value(name, 0.0));
@@ -178,7 +180,7 @@ std::string per_variant_rows(const Json& r, const std::string& key, const std::s
 ReportSection isolation_section(const Json& report, const std::string& name,
                                 const PlotPlace& plots) {
   ReportSection section;
-  section.title = "Isolation: " + object_set_name(report["objects"]) + ", " +
+  section.title = "Isolation: " + object_set_name(report.at("objects")) + ", " +
                   setting_words(report, "trees/pick_isolated_hand.yaml", "free-floating hand",
                                 "trees/pick_isolated.yaml", "Baxter's arm");
   section.markdown = settings_text(report) + command_text(report, name) + headline(report) +

@@ -34,8 +34,8 @@ std::string machine_phrase(const nlohmann::ordered_json& report) {
   const auto& m = report.value("machine", nlohmann::ordered_json::object());
   const int cores = m.value("cores", report.value("cores", 0));
   std::string out = std::to_string(cores) + " cores";
-  if (m.contains("cpu")) out += " (" + m["cpu"].get<std::string>() + ")";
-  if (m.contains("system")) out += ", " + m["system"].get<std::string>();
+  if (m.contains("cpu")) out += " (" + m.at("cpu").get<std::string>() + ")";
+  if (m.contains("system")) out += ", " + m.at("system").get<std::string>();
   return out;
 }
 

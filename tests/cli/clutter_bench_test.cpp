@@ -147,6 +147,12 @@ TEST_F(ClutterBenchTest, ReportWritesMarkdownAndAChart) {
   report_error(
       file("clutter-small.json") + " --out " + file("x.md") + " --notes " + file("none.md"),
       "cannot read the notes");
+  // A report with an entry missing (a hand-edited or truncated file) names the entry.
+  auto broken = r;
+  broken["run_records"][0].erase("attempts");
+  std::ofstream(file("broken.json")) << broken.dump();
+  report_error(file("broken.json") + " --out " + file("x.md"), "key 'attempts' not found");
+  EXPECT_FALSE(std::filesystem::exists(file("x.md")));
 }
 
 // A run whose classifier is swapped by `--set` is reported apart, named as the paper names
