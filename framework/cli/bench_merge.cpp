@@ -54,19 +54,23 @@ Json read_shard(const std::string& path) {
   return report;
 }
 
+// "PATH: entry "KEY" WHAT".
+Error entry_error(const std::string& path, const std::string& key, const std::string& what) {
+  return Error(path + ": entry \"" + key + "\" " + what);
+}
+
 // Throws unless `report` (from `path`) was run with the settings of `first` (from `first_path`).
 void check_same_bench(const Json& first, const std::string& first_path, const Json& report,
                       const std::string& path) {
   const std::string records = records_key(first["bench"]);
+  const std::string differs = "differs from " + first_path + "'s: the shards are not of one bench";
   for (const auto& [key, value] : first.items()) {
     if (per_shard(key, records)) continue;
-    if (!report.contains(key) || report[key] != value)
-      throw Error(path + ": entry \"" + key + "\" differs from " + first_path +
-                  "'s: the shards are not of one bench");
+    if (!report.contains(key) || report[key] != value) throw entry_error(path, key, differs);
   }
+  const std::string missing = "is not in " + first_path;
   for (const auto& [key, value] : report.items())
-    if (!per_shard(key, records) && !first.contains(key))
-      throw Error(path + ": entry \"" + key + "\" is not in " + first_path);
+    if (!per_shard(key, records) && !first.contains(key)) throw entry_error(path, key, missing);
   if (report["shard"]["count"] != first["shard"]["count"] ||
       report["shard"]["tasks"] != first["shard"]["tasks"])
     throw Error(path + ": its shard count or task count differs from " + first_path + "'s");
@@ -112,8 +116,20 @@ int bench_merge_command(const BenchMergeOptions& o) {
   for (const std::string& path : o.reports) shards.push_back(read_shard(path));
   for (std::size_t i = 1; i < shards.size(); ++i)
     check_same_bench(shards.front(), o.reports.front(), shards[i], o.reports[i]);
-  const Json records = joined_records(shards, o.reports);
   const std::string bench = shards.front()["bench"];
+  // The records and their summary; a record without an entry the summary reads (a hand-edited
+  // or truncated file) is bad input, named as such.
+  Json records, summary;
+  try {
+    records = joined_records(shards, o.reports);
+    summary =
+        bench == "clutter"
+            ? summarise_clutter(records)
+            : summarise(records, shards.front().at("variants").get<std::vector<std::string>>());
+  } catch (const Json::exception& e) {
+    throw Error("bench merge: a shard's record lacks an entry or has a malformed one (" +
+                std::string(e.what()) + ")");
+  }
 
   Json merged;
   double wall_s = 0.0;
@@ -125,14 +141,12 @@ int bench_merge_command(const BenchMergeOptions& o) {
   merged[records_key(bench)] = records;
   std::cout << bench << " bench: " << shards.size() << " shards, " << records.size()
             << " records\n\n";
-  if (bench == "clutter") {
-    merged["summary"] = summarise_clutter(records);
-    print_clutter_summary(std::cout, merged["summary"], merged.value("protocol", "paper"));
-  } else {
-    const auto variants = merged["variants"].get<std::vector<std::string>>();
-    merged["summary"] = summarise(records, variants);
-    print_report(std::cout, records, merged["summary"], variants);
-  }
+  merged["summary"] = summary;
+  if (bench == "clutter")
+    print_clutter_summary(std::cout, summary, merged.value("protocol", "paper"));
+  else
+    print_report(std::cout, records, summary,
+                 merged.at("variants").get<std::vector<std::string>>());
   std::cout << "wall time " << wall_s << " s (the shards' sum)\n";
   write_report(std::cout, o.report_path, merged);
   return kExitSuccess;

@@ -26,7 +26,7 @@ double median(std::vector<double> values) {
   return n % 2 ? values[n / 2] : (values[n / 2 - 1] + values[n / 2]) / 2;
 }
 
-bool succeeded(const Json& a) { return a["outcome"] == "success"; }
+bool succeeded(const Json& a) { return a.at("outcome") == "success"; }
 
 // Attempts, successes, rate, interval and per-object mean of the attempts `keep` accepts.
 Json tally(const std::vector<const Json*>& attempts, const Filter& keep) {
@@ -36,7 +36,7 @@ Json tally(const std::vector<const Json*>& attempts, const Filter& keep) {
     if (!keep(*a)) continue;
     ++n;
     k += succeeded(*a) ? 1 : 0;
-    auto& object = by_object[(*a)["object"].get<std::string>()];
+    auto& object = by_object[a->at("object").get<std::string>()];
     object.first += succeeded(*a) ? 1 : 0;
     ++object.second;
   }
@@ -53,10 +53,10 @@ Json tally(const std::vector<const Json*>& attempts, const Filter& keep) {
 Json fidelity(const std::vector<const Json*>& attempts) {
   int executed = 0, as_detected = 0, held = 0;
   for (const Json* a : attempts) {
-    if (!a->contains("record") || !(*a)["graspable"].get<bool>()) continue;
+    if (!a->contains("record") || !a->at("graspable").get<bool>()) continue;
     ++executed;
-    const Json& r = (*a)["record"];
-    if (r["reached_pose"].get<bool>() || !r["stopped_by"].empty()) ++as_detected;
+    const Json& r = a->at("record");
+    if (r.at("reached_pose").get<bool>() || !r.at("stopped_by").empty()) ++as_detected;
     held += succeeded(*a) ? 1 : 0;
   }
   const auto [lo, hi] = wilson_interval(held, executed);
@@ -71,9 +71,9 @@ Json fidelity(const std::vector<const Json*>& attempts) {
 Json stage_medians(const std::vector<const Json*>& attempts) {
   std::map<std::string, std::vector<double>> seconds;
   for (const Json* a : attempts) {
-    for (const auto& [stage, s] : (*a)["stage_s"].items())
+    for (const auto& [stage, s] : a->at("stage_s").items())
       seconds[stage].push_back(s.get<double>());
-    seconds["whole attempt"].push_back((*a)["wall_s"].get<double>());
+    seconds["whole attempt"].push_back(a->at("wall_s").get<double>());
   }
   Json out = Json::object();
   for (auto& [stage, values] : seconds) out[stage] = median(values);
@@ -85,8 +85,8 @@ Json variant_summary(const std::vector<const Json*>& attempts) {
   int no_grasp = 0;
   Json outcomes = Json::object(), reasons = Json::object();
   for (const Json* a : attempts) {
-    no_grasp += (*a)["outcome"] == "no grasp found" ? 1 : 0;
-    const std::string outcome = (*a)["outcome"], reason = (*a)["reason"];
+    no_grasp += a->at("outcome") == "no grasp found" ? 1 : 0;
+    const std::string outcome = a->at("outcome"), reason = a->at("reason");
     outcomes[outcome] = outcomes.value(outcome, 0) + 1;
     reasons[reason] = reasons.value(reason, 0) + 1;
   }
@@ -101,11 +101,11 @@ Json variant_summary(const std::vector<const Json*>& attempts) {
               {"no_motion_plan", count("outcome", "no motion plan")},
               {"arm_collision", count("reason", "arm collision")}};
   s["found_grasp"] =
-      tally(attempts, [](const Json& a) { return a["outcome"] != "no grasp found"; });
+      tally(attempts, [](const Json& a) { return a.at("outcome") != "no grasp found"; });
   s["outcomes"] = outcomes;
   s["reasons"] = reasons;
-  const auto graspable = [](const Json& a) { return a["graspable"].get<bool>(); };
-  const auto held_out = [](const Json& a) { return a["held_out"].get<bool>(); };
+  const auto graspable = [](const Json& a) { return a.at("graspable").get<bool>(); };
+  const auto held_out = [](const Json& a) { return a.at("held_out").get<bool>(); };
   s["groups"] = {
       {"graspable", tally(attempts, graspable)},
       {"not_graspable", tally(attempts, [&](const Json& a) { return !graspable(a); })},
@@ -158,7 +158,7 @@ Json summarise(const Json& attempts, const std::vector<std::string>& variants) {
   for (const auto& variant : variants) {
     std::vector<const Json*> mine;
     for (const Json& a : attempts)
-      if (a["variant"] == variant) mine.push_back(&a);
+      if (a.at("variant") == variant) mine.push_back(&a);
     summary[variant] = variant_summary(mine);
   }
   return summary;
@@ -171,17 +171,17 @@ void print_report(std::ostream& out, const Json& attempts, const Json& summary,
   std::map<std::string, std::pair<int, int>> poses;  // graspable, all (of the first variant)
   std::map<std::string, bool> held_out;
   for (const Json& a : attempts) {
-    const std::string object = a["object"];
+    const std::string object = a.at("object");
     if (std::find(objects.begin(), objects.end(), object) == objects.end())
       objects.push_back(object);
-    auto& cell = cells[object][a["variant"].get<std::string>()];
+    auto& cell = cells[object][a.at("variant").get<std::string>()];
     cell.first += succeeded(a) ? 1 : 0;
     ++cell.second;
-    if (a["variant"] == variants.front()) {
-      poses[object].first += a["graspable"].get<bool>() ? 1 : 0;
+    if (a.at("variant") == variants.front()) {
+      poses[object].first += a.at("graspable").get<bool>() ? 1 : 0;
       ++poses[object].second;
     }
-    held_out[object] = a["held_out"].get<bool>();
+    held_out[object] = a.at("held_out").get<bool>();
   }
   std::map<std::string, std::string> marks;
   for (const auto& [object, counts] : poses) {

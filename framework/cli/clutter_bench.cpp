@@ -306,25 +306,25 @@ Json summarise_clutter(const Json& runs) {
       ++errors;
       continue;
     }
-    attempts += run["attempts"].get<int>();
-    successes += run["successes"].get<int>();
-    objects += run["objects"].get<int>();
-    lost += std::max(0, run["lost"].get<int>());
+    attempts += run.at("attempts").get<int>();
+    successes += run.at("successes").get<int>();
+    objects += run.at("objects").get<int>();
+    lost += std::max(0, run.at("lost").get<int>());
     truth = truth && run.contains("left_graspable");
     if (truth) {
-      left += int(run["left_objects"].size());
-      left_graspable += run["left_graspable"].get<int>();
-      if (run.contains("graspable_width_m")) graspable_width = run["graspable_width_m"];
+      left += int(run.at("left_objects").size());
+      left_graspable += run.at("left_graspable").get<int>();
+      if (run.contains("graspable_width_m")) graspable_width = run.at("graspable_width_m");
     }
-    const std::string stop = run["stop"];
+    const std::string stop = run.at("stop");
     stops[stop] = stops.value(stop, 0) + 1;
-    run_s.push_back(run["wall_s"].get<double>());
-    for (const Json& cycle : run["cycles"]) {
+    run_s.push_back(run.at("wall_s").get<double>());
+    for (const Json& cycle : run.at("cycles")) {
       ++cycles;
-      cycle_s.push_back(cycle["seconds"].get<double>());
-      const std::string reason = cycle["reason"];
-      if (cycle["outcome"] == kNoGraspFound) ++no_grasp;
-      if (cycle["outcome"] == kNoGraspFound || reason == "success") continue;
+      cycle_s.push_back(cycle.at("seconds").get<double>());
+      const std::string reason = cycle.at("reason");
+      if (cycle.at("outcome") == kNoGraspFound) ++no_grasp;
+      if (cycle.at("outcome") == kNoGraspFound || reason == "success") continue;
       reasons[reason] = reasons.value(reason, 0) + 1;
       const std::string group = paper_class(reason);
       groups[group] = groups.value(group, 0) + 1;

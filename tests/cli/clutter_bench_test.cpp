@@ -230,6 +230,13 @@ TEST_F(ClutterBenchTest, MergeRefusesShardsThatAreNotOneWholeBench) {
   merge_error(file("1.json") + " " + file("1.json"), "shard 1 given twice");
   merge_error(file("whole.json"), "not a shard's report");
   merge_error(file("none.json"), "cannot read the report");
+  // A shard whose record lacks an entry (a hand-edited or truncated file) is bad input.
+  auto second = report(args + " --seed 7 --shard 2/2", "2.json");
+  second["run_records"][0].erase("attempts");
+  std::ofstream(file("2_broken.json")) << second.dump();
+  merge_error(file("1.json") + " " + file("2_broken.json") + " --report " + file("m.json"),
+              "a shard's record lacks an entry or has a malformed one");
+  EXPECT_FALSE(std::filesystem::exists(file("m.json")));
 }
 
 // VGN's protocol: rounds of five objects from one noisy view; a round ends when the scene is
