@@ -40,7 +40,8 @@ using Json = nlohmann::ordered_json;
 struct RunSettings {
   std::string tree_path;
   std::string tree_yaml;
-  std::string pictures_dir;  ///< failed attempts drawn here as seed-S-cycle-NN.png ("" = none)
+  std::string pictures_dir;    ///< failed attempts drawn here as seed-S-cycle-NN.png ("" = none)
+  std::string selections_dir;  ///< each cycle's selection as seed-S-cycle-NN.json ("" = none)
   int threads = 2;
   std::vector<std::pair<std::string, std::string>> entries;  ///< the same for every run
   /// Objects left whose narrowest horizontal extent lies in [min, max] count as holdable.
@@ -61,8 +62,10 @@ void check_options(const ClutterBenchOptions& o) {
     throw Error("--objects-per-run must be in 1..100");
   if (o.jobs < 1 || o.jobs > 64) throw Error("--jobs must be in 1..64");
   if (!fs::is_regular_file(o.tree_path)) throw Error("--tree: no tree file '" + o.tree_path + "'");
-  if (!o.pictures_dir.empty() && fs::exists(o.pictures_dir) && !fs::is_directory(o.pictures_dir))
-    throw Error("--pictures: '" + o.pictures_dir + "' is not a folder");
+  for (const auto& [option, dir] :
+       {std::pair{"--pictures", &o.pictures_dir}, std::pair{"--selections", &o.selections_dir}})
+    if (!dir->empty() && fs::exists(*dir) && !fs::is_directory(*dir))
+      throw Error(std::string(option) + ": '" + *dir + "' is not a folder");
   if (o.objects != "procedural" && !fs::is_directory(o.objects))
     throw Error("--objects: '" + o.objects + "' is neither 'procedural' nor a folder of meshes");
   parse_overrides(o.set);  // throws for an entry without '='
@@ -90,17 +93,30 @@ std::vector<std::pair<std::string, std::string>> shared_entries(const ClutterBen
   return entries;
 }
 
+// For a folder option `option` (DIR, "" = not given): throws unless the tree reads the entry
+// `key` the bench sets from it (the tree is what writes the files), then makes the folder.
+void require_tree_entry(const RunSettings& settings, const std::string& option,
+                        const std::string& dir, const std::string& key, const std::string& what) {
+  if (dir.empty()) return;
+  if (settings.tree_yaml.find("{" + key + "}") == std::string::npos)
+    throw Error(option + ": the tree '" + settings.tree_path + "' " + what + " (it reads no {" +
+                key + "} entry; trees/clear_box.yaml does)");
+  fs::create_directories(dir);
+}
+
 bt::Tree load_run_tree(const Session& session, const RunSettings& settings, std::uint64_t seed) {
   bt::LoadOptions load;
   load.registry = &session.registry;
   load.components = session.host.get();
   load.seed = seed;
   load.overrides = {{"cell.seed", std::to_string(seed)}};
-  if (!settings.pictures_dir.empty()) {
-    load.overrides.emplace_back(
-        "picture_prefix",
-        (fs::path(settings.pictures_dir) / ("seed-" + std::to_string(seed) + "-")).string());
-  }
+  const std::string run_prefix = "seed-" + std::to_string(seed) + "-";
+  if (!settings.pictures_dir.empty())
+    load.overrides.emplace_back("picture_prefix",
+                                (fs::path(settings.pictures_dir) / run_prefix).string());
+  if (!settings.selections_dir.empty())
+    load.overrides.emplace_back("selection_prefix",
+                                (fs::path(settings.selections_dir) / run_prefix).string());
   for (const auto& entry : settings.entries) load.overrides.push_back(entry);
   return bt::load_tree_string(settings.tree_yaml, settings.tree_path, load);
 }
@@ -365,14 +381,14 @@ int bench_clutter_command(const ClutterBenchOptions& options) {
   RunSettings settings;
   settings.tree_path = o.tree_path;
   settings.pictures_dir = o.pictures_dir;
+  settings.selections_dir = o.selections_dir;
   std::ifstream tree_file(o.tree_path);
   settings.tree_yaml.assign(std::istreambuf_iterator<char>(tree_file), {});
-  // The pictures are the tree's: it draws them from the `picture_prefix` entry the bench sets.
-  if (!o.pictures_dir.empty() && settings.tree_yaml.find("{picture_prefix}") == std::string::npos)
-    throw Error("--pictures: the tree '" + o.tree_path +
-                "' draws no pictures (it reads no {picture_prefix} entry; trees/clear_box.yaml "
-                "does)");
-  if (!o.pictures_dir.empty()) fs::create_directories(o.pictures_dir);
+  // The pictures and selections are the tree's: it writes them from the `picture_prefix` and
+  // `selection_prefix` entries the bench sets.
+  require_tree_entry(settings, "--pictures", o.pictures_dir, "picture_prefix", "draws no pictures");
+  require_tree_entry(settings, "--selections", o.selections_dir, "selection_prefix",
+                     "writes no selections");
   const int cores = int(std::max(1u, std::thread::hardware_concurrency()));
   settings.threads = std::max(1, cores / o.jobs);
   settings.entries = shared_entries(o, settings.threads);

@@ -27,6 +27,8 @@ struct ClutterBenchOptions {
   std::vector<std::string> set;  ///< --set overrides of the tree, applied last
   std::string shard;             ///< "i/n": run only that shard of the runs ("" = all)
   std::string pictures_dir;      ///< failed attempts drawn as seed-S-cycle-NN.png ("" = none)
+  /// Each cycle's selection written as seed-S-cycle-NN.json ("" = none).
+  std::string selections_dir;
   /// A gripper file (antipode/io/gripper_file.hpp) for the sampler's `hand`, whose apertures
   /// also set which objects left count as holdable ("" = the tree's gripper, Baxter's range).
   std::string gripper_path;

@@ -177,6 +177,9 @@ void add_bench_clutter(CLI::App& bench, antipode::cli::ClutterBenchOptions& o) {
   clutter->add_option("--set", o.set, "Override a tree entry or component parameter");
   clutter->add_option("--pictures", o.pictures_dir,
                       "Draw every failed attempt into this folder (seed-S-cycle-NN.png)");
+  clutter->add_option("--selections", o.selections_dir,
+                      "Write every cycle's selection into this folder (seed-S-cycle-NN.json): "
+                      "the grasps kept in rank order, then the hands dropped with their reasons");
   clutter->add_option("--shard", o.shard,
                       "i/n: run every n-th run from the i-th (then bench merge)");
   clutter->add_option("--gripper", o.gripper_path,

@@ -307,6 +307,45 @@ TEST_F(ClutterBenchTest, PicturesShowEveryFailedAttempt) {
   EXPECT_FALSE(expected.empty()) << "seed 2001 no longer fails an attempt: pick another seed";
 }
 
+// --selections writes, for every cycle that chose a grasp, what the selection kept - in rank
+// order, the executed grasp among them - and what it dropped, with the reasons; the run is the
+// same without.
+TEST_F(ClutterBenchTest, SelectionsAreWrittenForEveryAttempt) {
+  const std::string folder = file("selections");
+  const std::string args = "--runs 1 --objects-per-run 3 --seed 2001";
+  const auto r = report(args + " --selections " + folder, "selected.json");
+  const auto plain = report(args, "plain.json");
+  EXPECT_EQ(r["run_records"][0]["summary"], plain["run_records"][0]["summary"]);
+  const auto& cycles = r["run_records"][0]["cycles"];
+  std::set<std::string> expected;
+  for (std::size_t c = 0; c < cycles.size(); ++c) {
+    if (cycles[c]["outcome"] == "no grasp found") continue;  // no selection to write
+    char name[64];
+    std::snprintf(name, sizeof name, "seed-2001-cycle-%02zu.json", c + 1);
+    expected.insert(name);
+    std::ifstream in(folder + "/" + name);
+    ASSERT_TRUE(in) << name;
+    const auto selection = nlohmann::json::parse(in);
+    const auto& hands = selection.at("hands");
+    ASSERT_FALSE(hands.empty()) << name;
+    EXPECT_FALSE(hands.front().contains("rejection")) << name;  // the kept grasps first
+    // The executed grasp is one of them (the first the arm reached).
+    const bool executed_kept = std::any_of(hands.begin(), hands.end(), [&](const auto& hand) {
+      return !hand.contains("rejection") && cycles[c].contains("hand") &&
+             hand.at("position_m") == cycles[c]["hand"]["position_m"];
+    });
+    EXPECT_TRUE(executed_kept || !cycles[c].contains("hand")) << name;
+    const bool some_dropped = std::any_of(
+        hands.begin(), hands.end(), [](const auto& hand) { return hand.contains("rejection"); });
+    EXPECT_TRUE(some_dropped) << name;
+  }
+  std::set<std::string> written;
+  for (const auto& entry : std::filesystem::directory_iterator(folder))
+    written.insert(entry.path().filename().string());
+  EXPECT_EQ(written, expected);
+  EXPECT_FALSE(expected.empty());
+}
+
 // Soak, short form: one process runs twelve clear-the-box episodes back to back; every one
 // ends with a recorded outcome, and the process holds no more memory after the last ones than
 // after the first ones (the resident size after each episode's tree is gone, freed memory
@@ -344,6 +383,10 @@ TEST_F(ClutterBenchTest, BadOptionsAreOneLineErrors) {
   expect_error("--protocol vgn-pile --pictures " + file("vgn-pictures"),
                "--pictures: the tree 'trees/vgn_round.yaml' draws no pictures");
   EXPECT_FALSE(std::filesystem::exists(file("vgn-pictures")));
+  expect_error("--protocol vgn-pile --selections " + file("vgn-selections"),
+               "--selections: the tree 'trees/vgn_round.yaml' writes no selections");
+  EXPECT_FALSE(std::filesystem::exists(file("vgn-selections")));
+  expect_error("--selections CMakeLists.txt", "--selections: 'CMakeLists.txt' is not a folder");
 }
 
 }  // namespace

@@ -51,6 +51,12 @@ class ClearBox final : public bt::DecoratorNode {
              bt::output_port<std::string>("picture",
                                           "the file the cycle about to run may draw itself to "
                                           "(\"\" when picture_prefix is empty)"),
+             bt::input_port<std::string>("selection_prefix", std::string(),
+                                         "names the file of each cycle's selection: "
+                                         "PREFIXcycle-NN.json (\"\" = none)"),
+             bt::output_port<std::string>("selection",
+                                          "the file the cycle about to run may write its "
+                                          "selection to (\"\" when selection_prefix is empty)"),
              bt::output_port<ClearingRun>("run", "the record of the run, cycle by cycle")},
             1,
             1,
@@ -117,6 +123,9 @@ class ClearBox final : public bt::DecoratorNode {
     char number[16];
     std::snprintf(number, sizeof number, "%02zu", run_.cycles.size() + 1);
     set_output("picture", prefix.empty() ? std::string() : prefix + "cycle-" + number + ".png");
+    const std::string selection = get_input<std::string>("selection_prefix");
+    set_output("selection",
+               selection.empty() ? std::string() : selection + "cycle-" + number + ".json");
     cycle_started_ = true;
     cycle_start_ = std::chrono::steady_clock::now();
     objects_before_ = run_.objects_left();
