@@ -119,13 +119,15 @@ class ClearBox final : public bt::DecoratorNode {
   }
 
   void begin_cycle() {
-    const std::string prefix = get_input<std::string>("picture_prefix");
     char number[16];
     std::snprintf(number, sizeof number, "%02zu", run_.cycles.size() + 1);
-    set_output("picture", prefix.empty() ? std::string() : prefix + "cycle-" + number + ".png");
-    const std::string selection = get_input<std::string>("selection_prefix");
-    set_output("selection",
-               selection.empty() ? std::string() : selection + "cycle-" + number + ".json");
+    // PREFIXcycle-NN.EXT for the cycle about to run; "" without a prefix.
+    const auto cycle_file = [&](const std::string& prefix_port, const std::string& extension) {
+      const std::string prefix = get_input<std::string>(prefix_port);
+      return prefix.empty() ? std::string() : prefix + "cycle-" + number + extension;
+    };
+    set_output("picture", cycle_file("picture_prefix", ".png"));
+    set_output("selection", cycle_file("selection_prefix", ".json"));
     cycle_started_ = true;
     cycle_start_ = std::chrono::steady_clock::now();
     objects_before_ = run_.objects_left();
