@@ -28,6 +28,7 @@
 #include "clutter_protocols.hpp"
 #include "commands.hpp"
 #include "exit_codes.hpp"
+#include "run_bootstrap.hpp"
 #include "stage_timer.hpp"
 
 namespace fs = std::filesystem;
@@ -255,8 +256,12 @@ void print_clutter_summary(std::ostream& out, const Json& s, const std::string& 
     return t.str();
   };
   const auto interval = [&](const Json& r) {
-    return pct(r["rate"].get<double>()) + "% [" + pct(r["ci95"][0].get<double>()) + ", " +
-           pct(r["ci95"][1].get<double>()) + "]";
+    std::string text = pct(r["rate"].get<double>()) + "% [" + pct(r["ci95"][0].get<double>()) +
+                       ", " + pct(r["ci95"][1].get<double>()) + "]";
+    if (r.contains("ci95_runs"))
+      text += ", between runs [" + pct(r["ci95_runs"][0].get<double>()) + ", " +
+              pct(r["ci95_runs"][1].get<double>()) + "]";
+    return text;
   };
   const auto published = [&](bool success) {
     std::string text;
@@ -317,11 +322,14 @@ Json summarise_clutter(const Json& runs) {
   bool truth = true;  // every run says what was left
   Json reasons = Json::object(), groups = Json::object(), stops = Json::object();
   std::vector<double> cycle_s, run_s;
+  std::vector<RunCount> run_attempts, run_objects;  // for the intervals between runs
   for (const Json& run : runs) {
     if (run.contains("error")) {
       ++errors;
       continue;
     }
+    run_attempts.push_back({run.at("successes").get<int>(), run.at("attempts").get<int>()});
+    run_objects.push_back({run.at("removed").get<int>(), run.at("objects").get<int>()});
     attempts += run.at("attempts").get<int>();
     successes += run.at("successes").get<int>();
     objects += run.at("objects").get<int>();
@@ -362,6 +370,18 @@ Json summarise_clutter(const Json& runs) {
                   {"stops", stops},
                   {"cycle_s_median", percentile(cycle_s, 0.5)},
                   {"run_s_median", percentile(run_s, 0.5)}};
+  // Attempts within a run share its scene: the intervals that resample whole runs
+  // (run_bootstrap.hpp) are the better guide to noise. Runs of a cell that cannot count its
+  // objects (-1) give none for the objects removed.
+  if (run_attempts.size() >= 2) {
+    const auto as_json = [](std::pair<double, double> bounds) {
+      return Json{bounds.first, bounds.second};
+    };
+    summary["success_rate"]["ci95_runs"] = as_json(run_bootstrap_interval(run_attempts));
+    if (objects >= 0 && std::none_of(run_objects.begin(), run_objects.end(),
+                                     [](const RunCount& run) { return run.trials < 0; }))
+      summary["removed_rate"]["ci95_runs"] = as_json(run_bootstrap_interval(run_objects));
+  }
   // The objects the gripper could hold as they lay: those removed and those left that fit.
   if (truth && errors < int(runs.size())) {
     summary["left"] = left;

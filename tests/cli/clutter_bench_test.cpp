@@ -68,6 +68,18 @@ TEST_F(ClutterBenchTest, EveryRunRemovesObjects) {
   const int removed = s["removed"];
   EXPECT_DOUBLE_EQ(s["removed_of_graspable_rate"]["rate"].get<double>(),
                    double(removed) / (removed + left_graspable));
+  // Intervals that resample whole runs hold the pooled rate: each draw's rate lies between
+  // the runs' own rates, and so do both bounds.
+  double lowest = 1.0, highest = 0.0;
+  for (const auto& run : r["run_records"]) {
+    const double rate = run["removed"].get<double>() / run["objects"].get<double>();
+    lowest = std::min(lowest, rate), highest = std::max(highest, rate);
+  }
+  const auto& runs_ci = s["removed_rate"]["ci95_runs"];
+  ASSERT_EQ(runs_ci.size(), 2u) << s.dump(1);
+  EXPECT_DOUBLE_EQ(runs_ci[0].get<double>(), lowest);  // both draws of the lower run
+  EXPECT_DOUBLE_EQ(runs_ci[1].get<double>(), highest);
+  EXPECT_TRUE(s["success_rate"].contains("ci95_runs")) << s.dump(1);
 }
 
 TEST_F(ClutterBenchTest, TheSameResultsForAnyNumberOfProcesses) {
