@@ -315,6 +315,25 @@ std::pair<double, double> summary_graspable_width_m(const Json& summary) {
   return {range[0].get<double>(), range[1].get<double>()};
 }
 
+Json between_runs_intervals(const Json& runs) {
+  std::vector<RunCount> attempts, objects;
+  bool counted = true;  // every run counted its objects
+  for (const Json& run : runs) {
+    if (run.contains("error")) continue;  // counted apart, as in the summary
+    attempts.push_back({run.at("successes").get<int>(), run.at("attempts").get<int>()});
+    objects.push_back({run.at("removed").get<int>(), run.at("objects").get<int>()});
+    counted = counted && objects.back().trials >= 0;
+  }
+  Json out = {{"runs", attempts.size()}};
+  if (attempts.size() < 2) return out;
+  const auto as_json = [](std::pair<double, double> bounds) {
+    return Json{bounds.first, bounds.second};
+  };
+  out["success"] = as_json(run_bootstrap_interval(attempts));
+  if (counted) out["removed"] = as_json(run_bootstrap_interval(objects));
+  return out;
+}
+
 Json summarise_clutter(const Json& runs) {
   int attempts = 0, successes = 0, objects = 0, lost = 0, cycles = 0, no_grasp = 0, errors = 0;
   int left = 0, left_graspable = 0;
@@ -322,14 +341,11 @@ Json summarise_clutter(const Json& runs) {
   bool truth = true;  // every run says what was left
   Json reasons = Json::object(), groups = Json::object(), stops = Json::object();
   std::vector<double> cycle_s, run_s;
-  std::vector<RunCount> run_attempts, run_objects;  // for the intervals between runs
   for (const Json& run : runs) {
     if (run.contains("error")) {
       ++errors;
       continue;
     }
-    run_attempts.push_back({run.at("successes").get<int>(), run.at("attempts").get<int>()});
-    run_objects.push_back({run.at("removed").get<int>(), run.at("objects").get<int>()});
     attempts += run.at("attempts").get<int>();
     successes += run.at("successes").get<int>();
     objects += run.at("objects").get<int>();
@@ -370,18 +386,11 @@ Json summarise_clutter(const Json& runs) {
                   {"stops", stops},
                   {"cycle_s_median", percentile(cycle_s, 0.5)},
                   {"run_s_median", percentile(run_s, 0.5)}};
-  // Attempts within a run share its scene: the intervals that resample whole runs
-  // (run_bootstrap.hpp) are the better guide to noise. Runs of a cell that cannot count its
-  // objects (-1) give none for the objects removed.
-  if (run_attempts.size() >= 2) {
-    const auto as_json = [](std::pair<double, double> bounds) {
-      return Json{bounds.first, bounds.second};
-    };
-    summary["success_rate"]["ci95_runs"] = as_json(run_bootstrap_interval(run_attempts));
-    if (objects >= 0 && std::none_of(run_objects.begin(), run_objects.end(),
-                                     [](const RunCount& run) { return run.trials < 0; }))
-      summary["removed_rate"]["ci95_runs"] = as_json(run_bootstrap_interval(run_objects));
-  }
+  const Json between_runs = between_runs_intervals(runs);
+  if (between_runs.contains("success"))
+    summary["success_rate"]["ci95_runs"] = between_runs.at("success");
+  if (between_runs.contains("removed"))
+    summary["removed_rate"]["ci95_runs"] = between_runs.at("removed");
   // The objects the gripper could hold as they lay: those removed and those left that fit.
   if (truth && errors < int(runs.size())) {
     summary["left"] = left;

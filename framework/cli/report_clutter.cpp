@@ -10,7 +10,6 @@
 #include "clutter_bench.hpp"
 #include "clutter_protocols.hpp"
 #include "report_sections.hpp"
-#include "run_bootstrap.hpp"
 
 namespace antipode::cli {
 namespace {
@@ -62,28 +61,26 @@ std::string headline(const Json& r) {
                         rows);
 }
 
-// The headline's rates again, with intervals that resample whole runs (run_bootstrap.hpp):
-// attempts within a run are not independent trials. Nothing for fewer than two runs.
+// The headline's rates again, with intervals that resample whole runs (computed from the run
+// records, so that reports written before the summary carried them have them too). Nothing
+// for fewer than two runs.
 std::string between_runs(const Json& r) {
-  std::vector<RunCount> attempts, objects;
-  for (const Json& run : r.value("run_records", Json::array())) {
-    if (run.contains("error")) continue;  // counted apart, as in the summary
-    attempts.push_back({run.at("successes").get<int>(), run.at("attempts").get<int>()});
-    objects.push_back({run.at("removed").get<int>(), run.at("objects").get<int>()});
-    if (objects.back().trials < 0) return "";  // a cell without ground truth
-  }
-  if (attempts.size() < 2) return "";
+  const Json intervals = between_runs_intervals(r.value("run_records", Json::array()));
+  if (!intervals.contains("success")) return "";
   const ClutterProtocol& protocol = protocol_of(r);
-  const auto interval = [](std::pair<double, double> bounds) {
+  const auto interval = [](const Json& bounds) {
     char text[32];
-    std::snprintf(text, sizeof text, "[%.1f, %.1f]", 100 * bounds.first, 100 * bounds.second);
+    std::snprintf(text, sizeof text, "[%.1f, %.1f]", 100 * bounds.at(0).get<double>(),
+                  100 * bounds.at(1).get<double>());
     return std::string(text);
   };
-  return "Between runs (the " + std::to_string(attempts.size()) +
-         " runs resampled whole, 2,000 bootstrap draws; attempts within a run are not "
-         "independent trials), the 95% intervals are " +
-         interval(run_bootstrap_interval(attempts)) + " for " + protocol.success_name + " and " +
-         interval(run_bootstrap_interval(objects)) + " for " + protocol.removed_name + ".\n\n";
+  std::string text = "Between runs (the " + intervals.at("runs").dump() +
+                     " runs resampled whole, 2,000 bootstrap draws; attempts within a run are "
+                     "not independent trials), the 95% intervals are " +
+                     interval(intervals.at("success")) + " for " + protocol.success_name;
+  if (intervals.contains("removed"))
+    text += " and " + interval(intervals.at("removed")) + " for " + protocol.removed_name;
+  return text + ".\n\n";
 }
 
 // What the objects left say about the removal rate (runs whose cell has ground truth).
