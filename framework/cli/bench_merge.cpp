@@ -120,12 +120,11 @@ int bench_merge_command(const BenchMergeOptions& o) {
   // The records and their summary; a record without an entry the summary reads (a hand-edited
   // or truncated file) is bad input, named as such.
   Json records, summary;
+  std::vector<std::string> variants;  // an isolation bench's
   try {
     records = joined_records(shards, o.reports);
-    summary =
-        bench == "clutter"
-            ? summarise_clutter(records)
-            : summarise(records, shards.front().at("variants").get<std::vector<std::string>>());
+    if (bench != "clutter") variants = shards.front().at("variants");
+    summary = bench == "clutter" ? summarise_clutter(records) : summarise(records, variants);
   } catch (const Json::exception& e) {
     throw Error("bench merge: a shard's record lacks an entry or has a malformed one (" +
                 std::string(e.what()) + ")");
@@ -145,8 +144,7 @@ int bench_merge_command(const BenchMergeOptions& o) {
   if (bench == "clutter")
     print_clutter_summary(std::cout, summary, merged.value("protocol", "paper"));
   else
-    print_report(std::cout, records, summary,
-                 merged.at("variants").get<std::vector<std::string>>());
+    print_report(std::cout, records, summary, variants);
   std::cout << "wall time " << wall_s << " s (the shards' sum)\n";
   write_report(std::cout, o.report_path, merged);
   return kExitSuccess;
