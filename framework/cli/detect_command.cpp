@@ -72,7 +72,7 @@ std::string per_object(const HandSet& set, bool grasps_only) {
 void print_explanation(const HandSet* sampled, const HandSet* screened, const HandSet* classified,
                        std::size_t best) {
   if (sampled == nullptr) {
-    std::cout << "explain: the tree stopped before sampling\n";
+    std::cout << "explain: no hand hypotheses (the tree failed at or before sampling)\n";
     return;
   }
   std::cout << "scene: "
@@ -115,7 +115,7 @@ int detect_command(const DetectOptions& options) {
   if (options.explain)
     print_explanation(hand_set(tree, "hands"), hand_set(tree, "screened"),
                       hand_set(tree, options.hands_entry), 12);
-  std::cout << options.tree_path << ": " << bt::to_string(status) << "\n";
+  std::cout << result_line(options.tree_path, status, tracing) << "\n";
   return status == bt::Status::kSuccess ? kExitSuccess : kExitTreeFailed;
 }
 

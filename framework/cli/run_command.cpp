@@ -51,7 +51,7 @@ int run_command(const RunOptions& options) {
   bt::Tree tree = load_tree_for(session, options.tree_path, {}, options.settings);
   const Tracing tracing = attach_tracers(tree, options.settings.verbose, options.trace_path);
   const bt::Status status = tree.tick_while_running();
-  std::cout << options.tree_path << ": " << bt::to_string(status) << "\n";
+  std::cout << result_line(options.tree_path, status, tracing) << "\n";
   return status == bt::Status::kSuccess ? kExitSuccess : kExitTreeFailed;
 }
 

@@ -16,7 +16,7 @@ int scene_command(const SceneOptions& options) {
   bt::Tree tree = load_tree_for(session, options.tree_path, entries, options.settings);
   const Tracing tracing = attach_tracers(tree, options.settings.verbose, "");
   const bt::Status status = tree.tick_while_running();
-  std::cout << options.tree_path << ": " << bt::to_string(status) << "\n";
+  std::cout << result_line(options.tree_path, status, tracing) << "\n";
   if (status == bt::Status::kSuccess) std::cout << "picture: " << options.image_path << "\n";
   return status == bt::Status::kSuccess ? kExitSuccess : kExitTreeFailed;
 }

@@ -90,7 +90,17 @@ Tracing attach_tracers(bt::Tree& tree, bool console, const std::string& trace_pa
     tracing.file = std::make_unique<bt::JsonlTracer>(trace_path);
     tree.add_observer(tracing.file.get());
   }
+  tracing.witness = std::make_unique<bt::FailureWitness>();
+  tree.add_observer(tracing.witness.get());
   return tracing;
+}
+
+std::string result_line(const std::string& tree_path, bt::Status status, const Tracing& tracing) {
+  std::string line = tree_path + ": " + bt::to_string(status);
+  const std::string& cause = tracing.witness ? tracing.witness->last_failure() : std::string();
+  if (status == bt::Status::kFailure && !tracing.console && !cause.empty())
+    line += " (" + cause + ")";
+  return line;
 }
 
 std::string refused_plugins_note(const PluginHost& host) {

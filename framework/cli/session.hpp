@@ -50,11 +50,18 @@ bt::Tree load_tree_for(Session& session, const std::string& tree_path,
 struct Tracing {
   std::unique_ptr<bt::ConsoleTracer> console;
   std::unique_ptr<bt::JsonlTracer> file;
+  std::unique_ptr<bt::FailureWitness> witness;
 };
 
-/// Attaches a console tracer (when `console`) and a JSON-lines trace file (when
-/// `trace_path` is not empty) to `tree`.
+/// Attaches a console tracer (when `console`), a JSON-lines trace file (when `trace_path` is
+/// not empty) and a failure witness to `tree`.
 Tracing attach_tracers(bt::Tree& tree, bool console, const std::string& trace_path);
+
+/// The line a command ends a tree run with: `trees/detect.yaml: SUCCESS`, or on failure
+/// `trees/detect.yaml: FAILURE (SampleHands at trees/detect.yaml:18:13: no hand hypothesis
+/// found)` - the last leaf that failed with a reason, unless the console trace already
+/// showed it.
+std::string result_line(const std::string& tree_path, bt::Status status, const Tracing& tracing);
 
 /// " - note: N plugin libraries were refused; see 'antipode plugins'", or "" when none were.
 std::string refused_plugins_note(const PluginHost& host);

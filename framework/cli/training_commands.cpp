@@ -22,7 +22,7 @@ int run_tree(const std::string& tree_path, const std::vector<std::string>& entri
   attach_progress_bar(tree, bar);
   const bt::Status status = tree.tick_while_running();
   bar.clear();
-  std::cout << tree_path << ": " << bt::to_string(status) << "\n";
+  std::cout << result_line(tree_path, status, tracing) << "\n";
   return status == bt::Status::kSuccess ? kExitSuccess : kExitTreeFailed;
 }
 

@@ -77,6 +77,25 @@ TEST_F(TracerTest, ConsoleTracerColoursOnlyWhenAsked) {
   EXPECT_NE(out.str().find("\033[31mFAILURE\033[0m"), std::string::npos);
 }
 
+TEST_F(TracerTest, FailureWitnessNamesTheLastLeafThatFailedWithAReason) {
+  Tree tree = load(R"(
+main: t
+trees:
+  t:
+    Sequence:
+      - Fallback:
+          - FailWithReason: { reason: first try }
+          - Scripted: { id: b, script: [SUCCESS] }
+      - FailWithReason: { reason: no hands, name: sample }
+)");
+  FailureWitness witness;
+  EXPECT_EQ(witness.last_failure(), "");
+  tree.add_observer(&witness);
+  EXPECT_EQ(tree.tick_while_running(), Status::kFailure);
+  // The Fallback's recovered failure is superseded; the Sequence's own failure has no reason.
+  EXPECT_EQ(witness.last_failure(), "FailWithReason 'sample' at trees/t.yaml:9:9: no hands");
+}
+
 TEST_F(TracerTest, JsonlTracerWritesValidJsonLines) {
   const std::string path = ::testing::TempDir() + "bt_trace_test.jsonl";
   {

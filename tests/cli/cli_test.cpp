@@ -409,6 +409,28 @@ TEST_F(DetectTest, NanOnlyAndEmptyCloudsAreErrors) {
   EXPECT_TRUE(wrote_nothing());
 }
 
+// A failed detection ends with the node that failed, where it is in the tree, and why; a
+// cloud in millimetres is named as the likely cause.
+TEST_F(DetectTest, ACloudInMillimetresFailsWithTheNodeAndTheUnits) {
+  std::string points;
+  for (int x = 0; x <= 30; ++x)
+    for (int y = 0; y <= 30; ++y)
+      points += std::to_string(x * 20 - 300) + " " + std::to_string(y * 20 - 300) + " 600\n";
+  const std::string cloud =
+      write("mm.pcd",
+            "VERSION .7\nFIELDS x y z\nSIZE 4 4 4\nTYPE F F F\nCOUNT 1 1 1\nWIDTH 961\n"
+            "HEIGHT 1\nPOINTS 961\nDATA ascii\n" +
+                points);
+  const Result result = run(detect(cloud));
+  EXPECT_EQ(result.exit_code, 1) << result.out;
+  EXPECT_NE(result.out.find(": FAILURE (SampleHands at " + tree_ + ":"), std::string::npos)
+      << result.out;
+  EXPECT_NE(result.out.find("the cloud is 600 m across"), std::string::npos) << result.out;
+  EXPECT_NE(result.out.find("millimetres"), std::string::npos) << result.out;
+  fs::remove(cloud);
+  EXPECT_TRUE(wrote_nothing());
+}
+
 TEST_F(DetectTest, WorkspaceOutsideTheCloudIsAnError) {
   if (!fs::exists(krylon_)) GTEST_SKIP() << "no " << krylon_ << " (../shared/data is absent)";
   const Result result =

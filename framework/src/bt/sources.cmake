@@ -9,6 +9,7 @@ list(APPEND ANTIPODE_SOURCES
   ${CMAKE_CURRENT_LIST_DIR}/control_nodes.cpp
   ${CMAKE_CURRENT_LIST_DIR}/converters.cpp
   ${CMAKE_CURRENT_LIST_DIR}/decorator_nodes.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/failure_witness.cpp
   ${CMAKE_CURRENT_LIST_DIR}/jsonl_tracer.cpp
   ${CMAKE_CURRENT_LIST_DIR}/leaf_nodes.cpp
   ${CMAKE_CURRENT_LIST_DIR}/loader.cpp

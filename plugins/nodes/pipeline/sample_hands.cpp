@@ -1,3 +1,4 @@
+#include <cstdio>
 #include <string>
 
 #include "antipode/bt/action_node.hpp"
@@ -7,6 +8,22 @@
 
 namespace antipode::pipeline {
 namespace {
+
+// Why a cloud may give no hand: coordinates in other units than metres. The gripper is a few
+// centimetres across; a cloud tens of metres across is almost always in millimetres.
+std::string units_hint(const Cloud& cloud) {
+  if (cloud.points_m.empty()) return {};
+  Eigen::Vector3f lo = cloud.points_m.front(), hi = lo;
+  for (const Eigen::Vector3f& p : cloud.points_m) lo = lo.cwiseMin(p), hi = hi.cwiseMax(p);
+  const float extent_m = (hi - lo).maxCoeff();
+  if (extent_m <= 20.0f) return {};
+  char text[160];
+  std::snprintf(text, sizeof(text),
+                "; the cloud is %.0f m across, and coordinates must be in metres: scale a cloud "
+                "in millimetres by 0.001",
+                static_cast<double>(extent_m));
+  return text;
+}
 
 /// Samples hand hypotheses from a cloud; fails when there are none.
 class SampleHands final : public bt::SyncActionNode {
@@ -44,7 +61,7 @@ class SampleHands final : public bt::SyncActionNode {
                    std::to_string(hands->support->inliers) + " of the " +
                    std::to_string(hands->cloud->size()) + " points after preprocessing)"));
     if (hands->hands.empty()) {
-      set_failure_reason("no hand hypothesis found");
+      set_failure_reason("no hand hypothesis found" + units_hint(*cloud));
       return bt::Status::kFailure;
     }
     set_output("hands", HandSetPtr(std::move(hands)));

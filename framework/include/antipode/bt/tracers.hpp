@@ -1,7 +1,8 @@
 #pragma once
 /// @file
-/// Tracers: observers that record a tree's status changes for people (ConsoleTracer) and for
-/// tools (JsonlTracer). Attach them with Tree::add_observer().
+/// Tracers: observers that record a tree's status changes for people (ConsoleTracer), for
+/// tools (JsonlTracer) and to say why a run failed (FailureWitness). Attach them with
+/// Tree::add_observer().
 
 #include <chrono>
 #include <fstream>
@@ -46,6 +47,23 @@ class JsonlTracer : public TreeObserver {
   std::string path_;
   std::ofstream out_;
   std::chrono::steady_clock::time_point start_;
+};
+
+/// Remembers the last leaf node (action or condition) that failed with a reason. A control
+/// node or decorator fails because a child did, so after a run that failed this is the
+/// likeliest cause to show the user: `SampleHands at trees/detect.yaml:18:13: no hand
+/// hypothesis found`. Leaves that failed without a reason are not remembered.
+class FailureWitness : public TreeObserver {
+ public:
+  void on_status_change(const Node& node, Status previous, Status current,
+                        std::chrono::steady_clock::time_point when) override;
+
+  /// "Type at file:line:column: reason" (the node as Node::describe() names it; without
+  /// " at ..." when its place in the file is unknown), "" when no leaf failed with a reason.
+  const std::string& last_failure() const { return last_failure_; }
+
+ private:
+  std::string last_failure_;
 };
 
 }  // namespace antipode::bt
