@@ -1,3 +1,4 @@
+#include <BulletDynamics/Dynamics/btRigidBody.h>
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -153,25 +154,57 @@ TEST(Grasp, AHandPlannedIntoTheObjectStopsShortAndSaysOnWhat) {
   EXPECT_NE(r.reason.find("short of the pose"), std::string::npos) << r.reason;
 }
 
+// A physics world with the table and one object (an entry of a scene's `objects`), settled.
+struct OneObject {
+  explicit OneObject(const std::string& entry)
+      : spec(parse("placement: isolated\nobjects:\n  - " + entry + "\n")),
+        id(build_scene(spec, 0, meshes, world).at(0)) {}
+  SceneSpec spec;
+  PhysicsWorld world{PhysicsOptions{}};
+  MeshCache meshes;
+  int id;
+};
+
 TEST(Grasp, TheFingersCloseAlikeOnAnObjectOffCentre) {
   // A 4 cm box 1 cm off the hand's centre line: the geared fingers stay symmetric, so the
   // first finger to touch pushes the box to the centre.
-  const SceneSpec spec = parse(
-      "placement: isolated\nobjects:\n"
-      "  - { shape: box, size_m: [0.04, 0.06, 0.08], position_m: [0.73, -0.12] }\n");
-  PhysicsWorld world(PhysicsOptions{});
-  MeshCache meshes;
-  const std::vector<int> ids = build_scene(spec, 0, meshes, world);
+  OneObject box("{ shape: box, size_m: [0.04, 0.06, 0.08], position_m: [0.73, -0.12] }");
   GripperOptions options;
-  const double top = spec.table.top_z_m + 0.08;
-  Gripper gripper(world, options, top_down(0.72, -0.12, top + 0.002).X_FrameHand);
-  world.step(24);
+  const double top = box.spec.table.top_z_m + 0.08;
+  Gripper gripper(box.world, options, top_down(0.72, -0.12, top + 0.002).X_FrameHand);
+  box.world.step(24);
   gripper.drive_fingers(-options.finger_speed_m_s);
-  world.step(120);
+  box.world.step(120);
   EXPECT_NEAR(gripper.finger_travel_m(0), gripper.finger_travel_m(1), 0.001);
   EXPECT_NEAR(gripper.aperture_m(), 0.04, 0.003);
-  EXPECT_NEAR(world.pose(ids.at(0)).translation().x(), 0.72, 0.003) << "pushed to the centre";
+  EXPECT_NEAR(box.world.pose(box.id).translation().x(), 0.72, 0.003) << "pushed to the centre";
   EXPECT_EQ(gripper.pinched(0.002).size(), 1u);
+}
+
+// How fast a 5 cm ball on the table, pinched at its equator, spins about the closing axis
+// under a twist of 0.05 N m, for the gripper's torsional friction: a rigid finger meets the
+// ball at a point, which resists a twist only through the object's own small spinning friction.
+double spin_under_a_twist_rad_s(double torsional_friction_m) {
+  OneObject scene("{ shape: sphere, size_m: [0.05], position_m: [0.72, -0.12] }");
+  btRigidBody& ball = scene.world.body(scene.id);
+  const Eigen::Vector3d centre = scene.world.pose(scene.id).translation();
+  GripperOptions options;
+  options.torsional_friction_m = torsional_friction_m;
+  // The fingertips 15 mm below the equator, 10 mm above the table.
+  Gripper gripper(scene.world, options,
+                  top_down(centre.x(), centre.y(), centre.z() + 0.045).X_FrameHand);
+  gripper.drive_fingers(-options.finger_speed_m_s);
+  scene.world.step(120);
+  EXPECT_EQ(gripper.pinched(0.002).size(), 1u);
+  scene.world.set_before_step([&] { ball.applyTorque(btVector3(0.05f, 0, 0)); });
+  scene.world.step(60);
+  return std::abs(ball.getAngularVelocity().x());
+}
+
+TEST(Grasp, TorsionalFrictionOfThePadsResistsATwist) {
+  const double rigid = spin_under_a_twist_rad_s(0.0);
+  EXPECT_GT(rigid, 100.0) << "rigid fingers: the ball spins up between them";
+  EXPECT_LT(spin_under_a_twist_rad_s(0.005), rigid / 10.0) << "pads with a contact patch";
 }
 
 TEST(Grasp, CylinderTooWideForTheGripperIsNotLifted) {

@@ -104,6 +104,8 @@ CellOptions read_cell_options(const Parameters& p, const SceneSpec& scene) {
   a.hold_s = in_range(p, "hold_s", a.hold_s, 0.0, 10.0);
   a.gripper.finger_force_n = in_range(p, "finger_force_n", a.gripper.finger_force_n, 0.1, 500.0);
   a.gripper.friction = in_range(p, "gripper_friction", a.gripper.friction, 0.05, 1.0);
+  a.gripper.torsional_friction_m =
+      in_range(p, "gripper_torsional_friction_m", a.gripper.torsional_friction_m, 0.0, 0.05);
   a.gripper.hand_force_n = in_range(p, "hand_force_n", a.gripper.hand_force_n, 1.0, 5000.0);
   if (p.has("robot")) {
     CellArmOptions arm;

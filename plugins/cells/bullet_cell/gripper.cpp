@@ -89,6 +89,7 @@ Gripper::Gripper(PhysicsWorld& world, const GripperOptions& options,
     collider->setCollisionShape(part == 0 ? static_cast<btCollisionShape*>(p.palm_shape.get())
                                           : p.finger_shapes[part - 1]);
     collider->setFriction(btScalar(options.friction));
+    collider->setSpinningFriction(btScalar(options.torsional_friction_m));
     dynamics.addCollisionObject(collider.get(), btBroadphaseProxy::DefaultFilter,
                                 btBroadphaseProxy::AllFilter);
     if (part == 0)

@@ -28,6 +28,12 @@ struct GripperOptions {
   double finger_force_n = 20.0;  ///< squeeze of each finger (VGN/GIGA: 20 N)
   double finger_speed_m_s = 0.1;
   double friction = 1.0;
+  /// The fingers' and palm's spinning friction (m): Bullet resists a twist about a contact's
+  /// normal up to (this x the object's friction + the object's spinning friction x `friction`)
+  /// x the contact's normal force. 0: rigid fingers, whose contacts with a curved object are
+  /// points that resist no twist; a soft pad's contact patch of radius a resists about
+  /// 2/3 a x its friction.
+  double torsional_friction_m = 0.0;
 };
 
 /// Adds itself to a world at a hand pose (fingers fully open) and removes itself when
