@@ -202,6 +202,33 @@ TEST(MeshObjects, BadObjFilesAreClearErrors) {
   std::filesystem::remove(path);
 }
 
+// A mesh in millimetres (a 60 mm cube written as 60 units) is named as such, not dropped on
+// the table 60 m wide; scaled by 0.001 it loads.
+TEST(MeshObjects, AMeshInMillimetresIsAClearError) {
+  const std::filesystem::path folder =
+      std::filesystem::temp_directory_path() / ("mm_meshes_" + std::to_string(::getpid()));
+  std::filesystem::create_directories(folder);
+  std::ofstream obj(folder / "cube.obj");
+  for (int corner = 0; corner < 8; ++corner)
+    obj << "v " << (corner & 1) * 60 << ' ' << (corner >> 1 & 1) * 60 << ' ' << (corner >> 2) * 60
+        << '\n';
+  obj << "f 1 3 4 2\nf 5 6 8 7\nf 1 2 6 5\nf 3 7 8 4\nf 1 5 7 3\nf 2 4 8 6\n";
+  obj.close();
+  try {
+    load_mesh_object(folder.string(), "cube", 1.0, 700, 0.8);
+    ADD_FAILURE() << "no error";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("object 'cube' of '" + folder.string() +
+                                         "' is 60 m across at scale 1: object meshes must "
+                                         "be in metres"),
+              std::string::npos)
+        << e.what();
+  }
+  const ObjectModel cube = load_mesh_object(folder.string(), "cube", 0.001, 700, 0.8);
+  EXPECT_NEAR(cube.graspable_width_m, 0.06, 1e-6);
+  std::filesystem::remove_all(folder);
+}
+
 TEST(MeshObjects, LoadsYcbAndBlobsWhenTheDataIsThere) {
   const std::string data = ANTIPODE_TEST_DATA_DIR;
   if (!std::filesystem::exists(data + "/objects/ycb/025_mug/visual.obj"))

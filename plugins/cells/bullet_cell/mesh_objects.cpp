@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <map>
 #include <mutex>
@@ -51,6 +52,19 @@ const MeshShapes& mesh_shapes(const std::string& path) {
   return it->second;
 }
 
+// An object on the cell's table is under a metre across: a larger mesh is almost always in
+// other units (millimetres), and would drop off the table without a word.
+void check_size(const TriangleMesh& visual, const std::string& name, const std::string& folder,
+                double scale) {
+  const double extent_m = double(visual.bounds().sizes().maxCoeff());
+  if (extent_m <= 1.0) return;
+  char size[64];
+  std::snprintf(size, sizeof(size), "%.3g m across at scale %g", extent_m, scale);
+  throw Error("object '" + name + "' of '" + folder + "' is " + size +
+              ": object meshes must be in metres (a mesh in millimetres needs scaling by 0.001: "
+              "convert the file, or give its scene entry a `scale`)");
+}
+
 }  // namespace
 
 std::vector<std::string> list_mesh_objects(const std::string& folder) {
@@ -78,6 +92,7 @@ ObjectModel load_mesh_object(const std::string& folder, const std::string& name,
   const Eigen::Affine3f scaling(Eigen::Scaling(float(scale)));
   visual.transform(scaling);
   for (auto& hull : hulls) hull.transform(scaling);
+  check_size(visual, name, folder, scale);
   centre_on_mass(visual, hulls);
   ObjectModel model;
   model.name = name;
