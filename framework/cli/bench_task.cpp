@@ -151,6 +151,20 @@ const std::vector<BenchVariant>& isolation_variants() {
   return variants;
 }
 
+void require_cell_component(const std::string& tree_path, const std::string& example_tree) {
+  YAML::Node tree;
+  try {
+    tree = YAML::LoadFile(tree_path);
+  } catch (const YAML::Exception&) {
+    return;  // loading the tree reports the file's own errors, with their lines
+  }
+  if (tree.IsMap() && tree["components"] && tree["components"].IsMap() &&
+      tree["components"]["cell"])
+    return;
+  throw Error("--tree: '" + tree_path + "' has no component 'cell': a bench resets and reads " +
+              "the simulated cell through it, as " + example_tree + " does");
+}
+
 bt::Tree load_task_tree(const Session& session, const TaskSettings& settings,
                         const BenchTask& task) {
   bt::LoadOptions load;

@@ -60,6 +60,10 @@ nlohmann::ordered_json record_json(const GraspAttempt& record);
 /// nothing", "knocked off the table", "slipped" or "not executed".
 std::string failure_class(const GraspAttempt& record);
 
+/// Throws antipode::Error unless the tree file at `tree_path` (which exists) has a component
+/// named `cell`: every bench runs its tree in the simulated cell, as `example_tree` does.
+void require_cell_component(const std::string& tree_path, const std::string& example_tree);
+
 /// The pick tree's `attempt` tree, loaded for `task` (its components created, nothing run).
 /// Throws antipode::Error when it cannot be loaded (e.g. a parameter the variant's
 /// classifier does not take).

@@ -63,6 +63,7 @@ void check_options(const ClutterBenchOptions& o) {
     throw Error("--objects-per-run must be in 1..100");
   if (o.jobs < 1 || o.jobs > 64) throw Error("--jobs must be in 1..64");
   if (!fs::is_regular_file(o.tree_path)) throw Error("--tree: no tree file '" + o.tree_path + "'");
+  require_cell_component(o.tree_path, clutter_protocol(o.protocol).tree);
   for (const auto& [option, dir] :
        {std::pair{"--pictures", &o.pictures_dir}, std::pair{"--selections", &o.selections_dir}})
     if (!dir->empty() && fs::exists(*dir) && !fs::is_directory(*dir))

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "antipode/bt/loader.hpp"
+#include "antipode/core/atomic_file.hpp"
 #include "antipode/core/error.hpp"
 #include "antipode/geometry/scene_layout.hpp"
 #include "antipode/interfaces/grasp_selector.hpp"
@@ -106,6 +107,8 @@ void print_explanation(const HandSet* sampled, const HandSet* screened, const Ha
 }  // namespace
 
 int detect_command(const DetectOptions& options) {
+  for (const std::string* path : {&options.out_path, &options.image_path})
+    if (!path->empty()) check_output_path(*path);  // before the work, and before either is written
   const std::vector<std::string> entries = detect_entries(options);
   Session session = open_session_for(options.tree_path, entries, options.settings);
   bt::Tree tree = load_tree_for(session, options.tree_path, entries, options.settings);

@@ -43,6 +43,7 @@ void check_options(const IsolationBenchOptions& o) {
   if (o.first < 0) throw Error("--first must be 0 or more");
   if (o.jobs < 1 || o.jobs > 64) throw Error("--jobs must be in 1..64");
   if (!fs::is_regular_file(o.tree_path)) throw Error("--tree: no tree file '" + o.tree_path + "'");
+  require_cell_component(o.tree_path, "trees/pick_isolated.yaml");
   if (!o.pictures_dir.empty() && fs::exists(o.pictures_dir) && !fs::is_directory(o.pictures_dir))
     throw Error("--pictures: '" + o.pictures_dir + "' is not a folder");
   parse_overrides(o.set);  // throws for an entry without '='
@@ -161,6 +162,7 @@ int bench_isolation_command(const IsolationBenchOptions& o) {
                    {"held_out", o.held_out},
                    {"poses", o.poses},
                    {"attempts_per_variant", tasks.size() / variants.size()},
+                   {"first", o.first},
                    {"seed", o.seed},
                    {"noise", o.noise.empty() ? "tree" : o.noise},
                    {"overrides", o.set},
@@ -175,7 +177,10 @@ int bench_isolation_command(const IsolationBenchOptions& o) {
     if (!shard.whole()) report["shard"] = shard_json(shard, tasks.size());
     write_report(std::cout, o.report_path, report);
   }
-  return kExitSuccess;
+  // An attempt whose tree raised an error measured nothing: the bench must not pass for one.
+  const bool any_error = std::any_of(attempts.begin(), attempts.end(),
+                                     [](const Json& a) { return a.at("outcome") == "error"; });
+  return any_error ? kExitInternalError : kExitSuccess;
 }
 
 }  // namespace antipode::cli

@@ -1,6 +1,7 @@
 // The `antipode` command: runs, validates and inspects behaviour trees and plugins.
 #include <CLI/CLI.hpp>
 
+#include <algorithm>
 #include <iostream>
 
 #include "antipode/config.hpp"
@@ -15,9 +16,42 @@
 
 namespace {
 
+// "antipode bench: no subcommand 'foo' (did you mean ...?); subcommands: isolation, ..." when
+// a word names no command, "antipode bench needs a subcommand: ..." when none is given, else
+// "" (CLI11 says only that the word was not expected, or that a subcommand is required).
+std::string unknown_subcommand(const CLI::App& app, int argc, char** argv) {
+  const CLI::App* parent = &app;
+  std::string path = "antipode";
+  const auto names_of = [](const CLI::App* command) {
+    std::vector<std::string> names;
+    for (const CLI::App* sub : command->get_subcommands({})) names.push_back(sub->get_name());
+    return names;
+  };
+  const auto joined = [](const std::vector<std::string>& names) {
+    std::string list;
+    for (const auto& name : names) list += (list.empty() ? "" : ", ") + name;
+    return list;
+  };
+  for (int i = 1; i < argc; ++i) {
+    const std::string word = argv[i];
+    const std::vector<std::string> names = names_of(parent);
+    if (word.empty() || word[0] == '-' || names.empty()) return "";
+    const char* kind = parent == &app ? "command" : "subcommand";
+    if (std::find(names.begin(), names.end(), word) == names.end())
+      return path + ": no " + kind + " '" + word + "'" + antipode::did_you_mean(word, names) +
+             "; " + kind + "s: " + joined(names);
+    parent = parent->get_subcommand(word);
+    path += " " + word;
+  }
+  if (parent != &app && parent->get_require_subcommand_min() > 0)
+    return path + " needs a subcommand: " + joined(names_of(parent));
+  return "";
+}
+
 constexpr const char* kExamples = R"(Examples:
   antipode run trees/pick_isolated.yaml
-  antipode run trees/detect.yaml --set sampler.samples=500 --seed 3 --trace run.jsonl
+  antipode run trees/detect.yaml --set cloud_file=../shared/data/clouds/krylon.pcd \
+      --set sampler.samples=500 --seed 3 --trace run.jsonl
   antipode validate trees/detect.yaml
   antipode detect ../shared/data/clouds/table_mug.pcd --out grasps.json --image grasps.png
   antipode scene scenes/pile_procedural.yaml --image scene.png
@@ -48,7 +82,7 @@ struct Commands {
   antipode::cli::ClutterBenchOptions clutter;
   antipode::cli::BenchMergeOptions merge;
   antipode::cli::ReportOptions report;
-  std::string validate_path;
+  std::vector<std::string> validate_paths;
   std::string node_type;        ///< `antipode nodes [TYPE]`
   std::string check_library;    ///< `antipode plugins --check LIB`
   std::string index_directory;  ///< `antipode plugins --write-index DIR`
@@ -162,8 +196,10 @@ void add_bench_clutter(CLI::App& bench, antipode::cli::ClutterBenchOptions& o) {
   clutter->add_option("--runs", o.runs, "Clear-the-box runs")->capture_default_str();
   clutter->add_option("--protocol", o.protocol, "paper (the default), vgn-pile or vgn-packed")
       ->capture_default_str();
-  clutter->add_option("--objects-per-run", o.objects_per_run,
-                      "Objects dumped into the box (default: the protocol's, 10 or 5)");
+  clutter
+      ->add_option("--objects-per-run", o.objects_per_run,
+                   "Objects dumped into the box (default: the protocol's, 10 or 5)")
+      ->check(CLI::Range(1, 100));
   clutter->add_option("--seed", o.seed, "Cell seed of run 0 (run i: seed + i)")
       ->capture_default_str()
       ->check(kSeed);
@@ -173,7 +209,8 @@ void add_bench_clutter(CLI::App& bench, antipode::cli::ClutterBenchOptions& o) {
   clutter->add_option("--tree", o.tree_path,
                       "The clear-the-box tree (default: the protocol's, trees/clear_box.yaml or "
                       "trees/vgn_round.yaml)");
-  clutter->add_option("--noise", o.noise, "The cell's sensor noise scale (default: the tree's)");
+  clutter->add_option("--noise", o.noise, "The cell's sensor noise scale (default: the tree's)")
+      ->check(CLI::Range(0.0, 10.0));
   clutter->add_option("--set", o.set, "Override a tree entry or component parameter");
   clutter->add_option("--pictures", o.pictures_dir,
                       "Draw every failed attempt into this folder (seed-S-cycle-NN.png)");
@@ -215,7 +252,8 @@ void add_bench(CLI::App& app, Commands& commands) {
   isolation->add_option("--pictures", o.pictures_dir, "Draw every failed attempt into this folder");
   isolation->add_option("--tree", o.tree_path, "The pick tree (its `attempt` tree runs)")
       ->capture_default_str();
-  isolation->add_option("--noise", o.noise, "The cell's sensor noise scale (default: the tree's)");
+  isolation->add_option("--noise", o.noise, "The cell's sensor noise scale (default: the tree's)")
+      ->check(CLI::Range(0.0, 10.0));
   isolation->add_option("--held-out", o.held_out, "Objects reported apart (comma-separated)")
       ->delimiter(',');
   isolation->add_option("--set", o.set, "Override a tree entry or component parameter");
@@ -248,7 +286,9 @@ int dispatch(const CLI::App& app, const Commands& commands) {
     return antipode::cli::eval_classifier_command(commands.eval);
   }
   if (app.got_subcommand("validate")) {
-    return antipode::cli::validate_command(commands.validate_path);
+    for (const std::string& path : commands.validate_paths)
+      if (const int code = antipode::cli::validate_command(path); code != 0) return code;
+    return 0;
   }
   if (app.got_subcommand("bench")) {
     const CLI::App* bench = app.get_subcommand("bench");
@@ -287,8 +327,9 @@ int main(int argc, char** argv) {
   add_eval(app, commands);
   add_bench(app, commands);
   add_report(app, commands.report);
-  CLI::App* validate = app.add_subcommand("validate", "Check a tree file without running it");
-  validate->add_option("tree", commands.validate_path, "YAML tree file")->required();
+  CLI::App* validate = app.add_subcommand(
+      "validate", "Check tree files without running them (the first error stops)");
+  validate->add_option("trees", commands.validate_paths, "YAML tree files")->required();
   CLI::App* plugins =
       app.add_subcommand("plugins", "List plugin libraries found, loaded and refused, and why");
   CLI::Option* check = plugins->add_option(
@@ -308,7 +349,8 @@ int main(int argc, char** argv) {
   } catch (const CLI::ParseError& error) {
     if (error.get_exit_code() == 0) return app.exit(error);  // --help, --version
     // One line, as every other error: what CLI11 found wrong, and where to look.
-    std::cerr << "antipode: error: " << error.what()
+    const std::string unknown = unknown_subcommand(app, argc, argv);
+    std::cerr << "antipode: error: " << (unknown.empty() ? error.what() : unknown)
               << " (see antipode --help, or the command's --help)\n";
     return kExitInvalidInput;
   }

@@ -21,7 +21,6 @@ std::string children_of(const bt::NodeManifest& manifest) {
 
 void print_port(const bt::PortInfo& port) {
   std::cout << "  " << port.name << " (" << bt::to_string(port.direction) << ", " << port.type_name;
-  if (port.component_kind) std::cout << " component";
   if (port.required) {
     std::cout << ", required";
   } else if (port.default_text) {

@@ -40,7 +40,8 @@ std::string command_text(const Json& r, const std::string& name) {
   if (r.at("tree") != protocol.tree) c += " --tree " + shell_word(r.at("tree"));
   if (r.at("noise") != "tree") c += " --noise " + shell_word(r.at("noise"));
   if (r.contains("gripper")) c += " --gripper " + shell_word(r.at("gripper").at("file"));
-  return "```sh\n" + c + set_options(r) + " --jobs 2 --report " + name + ".json\n```\n\n";
+  return "```sh\n" + c + set_options(r) + " --jobs " + r.at("jobs").dump() + " --report " + name +
+         ".json\n```\n\n";
 }
 
 std::string headline(const Json& r) {
@@ -131,10 +132,12 @@ std::string failures(const Json& s) {
                 "found no grasp; objects lost off the table: %d.\n\n",
                 s.at("cycle_s_median").get<double>(), s.at("run_s_median").get<double>(),
                 s.at("no_grasp").get<int>(), s.at("cycles").get<int>(), s.at("lost").get<int>());
-  return "Failures as the paper groups them (share of attempts):\n\n" +
-         markdown_table({"group", "attempts", "share"}, rows) +
-         "\nFailure classes: " + (classes.empty() ? "none" : classes) + ". Runs ended: " + stops +
-         ". " + seconds;
+  const std::string groups = rows.empty()
+                                 ? "Failures as the paper groups them: none.\n"
+                                 : "Failures as the paper groups them (share of attempts):\n\n" +
+                                       markdown_table({"group", "attempts", "share"}, rows);
+  return groups + "\nFailure classes: " + (classes.empty() ? "none" : classes) +
+         ". Runs ended: " + stops + ". " + seconds;
 }
 
 // More runs than this get one line about them instead of a row and a bar each.

@@ -3,6 +3,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <map>
 #include <sstream>
 
 #include <nlohmann/json.hpp>
@@ -39,7 +40,8 @@ Notes read_notes(const std::string& path) {
   return notes;
 }
 
-ReportSection section_of(const std::string& path, const PlotPlace& plots) {
+// `name` names the section's chart files.
+ReportSection section_of(const std::string& path, const std::string& name, const PlotPlace& plots) {
   std::ifstream file(path);
   if (!file) throw Error(path + ": cannot read the bench report");
   Json report;
@@ -48,7 +50,6 @@ ReportSection section_of(const std::string& path, const PlotPlace& plots) {
   } catch (const Json::exception& e) {
     throw Error(path + ": not a JSON report (" + std::string(e.what()) + ")");
   }
-  const std::string name = fs::path(path).stem().string();
   try {
     const std::string bench = report.value("bench", "");
     if (bench == "isolation") return isolation_section(report, name, plots);
@@ -84,8 +85,12 @@ int report_command(const ReportOptions& o) {
 
   std::string markdown = introduction(o.reports) + notes.intro;
   std::vector<bool> placed(notes.sections.size(), false);
+  std::map<std::string, int> stems;  // reports of one file name in two folders: -2, -3, ...
   for (const std::string& path : o.reports) {
-    const ReportSection section = section_of(path, plots);
+    const std::string stem = fs::path(path).stem().string();
+    const int seen = ++stems[stem];
+    const std::string name = seen == 1 ? stem : stem + "-" + std::to_string(seen);
+    const ReportSection section = section_of(path, name, plots);
     markdown += "## " + section.title + "\n\n" + section.markdown;
     for (std::size_t i = 0; i < notes.sections.size(); ++i)
       if (!placed[i] && notes.sections[i].title == section.title) {

@@ -37,7 +37,9 @@ std::vector<std::string> variants_of(const Json& r) {
 }
 
 std::string settings_text(const Json& r) {
-  const int attempts = r.at("attempts_per_variant"), first = r.at("seed");
+  // Attempt i runs on seed + i, from attempt `first` on (reports before `first` began at 0).
+  const int attempts = r.at("attempts_per_variant");
+  const int first = r.at("seed").get<int>() + r.value("first", 0);
   std::string held;
   for (const auto& name : r.at("held_out"))
     held += (held.empty() ? "" : ", ") + name.get<std::string>();
@@ -57,6 +59,7 @@ std::string command_text(const Json& r, const std::string& name) {
   std::string c = "antipode bench isolation --objects " + shell_word(r.at("objects")) +
                   " --poses " + r.at("poses").dump() + " --attempts " +
                   r.at("attempts_per_variant").dump() + " --seed " + r.at("seed").dump();
+  if (r.value("first", 0) != 0) c += " --first " + r.at("first").dump();
   std::string variants, held;
   for (const auto& v : r.at("variants"))
     variants += (variants.empty() ? "" : ",") + v.get<std::string>();
@@ -65,7 +68,8 @@ std::string command_text(const Json& r, const std::string& name) {
   if (!held.empty()) c += " --held-out " + held;
   if (r.at("tree") != "trees/pick_isolated.yaml") c += " --tree " + shell_word(r.at("tree"));
   if (r.at("noise") != "tree") c += " --noise " + shell_word(r.at("noise"));
-  return "```sh\n" + c + set_options(r) + " --jobs 2 --report " + name + ".json\n```\n\n";
+  return "```sh\n" + c + set_options(r) + " --jobs " + r.at("jobs").dump() + " --report " + name +
+         ".json\n```\n\n";
 }
 
 std::string headline(const Json& r) {
@@ -172,6 +176,7 @@ std::string per_variant_rows(const Json& r, const std::string& key, const std::s
       rows.back().push_back(text);
     }
   }
+  if (rows.empty()) return "none.\n\n";
   return markdown_table(header, rows) + "\n";
 }
 

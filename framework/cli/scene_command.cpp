@@ -1,6 +1,7 @@
 #include <iostream>
 
 #include "antipode/bt/loader.hpp"
+#include "antipode/core/atomic_file.hpp"
 #include "commands.hpp"
 #include "exit_codes.hpp"
 #include "session.hpp"
@@ -8,6 +9,7 @@
 namespace antipode::cli {
 
 int scene_command(const SceneOptions& options) {
+  if (!options.image_path.empty()) check_output_path(options.image_path);
   // The scene path goes in as a YAML string, so any file name is taken literally.
   const std::vector<std::string> entries = {"cell.scene='" + options.scene_path + "'",
                                             "image_file=" + options.image_path,

@@ -102,6 +102,28 @@ TEST_F(BenchTest, BadOptionsAreOneLineErrors) {
   expect_error("--objects /no/such/folder", "neither 'procedural' nor a folder");
   expect_error("--held-out box_z", "no object 'box_z'");
   expect_error("--tree trees/none.yaml", "no tree file");
+  expect_error("--tree trees/detect.yaml", "has no component 'cell'");
+  expect_error("--noise -1", "--noise: Value -1 not in range");
+}
+
+// The report's command reruns what the bench ran: from attempt --first on, with its --jobs;
+// two reports of one file name (in two folders) get a chart each.
+TEST_F(BenchTest, TheReportsCommandRerunsTheAttemptsItReports) {
+  report("--objects procedural --variants nc_1v --poses 2 --attempts 1 --first 3", "first.json");
+  fs::create_directories(file("again"));
+  fs::copy_file(file("first.json"), file("again/first.json"));
+  const auto made = antipode("report " + file("first.json") + " " + file("again/first.json") +
+                             " --out " + file("first.md"));
+  ASSERT_EQ(made.exit_code, 0) << made.out;
+  std::ifstream in(file("first.md"));
+  const std::string markdown((std::istreambuf_iterator<char>(in)), {});
+  EXPECT_NE(markdown.find("seeds 1003-1003"), std::string::npos) << markdown;
+  EXPECT_NE(markdown.find("--seed 1000 --first 3 --variants nc_1v --jobs 1 --report first.json"),
+            std::string::npos)
+      << markdown;
+  EXPECT_NE(markdown.find("(images/first-objects.png)"), std::string::npos) << markdown;
+  EXPECT_NE(markdown.find("(images/first-2-objects.png)"), std::string::npos) << markdown;
+  EXPECT_TRUE(fs::exists(file("images/first-2-objects.png")));
 }
 
 }  // namespace

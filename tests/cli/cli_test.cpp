@@ -62,6 +62,18 @@ TEST_F(CliTest, ValidateReportsMisspeltNodeWithLocationAndSuggestion) {
                             ":4:5: unknown node 'Sequnce' (did you mean 'Sequence'?)\n");
 }
 
+TEST_F(CliTest, ValidateChecksEveryTreeGivenAndStopsAtTheFirstError) {
+  const std::string good = write("good.yaml", "main: t\ntrees:\n  t:\n    AlwaysSuccess: {}\n");
+  const std::string bad = write("bad.yaml", "main: t\ntrees:\n  t:\n    AlwaysSucess: {}\n");
+  Result result = run("validate " + good + " " + good);
+  EXPECT_EQ(result.exit_code, 0) << result.out;
+  EXPECT_EQ(std::count(result.out.begin(), result.out.end(), '\n'), 2) << result.out;
+  result = run("validate " + good + " " + bad + " " + good);
+  EXPECT_EQ(result.exit_code, 2) << result.out;
+  EXPECT_NE(result.out.find("did you mean 'AlwaysSuccess'"), std::string::npos) << result.out;
+  EXPECT_EQ(std::count(result.out.begin(), result.out.end(), '\n'), 2) << result.out;
+}
+
 TEST_F(CliTest, ValidateAcceptsAGoodTree) {
   const std::string tree = write("ok.yaml", "main: t\ntrees:\n  t:\n    AlwaysSuccess: {}\n");
   const Result result = run("validate " + tree);
@@ -168,7 +180,8 @@ TEST_F(CliTest, CommandLineParseErrorsAreOneLineErrors) {
        {std::pair<std::string, std::string>{"frobnicate", "frobnicate"},
         {"bench clutter --runz 3", "--runz"},
         {"run --seed abc x.yaml", "got 'abc'"},
-        {"validate", "tree is required"},
+        {"validate", "trees is required"},
+        {"bench frobnicate", "no subcommand 'frobnicate'"},
         {"run --seed -1 x.yaml", "a seed is a whole number from 0 to 18446744073709551615"},
         {"run --seed '' x.yaml", "got ''"},
         {"bench clutter --seed 123456789012345678901234", "a seed is a whole number"}}) {
@@ -428,6 +441,17 @@ TEST_F(DetectTest, ACloudInMillimetresFailsWithTheNodeAndTheUnits) {
   EXPECT_NE(result.out.find("the cloud is 600 m across"), std::string::npos) << result.out;
   EXPECT_NE(result.out.find("millimetres"), std::string::npos) << result.out;
   fs::remove(cloud);
+  EXPECT_TRUE(wrote_nothing());
+}
+
+// Output paths are checked before the work: a bad --image writes no --out file either.
+TEST_F(DetectTest, ABadOutputPathIsAnErrorBeforeAnythingIsWritten) {
+  const Result result = run("detect " + krylon_ + " --tree " + tree_ + " --out " +
+                            (dir_ / "g.json").string() + " --image /no/such/folder/g.png");
+  EXPECT_EQ(result.exit_code, 2) << result.out;
+  EXPECT_NE(result.out.find("directory '/no/such/folder' does not exist"), std::string::npos)
+      << result.out;
+  EXPECT_EQ(result.out.find("points loaded"), std::string::npos) << "checked before loading";
   EXPECT_TRUE(wrote_nothing());
 }
 

@@ -182,7 +182,7 @@ TEST_F(ClutterBenchTest, ReportNamesTheClassifierARunSwappedIn) {
   EXPECT_NE(markdown.find("## Dense clutter: procedural shapes, no classifier (NC)\n"),
             std::string::npos)
       << markdown;
-  EXPECT_NE(markdown.find("--seed 3 " + nc + " --jobs 2 --report clutter-nc.json"),
+  EXPECT_NE(markdown.find("--seed 3 " + nc + " --jobs 1 --report clutter-nc.json"),
             std::string::npos)
       << markdown;
 }
@@ -384,7 +384,10 @@ TEST_F(ClutterBenchTest, BadOptionsAreOneLineErrors) {
   expect_error("--shard 1/0 --report x.json", "is not i/n");
   expect_error("--shard 1/2", "needs --report");
   expect_error("--runs 0", "--runs must be in 1..100000");
-  expect_error("--objects-per-run 101", "--objects-per-run must be in 1..100");
+  expect_error("--objects-per-run 101", "--objects-per-run: Value 101 not in range 1 to 100");
+  expect_error("--objects-per-run 0", "--objects-per-run: Value 0 not in range 1 to 100");
+  expect_error("--noise -1", "--noise: Value -1 not in range");
+  expect_error("--tree trees/detect.yaml", "has no component 'cell'");
   expect_error("--jobs 0", "--jobs must be in 1..64");
   expect_error("--objects /no/such/folder", "neither 'procedural' nor a folder");
   expect_error("--tree trees/none.yaml", "no tree file");

@@ -94,8 +94,7 @@ void sweep_stale(const fs::path& directory, const std::string& prefix,
 
 }  // namespace
 
-void write_file_atomically(const std::string& path,
-                           const std::function<void(const std::string&)>& write) {
+void check_output_path(const std::string& path) {
   const fs::path target(path);
   if (target.filename().empty()) throw Error("cannot write '" + path + "': not a file name");
   const fs::path directory = target.parent_path().empty() ? fs::path(".") : target.parent_path();
@@ -103,6 +102,9 @@ void write_file_atomically(const std::string& path,
     throw Error("cannot write '" + path + "': directory '" + directory.string() +
                 "' does not exist");
   }
+  if (::access(directory.c_str(), W_OK) != 0)
+    throw Error("cannot write '" + path + "': directory '" + directory.string() +
+                "' is not writable");
   // The rename would replace whatever `path` names: only a regular file (or nothing) may be
   // replaced, never a device, a FIFO, a socket or a folder (`--out /dev/null` must not
   // destroy /dev/null).
@@ -112,6 +114,13 @@ void write_file_atomically(const std::string& path,
     throw Error("cannot write '" + path + "': it exists and is not a regular file (" +
                 (fs::is_directory(status) ? "a folder" : "a device, FIFO or socket") +
                 "); give the path of a file");
+}
+
+void write_file_atomically(const std::string& path,
+                           const std::function<void(const std::string&)>& write) {
+  check_output_path(path);
+  const fs::path target(path);
+  const fs::path directory = target.parent_path().empty() ? fs::path(".") : target.parent_path();
   // Keep the extension last: some writers (OpenCV) choose the format from it.
   const std::string prefix = "." + target.stem().string() + ".partial-";
   sweep_stale(directory, prefix, target.extension().string());

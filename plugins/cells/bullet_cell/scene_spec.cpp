@@ -253,6 +253,7 @@ SceneSpec parse_scene(const Parameters& p) {
 
 SceneSpec read_scene(const std::string& path) {
   require_regular_file(path, "a scene file");
+  if (!std::filesystem::exists(path)) throw Error("scene '" + path + "': no such file");
   YAML::Node root;
   try {
     root = YAML::LoadFile(path);

@@ -33,7 +33,7 @@ class ConsoleTracer : public TreeObserver {
 
 /// One JSON object per line and per status change, flushed at once:
 /// `{"time_s":0.012,"node":"SampleHands","type":"SampleHands","path":"detect/Sequence/
-/// SampleHands#1","where":"trees/detect.yaml:7:11","from":"RUNNING","to":"FAILURE",
+/// SampleHands#0","where":"trees/detect.yaml:7:11","from":"RUNNING","to":"FAILURE",
 /// "reason":"no hands"}`. `reason` is present only for failures that gave one; `time_s` is
 /// seconds since the tracer was created.
 class JsonlTracer : public TreeObserver {

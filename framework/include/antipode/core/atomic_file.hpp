@@ -19,6 +19,12 @@ namespace antipode {
 /// process receives SIGINT or SIGTERM while writing (the handler is installed only where the
 /// program has none of its own), and files of that name left by processes that no longer run
 /// (killed with SIGKILL) are removed by the next write to `path`.
+/// Throws the antipode::Error write_file_atomically() would throw before writing anything:
+/// `path` has no file name, its directory does not exist or cannot be written to, or `path`
+/// exists and is not a regular file. Commands call it for every output path before their work,
+/// so that a bad path costs nothing and no other output is written.
+void check_output_path(const std::string& path);
+
 void write_file_atomically(const std::string& path,
                            const std::function<void(const std::string& temporary_path)>& write);
 
