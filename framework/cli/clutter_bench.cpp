@@ -70,7 +70,7 @@ void check_options(const ClutterBenchOptions& o) {
       throw Error(std::string(option) + ": '" + *dir + "' is not a folder");
   if (o.objects != "procedural" && !fs::is_directory(o.objects))
     throw Error("--objects: '" + o.objects + "' is neither 'procedural' nor a folder of meshes");
-  parse_overrides(o.set);  // throws for an entry without '='
+  check_entries_are_read(o.tree_path, o.set);  // and throws for an entry without '='
   if (!o.gripper_path.empty()) read_gripper_file(o.gripper_path);  // throws for a bad file
 }
 

@@ -79,4 +79,11 @@ int nodes_command(const std::string& type);
 std::vector<std::pair<std::string, std::string>> parse_overrides(
     const std::vector<std::string>& entries);
 
+/// Throws Error for a user's `--set key=value` (a blackboard entry: no dot in `key`) that the
+/// tree file at `tree_path` never reads as `{key}` - usually a component parameter given
+/// without its component (`--set samples=10` for `--set sampler.samples=10`), which would
+/// otherwise change nothing. The message suggests the components whose parameters in the file
+/// have that name.
+void check_entries_are_read(const std::string& tree_path, const std::vector<std::string>& set);
+
 }  // namespace antipode::cli

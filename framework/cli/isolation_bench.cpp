@@ -46,7 +46,7 @@ void check_options(const IsolationBenchOptions& o) {
   require_cell_component(o.tree_path, "trees/pick_isolated.yaml");
   if (!o.pictures_dir.empty() && fs::exists(o.pictures_dir) && !fs::is_directory(o.pictures_dir))
     throw Error("--pictures: '" + o.pictures_dir + "' is not a folder");
-  parse_overrides(o.set);  // throws for an entry without '='
+  check_entries_are_read(o.tree_path, o.set);  // and throws for an entry without '='
 }
 
 std::vector<BenchTask> plan(const IsolationBenchOptions& o, const std::vector<BenchObject>& objects,

@@ -1,3 +1,9 @@
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+
+#include <yaml-cpp/yaml.h>
+
 #include "antipode/core/error.hpp"
 #include "commands.hpp"
 
@@ -15,6 +21,40 @@ std::vector<std::pair<std::string, std::string>> parse_overrides(
     overrides.emplace_back(entry.substr(0, equals), entry.substr(equals + 1));
   }
   return overrides;
+}
+
+namespace {
+
+// " (did you mean sampler.samples?)" for the components of the file whose parameters include
+// `key`, else "".
+std::string component_suggestion(const std::string& text, const std::string& key) {
+  YAML::Node document;
+  try {
+    document = YAML::Load(text);
+  } catch (const YAML::Exception&) {
+    return "";  // loading the tree reports the file's own errors
+  }
+  std::string names;
+  if (document.IsMap() && document["components"] && document["components"].IsMap())
+    for (const auto& component : document["components"])
+      if (component.second.IsMap() && component.second[key])
+        names += (names.empty() ? "" : " or ") + component.first.as<std::string>() + "." + key;
+  return names.empty() ? "" : " (did you mean " + names + "?)";
+}
+
+}  // namespace
+
+void check_entries_are_read(const std::string& tree_path, const std::vector<std::string>& set) {
+  if (!std::filesystem::is_regular_file(tree_path)) return;  // loading the tree says what it is
+  std::ifstream file(tree_path);
+  const std::string text((std::istreambuf_iterator<char>(file)), {});
+  for (const auto& [key, value] : parse_overrides(set)) {
+    if (key.find('.') != std::string::npos || text.find("{" + key + "}") != std::string::npos)
+      continue;
+    throw Error("--set " + key + "=" + value + ": " + tree_path + " never reads {" + key + "}" +
+                component_suggestion(text, key) +
+                "; a component's parameter is set as COMPONENT.PARAMETER");
+  }
 }
 
 }  // namespace antipode::cli

@@ -28,6 +28,7 @@ bt::LoadOptions load_options(const Session& session, const std::vector<std::stri
 
 bt::Tree load_tree_for(Session& session, const std::string& tree_path,
                        const std::vector<std::string>& entries, const TreeRunSettings& settings) {
+  check_entries_are_read(tree_path, settings.set);
   if (!session.every_plugin) {
     // Checked first (which builds no component): a tree the opened plugins cannot load is
     // loaded with all of them, so its errors are those of a full session.

@@ -203,6 +203,26 @@ TEST_F(CliTest, AFolderGivenAsAnInputFileIsOneLineError) {
   EXPECT_EQ(std::count(tree.out.begin(), tree.out.end(), '\n'), 1) << tree.out;
 }
 
+// A blackboard entry the tree never reads is a mistake, usually a parameter without its
+// component: named, with the component whose parameter it is.
+TEST_F(CliTest, AnEntryNoNodeReadsIsAnErrorThatNamesTheParameter) {
+  const std::string tree =
+      write("entry.yaml",
+            "components:\n  cell: { plugin: none, samples: 3 }\nmain: t\ntrees:\n  t:\n"
+            "    Log: { message: \"{greeting}\" }\n");
+  Result result = run("run --quiet " + tree + " --set samples=10");
+  EXPECT_EQ(result.exit_code, 2) << result.out;
+  EXPECT_NE(result.out.find("--set samples=10: " + tree +
+                            " never reads {samples} (did you mean cell.samples?)"),
+            std::string::npos)
+      << result.out;
+  result = run("run --quiet " + tree + " --set greting=hi");
+  EXPECT_EQ(result.exit_code, 2) << result.out;
+  EXPECT_NE(result.out.find("never reads {greting}; a component's parameter is set as"),
+            std::string::npos)
+      << result.out;
+}
+
 TEST_F(CliTest, MalformedSetIsRejected) {
   const std::string tree = write("ok.yaml", "main: t\ntrees:\n  t:\n    AlwaysSuccess: {}\n");
   const Result result = run("run " + tree + " --set novalue");
