@@ -116,8 +116,9 @@ void add_run(CLI::App& app, Commands& commands) {
   add_tree_run_options(*run, options.settings);
   run->add_option("--trace", options.trace_path, "Write every status change as JSON lines");
   run->add_flag_callback(
-      "-q,--quiet", [&options] { options.settings.verbose = false; },
-      "No per-node trace on the console (run prints it by default)");
+         "-q,--quiet", [&options] { options.settings.verbose = false; },
+         "No per-node trace on the console (run prints it by default)")
+      ->excludes("--verbose");
 }
 
 void add_detect(CLI::App& app, Commands& commands) {
@@ -317,7 +318,6 @@ int dispatch(const CLI::App& app, const Commands& commands) {
 int main(int argc, char** argv) {
   using namespace antipode::cli;
   CLI::App app{"antipode: grasp detection and picking with behaviour trees and plugins"};
-  app.footer(kExamples);
   app.set_version_flag("--version", std::string("antipode ") + ANTIPODE_VERSION);
   Commands commands;
   add_run(app, commands);
@@ -344,6 +344,7 @@ int main(int argc, char** argv) {
       app.add_subcommand("nodes", "List the node types trees can use, or one's ports");
   nodes->add_option("type", commands.node_type, "A node type, e.g. SampleHands");
   app.require_subcommand(0, 1);
+  app.footer(kExamples);  // set last: subcommands made before it do not repeat it
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& error) {
