@@ -2,7 +2,10 @@
 # Builds one plugin library, libantipode_NAME.so, against antipode::framework. Inside the
 # antipode tree it goes to the build tree's plugin directory (where the plugin host finds it);
 # in a third-party project (find_package(antipode)) to ${CMAKE_BINARY_DIR}/plugins - put that
-# directory on ANTIPODE_PLUGIN_PATH. Both install into the antipode plugin directory.
+# directory on ANTIPODE_PLUGIN_PATH. `cmake --install` puts it in
+# <prefix>/<libdir>/antipode/plugins under the installing project's prefix: antipode's own
+# plugin folder when that is antipode's prefix (then refresh the folder's index with
+# `antipode plugins --write-index DIR`), else a folder to put on ANTIPODE_PLUGIN_PATH.
 function(antipode_add_plugin name)
   cmake_parse_arguments(ARG "" "" "SOURCES;LIBRARIES" ${ARGN})
   add_library(${name} MODULE ${ARG_SOURCES})

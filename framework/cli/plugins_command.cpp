@@ -1,3 +1,4 @@
+#include <filesystem>
 #include <iostream>
 #include <string>
 #include <vector>
@@ -31,7 +32,8 @@ int plugins_command() {
 
 int check_plugin_command(const std::string& library) {
   PluginHost host(std::vector<std::string>{});
-  const PluginRecord& record = host.load_library(library);
+  // A path, never a name for dlopen to look up on the system's library path.
+  const PluginRecord& record = host.load_library(std::filesystem::absolute(library).string());
   if (record.state != PluginRecord::State::kLoaded) {
     std::cerr << "antipode: error: " << library << ": cannot be loaded: " << record.reason << "\n";
     return kExitInvalidInput;

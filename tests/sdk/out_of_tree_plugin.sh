@@ -34,7 +34,9 @@ for type in "sampler every_point" "selector best_score" "planner never_reaches" 
 done
 # The installed plugins are found beside the installed library, and indexed.
 test -f "$(dirname "$library")/antipode/plugins/antipode_plugins.index"
-grep -q "$work/prefix/lib.*/antipode/plugins/libantipode_pipeline_nodes.so" <<<"$listing"
+grep -q "^loaded  $work/prefix/lib.*/antipode/plugins/libantipode_pipeline_nodes.so" <<<"$listing"
+# ... and not shadowed by the plugins of the build tree the SDK was installed from.
+if grep -q "^shadowed  $work/prefix" <<<"$listing"; then exit 1; fi
 # Its tree runs with the installed host and plugins.
 run="$(ANTIPODE_PLUGIN_PATH="$work/plugin/plugins" "$antipode" run \
   "$source_dir/plugins/examples/out_of_tree/width_preference.yaml" --set cloud_file="$cloud")"

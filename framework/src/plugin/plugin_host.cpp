@@ -61,13 +61,28 @@ constexpr std::size_t kDescriptorBytesRead =
 
 // <directory of libantipode.so>/antipode/plugins: found at run time, so an installed tree
 // works from whatever prefix it was installed to.
-std::string installed_plugin_dir() {
+// The folder holding this libantipode.so, "" when the loader cannot say.
+fs::path library_dir() {
   Dl_info info{};
-  if (dladdr(reinterpret_cast<void*>(&split_path_list), &info) == 0 || info.dli_fname == nullptr) {
-    return ANTIPODE_PLUGIN_DIR_BESIDE_LIBRARY;
-  }
-  const fs::path library_dir = fs::path(info.dli_fname).parent_path();
-  return (library_dir / ANTIPODE_PLUGIN_DIR_BESIDE_LIBRARY).lexically_normal().string();
+  if (dladdr(reinterpret_cast<void*>(&split_path_list), &info) == 0 || info.dli_fname == nullptr)
+    return {};
+  return fs::path(info.dli_fname).parent_path();
+}
+
+std::string installed_plugin_dir() {
+  return (library_dir() / ANTIPODE_PLUGIN_DIR_BESIDE_LIBRARY).lexically_normal().string();
+}
+
+// Whether this libantipode.so is the build tree's (not an installed copy, which must not pick
+// up the plugins of the build it was made from).
+bool running_from_build_tree() {
+  const fs::path dir = library_dir();
+  if (dir.empty()) return true;
+  const fs::path build_root = fs::path(ANTIPODE_PLUGIN_BUILD_DIR).parent_path();
+  std::error_code error;
+  const fs::path relative = fs::relative(fs::weakly_canonical(dir, error),
+                                         fs::weakly_canonical(build_root, error), error);
+  return !error && !relative.empty() && *relative.begin() != "..";
 }
 
 // Promotes an open library to RTLD_NODELETE (see PluginHost::Library).
@@ -95,7 +110,7 @@ std::string plugin_file_name(const std::string& plugin_name) {
 
 std::vector<std::string> PluginHost::default_search_path() {
   std::vector<std::string> path = split_path_list(std::getenv("ANTIPODE_PLUGIN_PATH"));
-  path.emplace_back(ANTIPODE_PLUGIN_BUILD_DIR);
+  if (running_from_build_tree()) path.emplace_back(ANTIPODE_PLUGIN_BUILD_DIR);
   path.push_back(installed_plugin_dir());
   return path;
 }

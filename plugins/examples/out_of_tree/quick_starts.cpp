@@ -4,12 +4,15 @@
 // SDK.
 //
 // - sampler `every_point`: one hand straight down onto each point of the cloud;
-// - selector `best_score`: the best-scored hand first, every other hand "not selected";
+// - selector `best_score`: the best-scored selectable hand first, the others in input order
+//   with their reasons ("not selected" for those that had none);
 // - planner `never_reaches`: a planner's failure, as a status with a one-line detail;
-// - cell `empty_cell`: one view that sees nothing, grasps that close on nothing.
+// - cell `empty_cell`: one view that sees nothing, grasps that close on nothing; an unknown
+//   view is an error.
 #include <algorithm>
 #include <memory>
 
+#include "antipode/core/error.hpp"
 #include "antipode/core/parameters.hpp"
 #include "antipode/interfaces/cell.hpp"
 #include "antipode/interfaces/grasp_selector.hpp"
@@ -54,10 +57,17 @@ class BestScore final : public GraspSelector {
   explicit BestScore(const Parameters& params) { params.reject_unknown(); }
   HandSet select(const HandSet& in, const SelectionContext&) const override {
     HandSet out = in;
-    std::stable_sort(out.hands.begin(), out.hands.end(),
-                     [](const Hand& a, const Hand& b) { return a.score > b.score; });
-    for (std::size_t i = 1; i < out.hands.size(); ++i)
-      out.hands[i].rejection = Rejection::kNotSelected;
+    out.hands.clear();
+    const Hand* best = nullptr;  // the best-scored hand a selector may choose
+    for (const Hand& hand : in.hands)
+      if (selectable(hand) && (best == nullptr || hand.score > best->score)) best = &hand;
+    if (best != nullptr) out.hands.push_back(*best);
+    for (const Hand& hand : in.hands) {  // the others in input order, each with its reason
+      if (&hand == best) continue;
+      out.hands.push_back(hand);
+      if (out.hands.back().rejection == Rejection::kNone)
+        out.hands.back().rejection = Rejection::kNotSelected;
+    }
     return out;
   }
 };
@@ -79,7 +89,15 @@ class EmptyCell final : public Cell {
  public:
   explicit EmptyCell(const Parameters& params) { params.reject_unknown(); }
   std::vector<std::string> view_names() const override { return {"front"}; }
-  Cloud capture(const std::vector<std::string>&) override { return {}; }
+  Cloud capture(const std::vector<std::string>& views) override {
+    Cloud cloud;  // no points, one (empty) view per view asked for
+    cloud.frame = "base";
+    for (const std::string& view : views) {
+      if (view != "front") throw Error("empty_cell has no view '" + view + "' (it has: front)");
+      cloud.view_origins_m.emplace_back(Eigen::Vector3f::Zero());
+    }
+    return cloud;
+  }
   JointState arm_state() const override { return {}; }
   GraspAttempt execute(const GraspRequest&) override {
     GraspAttempt attempt;

@@ -27,6 +27,11 @@ struct ObjectTruth {
   double narrowest_horizontal_m = 0.0;
 };
 
+/// One caller at a time: a cell is the state of one robot and its world, and none of its
+/// functions may run concurrently with another on the same cell (a tree ticks in one
+/// thread). Poses are in the cell's base frame, lengths in metres. Errors: antipode::Error
+/// for a request that names what the cell lacks (an unknown view); an attempt that goes
+/// wrong is an outcome of execute(), never an exception.
 class Cell : public Component {
  public:
   ComponentKind kind() const final { return ComponentKind::kCell; }

@@ -13,8 +13,12 @@ class Classifier : public Component {
   ComponentKind kind() const final { return ComponentKind::kClassifier; }
 
   /// Sets `score` and `label` of every hand in `hands`; hands judged not to be grasps get
-  /// label kNegative and a rejection reason. Never reorders or removes hands. Throws
-  /// Cancelled when `stop` asks to stop (the hands' scores are then unspecified).
+  /// label kNegative and a rejection reason. Never reorders or removes hands. Scores are
+  /// unitless (larger: more likely a grasp); the hands keep their frame. Deterministic, and
+  /// may be called concurrently on different hand sets (the shipped classifiers keep no
+  /// state between calls). Throws antipode::Error only for unusable input (hands whose
+  /// cloud is missing), and Cancelled when `stop` asks to stop (the hands' scores are then
+  /// unspecified).
   virtual void classify(HandSet& hands, const StopToken& stop) const = 0;
 };
 

@@ -10,7 +10,7 @@
 ///   directories hold a file of the same name, the earlier one wins.
 /// - Libraries are opened with dlopen(RTLD_NOW | RTLD_LOCAL). A library is refused - recorded
 ///   with its path and reason, never thrown, never crashing - when dlopen fails (dlerror()
-///   text verbatim), the entry symbol is missing, the ABI major differs or the minor is
+///   text, C++ names demangled), the entry symbol is missing, the ABI major differs or the minor is
 ///   newer than the host's (both versions named), the descriptor is malformed, or one of its
 ///   type names is already offered by a loaded library.
 /// - A library stays loaded while the host or any component created from it lives.
@@ -41,7 +41,8 @@ const char* to_string(PluginRecord::State state);
 
 class PluginHost : public ComponentSource {
  public:
-  /// `ANTIPODE_PLUGIN_PATH` directories, then the build tree's, then the installed one.
+  /// `ANTIPODE_PLUGIN_PATH` directories, then the build tree's `plugins/` (only for the build
+  /// tree's own libantipode, not an installed copy), then `antipode/plugins` beside libantipode.
   static std::vector<std::string> default_search_path();
 
   explicit PluginHost(std::vector<std::string> search_path = default_search_path());
