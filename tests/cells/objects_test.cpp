@@ -2,16 +2,20 @@
 #include <unistd.h>
 
 #include <cmath>
+#include <cstdint>
 #include <filesystem>
 #include <fstream>
 #include <map>
 #include <utility>
 
 #include "antipode/core/error.hpp"
+#include "antipode/core/parameters.hpp"
 #include "mesh_io.hpp"
 #include "mesh_objects.hpp"
+#include "physics_world.hpp"
 #include "primitive_meshes.hpp"
 #include "procedural_objects.hpp"
+#include "scene_builder.hpp"
 
 namespace antipode::cells {
 namespace {
@@ -226,6 +230,57 @@ TEST(MeshObjects, AMeshInMillimetresIsAClearError) {
   }
   const ObjectModel cube = load_mesh_object(folder.string(), "cube", 0.001, 700, 0.8);
   EXPECT_NEAR(cube.graspable_width_m, 0.06, 1e-6);
+  std::filesystem::remove_all(folder);
+}
+
+// A scan left open at the top with faces wound both ways - as scans often come - has a
+// signed volume near zero: its centre of mass comes from its hulls, inside the object, and it
+// stands on the table like any other.
+TEST(MeshObjects, AnOpenScanWoundBothWaysStandsOnTheTable) {
+  const std::filesystem::path folder =
+      std::filesystem::temp_directory_path() / ("open_scan_" + std::to_string(::getpid()));
+  std::filesystem::create_directories(folder);
+  {
+    // A 6.6 cm can 10 cm tall (48 sides, 4 rings), its bottom closed, its top open, each
+    // triangle's winding flipped by a seeded coin: its signed volume is under 1% of its box
+    // and its volume centroid 40 cm away.
+    std::ofstream obj(folder / "can.obj");
+    const int sides = 48, rings = 4, column = rings + 1;
+    for (int i = 0; i < sides; ++i)
+      for (int r = 0; r <= rings; ++r) {
+        const double a = 2.0 * M_PI * i / sides;
+        obj << "v " << 0.033 * std::cos(a) << ' ' << 0.033 * std::sin(a) << ' ' << 0.1 * r / rings
+            << '\n';
+      }
+    obj << "v 0 0 0\n";
+    std::uint64_t state = 21;
+    const auto face = [&](int a, int b, int c) {  // 0-based corners; OBJ counts from 1
+      state = (state * 1103515245u + 12345u) % (1u << 31);
+      if ((state >> 16) & 1u) std::swap(b, c);
+      obj << "f " << a + 1 << ' ' << b + 1 << ' ' << c + 1 << '\n';
+    };
+    for (int i = 0; i < sides; ++i) {
+      const int j = (i + 1) % sides;
+      for (int r = 0; r < rings; ++r) {
+        const int a = i * column + r, b = j * column + r;
+        face(a, b, b + 1);
+        face(a, b + 1, a + 1);
+      }
+      face(sides * column, j * column, i * column);
+    }
+  }
+  const ObjectModel can = load_mesh_object(folder.string(), "can", 1.0, 700, 0.8);
+  EXPECT_TRUE(can.visual->bounds().contains(Eigen::Vector3f::Zero())) << "its centre of mass";
+  EXPECT_LT(can.visual->bounds().center().head<2>().norm(), 0.02) << "near its axis";
+  const SceneSpec spec =
+      parse_scene(Parameters(YAML::Load("placement: isolated\nobjects:\n  - { mesh: can, folder: " +
+                                        folder.string() + ", position_m: [0.72, -0.12] }\n"),
+                             "scene 'test.yaml'", "test.yaml"));
+  PhysicsWorld world(PhysicsOptions{});
+  MeshCache meshes;
+  const std::vector<int> ids = build_scene(spec, 0, meshes, world);
+  ASSERT_EQ(ids.size(), 1u) << "the can stayed on the table";
+  EXPECT_NEAR(world.pose(ids[0]).translation().x(), 0.72, 0.02);
   std::filesystem::remove_all(folder);
 }
 

@@ -35,7 +35,11 @@ struct ObjectModel {
   double graspable_width_m = 0.0;
 };
 
-/// Moves `visual` and every hull so that the visual mesh's volume centroid is the origin.
+/// Moves `visual` and every hull so that the object's centre of mass is the origin: the
+/// visual mesh's volume centroid when it lies inside the mesh's bounding box (a closed
+/// surface), else - a scan left open with faces wound both ways, whose signed volume cancels
+/// and whose centroid is meaningless - the volume-weighted centroid of the hulls, the solid
+/// the physics holds.
 void centre_on_mass(TriangleMesh& visual, std::vector<TriangleMesh>& hulls);
 
 }  // namespace antipode::cells
