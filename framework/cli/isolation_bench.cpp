@@ -52,6 +52,7 @@ void check_options(const IsolationBenchOptions& o) {
 std::vector<BenchTask> plan(const IsolationBenchOptions& o, const std::vector<BenchObject>& objects,
                             const std::vector<const BenchVariant*>& variants) {
   std::vector<std::string> names;
+  names.reserve(objects.size());
   for (const auto& object : objects) names.push_back(object.name);
   for (const auto& name : o.held_out)
     if (std::find(names.begin(), names.end(), name) == names.end())
@@ -124,6 +125,7 @@ int bench_isolation_command(const IsolationBenchOptions& o) {
   settings.overrides = o.set;
 
   std::vector<std::string> variant_names;
+  variant_names.reserve(variants.size());
   for (const BenchVariant* v : variants) variant_names.push_back(v->name);
   std::cout << "isolation bench: " << objects.size() << " objects, " << o.poses << " poses, "
             << tasks.size() / variants.size() << " attempts for each of " << variant_names.size()

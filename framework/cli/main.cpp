@@ -29,17 +29,20 @@ std::string unknown_subcommand(const CLI::App& app, int argc, char** argv) {
   };
   const auto joined = [](const std::vector<std::string>& names) {
     std::string list;
-    for (const auto& name : names) list += (list.empty() ? "" : ", ") + name;
+    for (const auto& name : names) list.append(list.empty() ? "" : ", ").append(name);
     return list;
   };
   for (int i = 1; i < argc; ++i) {
     const std::string word = argv[i];
     const std::vector<std::string> names = names_of(parent);
     if (word.empty() || word[0] == '-' || names.empty()) return "";
-    const char* kind = parent == &app ? "command" : "subcommand";
-    if (std::find(names.begin(), names.end(), word) == names.end())
-      return path + ": no " + kind + " '" + word + "'" + antipode::did_you_mean(word, names) +
-             "; " + kind + "s: " + joined(names);
+    const std::string kind = parent == &app ? "command" : "subcommand";
+    if (std::find(names.begin(), names.end(), word) == names.end()) {
+      std::string message = path;
+      message.append(": no ").append(kind).append(" '").append(word).append("'");
+      message.append(antipode::did_you_mean(word, names)).append("; ").append(kind);
+      return message.append("s: ").append(joined(names));
+    }
     parent = parent->get_subcommand(word);
     path += " " + word;
   }

@@ -38,8 +38,17 @@ std::string component_suggestion(const std::string& text, const std::string& key
   if (document.IsMap() && document["components"] && document["components"].IsMap())
     for (const auto& component : document["components"])
       if (component.second.IsMap() && component.second[key])
-        names += (names.empty() ? "" : " or ") + component.first.as<std::string>() + "." + key;
+        names.append(names.empty() ? "" : " or ")
+            .append(component.first.as<std::string>())
+            .append(".")
+            .append(key);
   return names.empty() ? "" : " (did you mean " + names + "?)";
+}
+
+[[noreturn]] void throw_unread_entry(const std::string& tree_path, const std::string& key,
+                                     const std::string& value, const std::string& suggestion) {
+  throw Error("--set " + key + "=" + value + ": " + tree_path + " never reads {" + key + "}" +
+              suggestion + "; a component's parameter is set as COMPONENT.PARAMETER");
 }
 
 }  // namespace
@@ -51,9 +60,7 @@ void check_entries_are_read(const std::string& tree_path, const std::vector<std:
   for (const auto& [key, value] : parse_overrides(set)) {
     if (key.find('.') != std::string::npos || text.find("{" + key + "}") != std::string::npos)
       continue;
-    throw Error("--set " + key + "=" + value + ": " + tree_path + " never reads {" + key + "}" +
-                component_suggestion(text, key) +
-                "; a component's parameter is set as COMPONENT.PARAMETER");
+    throw_unread_entry(tree_path, key, value, component_suggestion(text, key));
   }
 }
 

@@ -11,7 +11,7 @@ namespace {
 // and its "centroid" lands anywhere (40 cm away for a 7 cm can, which then falls off the table).
 Eigen::Vector3d mass_centre(const TriangleMesh& visual, const std::vector<TriangleMesh>& hulls) {
   const Eigen::AlignedBox3d box = visual.bounds().cast<double>();
-  const Eigen::Vector3d centroid = visual.volume_centroid();
+  Eigen::Vector3d centroid = visual.volume_centroid();
   if (centroid.allFinite() && box.contains(centroid)) return centroid;
   double weight = 0.0;
   Eigen::Vector3d sum = Eigen::Vector3d::Zero();

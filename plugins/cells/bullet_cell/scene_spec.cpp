@@ -35,7 +35,7 @@ double positive(const Parameters& p, const std::string& key, double fallback) {
 // A 2-vector of sizes, each in (0, max_m].
 Eigen::Vector2d sizes_at(const Parameters& p, const std::string& key,
                          const Eigen::Vector2d& fallback, double max_m) {
-  const Eigen::Vector2d value = vector_at(p, key, 2, fallback);
+  Eigen::Vector2d value = vector_at(p, key, 2, fallback);
   if (!(value.minCoeff() > 0.0 && value.maxCoeff() <= max_m))
     p.fail(key, "'" + key + "' must be two sizes in (0, " + std::to_string(int(max_m)) + "] m");
   return value;
