@@ -19,12 +19,7 @@ namespace {
 using Json = nlohmann::ordered_json;
 using Filter = std::function<bool(const Json&)>;
 
-double median(std::vector<double> values) {
-  if (values.empty()) return 0.0;
-  std::sort(values.begin(), values.end());
-  const std::size_t n = values.size();
-  return n % 2 ? values[n / 2] : (values[n / 2 - 1] + values[n / 2]) / 2;
-}
+double median(std::vector<double> values) { return percentile(std::move(values), 0.5); }
 
 bool succeeded(const Json& a) { return a.at("outcome") == "success"; }
 
@@ -140,9 +135,11 @@ void row(std::ostream& out, const std::string& label, const std::vector<std::str
 
 double percentile(std::vector<double> v, double p) {
   if (v.empty()) return 0.0;
-  const auto k = static_cast<std::size_t>(std::lround(p * double(v.size() - 1)));
-  std::nth_element(v.begin(), v.begin() + static_cast<std::ptrdiff_t>(k), v.end());
-  return v[k];
+  std::sort(v.begin(), v.end());
+  const double rank = std::clamp(p, 0.0, 1.0) * double(v.size() - 1);
+  const auto below = static_cast<std::size_t>(std::floor(rank));
+  const std::size_t above = std::min(below + 1, v.size() - 1);
+  return v[below] + (rank - double(below)) * (v[above] - v[below]);
 }
 
 std::pair<double, double> wilson_interval(int successes, int trials) {

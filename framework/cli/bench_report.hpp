@@ -10,7 +10,8 @@
 
 namespace antipode::cli {
 
-/// The value at fraction `p` (0..1) of `values` sorted, the nearest rank; 0 for none.
+/// The value at fraction `p` (0..1) of `values` sorted, interpolated linearly between the two
+/// nearest ranks (so the median of an even count is the mean of the middle two); 0 for none.
 double percentile(std::vector<double> values, double p);
 
 /// The Wilson score interval (95%) of `successes` in `trials`: {lower, upper}, {0, 1} for

@@ -336,7 +336,8 @@ Json between_runs_intervals(const Json& runs) {
 }
 
 Json summarise_clutter(const Json& runs) {
-  int attempts = 0, successes = 0, objects = 0, lost = 0, cycles = 0, no_grasp = 0, errors = 0;
+  int attempts = 0, successes = 0, objects = 0, removed = 0, lost = 0, cycles = 0, no_grasp = 0,
+      errors = 0;
   int left = 0, left_graspable = 0;
   Json graspable_width = {kMinGraspableWidthM, kMaxGraspableWidthM};
   bool truth = true;  // every run says what was left
@@ -349,7 +350,10 @@ Json summarise_clutter(const Json& runs) {
     }
     attempts += run.at("attempts").get<int>();
     successes += run.at("successes").get<int>();
-    objects += run.at("objects").get<int>();
+    if (run.at("objects").get<int>() >= 0) {  // -1: a cell that cannot count its objects
+      objects += run.at("objects").get<int>();
+      removed += run.at("removed").get<int>();
+    }
     lost += std::max(0, run.at("lost").get<int>());
     truth = truth && run.contains("left_graspable");
     if (truth) {
@@ -376,10 +380,10 @@ Json summarise_clutter(const Json& runs) {
                   {"attempts", attempts},
                   {"successes", successes},
                   {"objects", objects},
-                  {"removed", successes},
+                  {"removed", removed},
                   {"lost", lost},
                   {"success_rate", rate(successes, attempts)},
-                  {"removed_rate", rate(successes, objects)},
+                  {"removed_rate", rate(removed, objects)},
                   {"cycles", cycles},
                   {"no_grasp", no_grasp},
                   {"reasons", reasons},
@@ -396,7 +400,7 @@ Json summarise_clutter(const Json& runs) {
   if (truth && errors < int(runs.size())) {
     summary["left"] = left;
     summary["left_graspable"] = left_graspable;
-    summary["removed_of_graspable_rate"] = rate(successes, successes + left_graspable);
+    summary["removed_of_graspable_rate"] = rate(removed, removed + left_graspable);
     summary["graspable_width_m"] = graspable_width;
   }
   return summary;

@@ -20,7 +20,7 @@ struct ClutterProtocol {
   std::string scene;         ///< the cell's scene ("" = the tree's)
   int objects_per_run;       ///< unless --objects-per-run says otherwise
   std::string success_name;  ///< what the protocol calls successes / attempts
-  std::string removed_name;  ///< ... and removed / placed
+  std::string removed_name;  ///< ... and removed / the objects in the cell at the start
   std::vector<PublishedClutterResult> published;
 };
 

@@ -44,8 +44,7 @@ std::string command_text(const Json& r, const std::string& name) {
          ".json\n```\n\n";
 }
 
-std::string headline(const Json& r) {
-  const Json& s = r.at("summary");
+std::string headline(const Json& r, const Json& s) {
   const ClutterProtocol& protocol = protocol_of(r);
   const auto pct = [](double v) {
     char text[16];
@@ -58,7 +57,7 @@ std::string headline(const Json& r) {
   for (const auto& p : protocol.published)
     rows.push_back({p.who, pct(p.success_pct), pct(p.removed_pct)});
   return markdown_table({"", protocol.success_name + " (successes / attempts)",
-                         protocol.removed_name + " (removed / placed)"},
+                         protocol.removed_name + " (removed / objects at the start)"},
                         rows);
 }
 
@@ -192,7 +191,9 @@ std::string per_run(const Json& r, const PlotPlace& plots, const std::string& na
 }  // namespace
 
 ReportSection clutter_section(const Json& report, const std::string& name, const PlotPlace& plots) {
-  const Json& s = report.at("summary");
+  // Summarised again from the run records, as the bench does: a report an older antipode
+  // wrote is reported with today's definitions (the medians of an even count, for one).
+  const Json s = summarise_clutter(report.at("run_records"));
   ReportSection section;
   const ClutterProtocol& protocol = protocol_of(report);
   section.title = (protocol.name == "paper"      ? std::string("Dense clutter: ")
@@ -205,8 +206,8 @@ ReportSection clutter_section(const Json& report, const std::string& name, const
     section.title += ", " + classifier;
   if (report.at("tree") != protocol.tree || report.at("noise") != "tree")
     section.title += ", " + setting_words(report, "", "", protocol.tree, "");
-  section.markdown = settings_text(report) + command_text(report, name) + headline(report) + "\n" +
-                     between_runs(report) + what_was_left(s) + failures(s) +
+  section.markdown = settings_text(report) + command_text(report, name) + headline(report, s) +
+                     "\n" + between_runs(report) + what_was_left(s) + failures(s) +
                      per_run(report, plots, name);
   return section;
 }

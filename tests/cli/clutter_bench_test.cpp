@@ -226,6 +226,28 @@ TEST_F(ClutterBenchTest, ReportResamplesWholeRunsForItsBetweenRunsIntervals) {
   EXPECT_EQ(markdown.find("Between runs"), std::string::npos) << markdown;
 }
 
+// The report summarises the run records as the bench does: the median of an even number of
+// runs is the mean of the middle two, and a run on a cell that cannot count its objects
+// (objects -1) adds nothing to the removal figure.
+TEST_F(ClutterBenchTest, ReportMediansAndRemovalFollowTheRunRecords) {
+  auto r = report("--runs 2 --objects-per-run 2 --seed 3", "runs.json");
+  ASSERT_EQ(r["run_records"].size(), 2u) << r.dump();
+  r["run_records"][0]["wall_s"] = 10.0;
+  r["run_records"][1]["wall_s"] = 21.0;
+  r["run_records"][0]["objects"] = -1;
+  const int removed = r["run_records"][1]["removed"], objects = r["run_records"][1]["objects"];
+  std::ofstream(file("crafted.json")) << r.dump();
+  const CommandResult made =
+      antipode("report " + file("crafted.json") + " --out " + file("crafted.md"));
+  ASSERT_EQ(made.exit_code, 0) << made.out;
+  std::ifstream in(file("crafted.md"));
+  const std::string markdown((std::istreambuf_iterator<char>(in)), {});
+  EXPECT_NE(markdown.find("median run 15.5 s"), std::string::npos) << markdown;
+  EXPECT_NE(markdown.find("(" + std::to_string(removed) + "/" + std::to_string(objects) + ") |"),
+            std::string::npos)
+      << markdown;
+}
+
 TEST_F(ClutterBenchTest, MergeRefusesShardsThatAreNotOneWholeBench) {
   const std::string args = "--runs 2 --objects-per-run 1";
   report(args + " --seed 7 --shard 1/2", "1.json");
