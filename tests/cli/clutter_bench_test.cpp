@@ -21,6 +21,16 @@ using antipode::testing::without_seconds;
 class ClutterBenchTest : public antipode::testing::BenchCommandTest {
  protected:
   ClutterBenchTest() : BenchCommandTest("clutter") {}
+
+  // The markdown `antipode report` writes for the bench report `r` (one crafted by a test).
+  std::string report_markdown(const nlohmann::json& r) const {
+    std::ofstream(file("crafted.json")) << r.dump();
+    const CommandResult made =
+        antipode("report " + file("crafted.json") + " --out " + file("crafted.md"));
+    EXPECT_EQ(made.exit_code, 0) << made.out;
+    std::ifstream in(file("crafted.md"));
+    return std::string((std::istreambuf_iterator<char>(in)), {});
+  }
 };
 
 // Two runs of four objects: every run removes at least one object, and the report has the
@@ -198,12 +208,7 @@ TEST_F(ClutterBenchTest, ReportResamplesWholeRunsForItsBetweenRunsIntervals) {
     r["run_records"][0]["successes"] = first_successes;
     r["run_records"][1]["attempts"] = 10;
     r["run_records"][1]["successes"] = second_successes;
-    std::ofstream(file("crafted.json")) << r.dump();
-    const CommandResult made =
-        antipode("report " + file("crafted.json") + " --out " + file("crafted.md"));
-    EXPECT_EQ(made.exit_code, 0) << made.out;
-    std::ifstream in(file("crafted.md"));
-    const std::string markdown((std::istreambuf_iterator<char>(in)), {});
+    const std::string markdown = report_markdown(r);
     const std::size_t at = markdown.find("Between runs (the 2 runs resampled whole");
     EXPECT_NE(at, std::string::npos) << markdown;
     const std::size_t end = markdown.find(" for grasp success", at);
@@ -236,12 +241,7 @@ TEST_F(ClutterBenchTest, ReportMediansAndRemovalFollowTheRunRecords) {
   r["run_records"][1]["wall_s"] = 21.0;
   r["run_records"][0]["objects"] = -1;
   const int removed = r["run_records"][1]["removed"], objects = r["run_records"][1]["objects"];
-  std::ofstream(file("crafted.json")) << r.dump();
-  const CommandResult made =
-      antipode("report " + file("crafted.json") + " --out " + file("crafted.md"));
-  ASSERT_EQ(made.exit_code, 0) << made.out;
-  std::ifstream in(file("crafted.md"));
-  const std::string markdown((std::istreambuf_iterator<char>(in)), {});
+  const std::string markdown = report_markdown(r);
   EXPECT_NE(markdown.find("median run 15.5 s"), std::string::npos) << markdown;
   EXPECT_NE(markdown.find("(" + std::to_string(removed) + "/" + std::to_string(objects) + ") |"),
             std::string::npos)
