@@ -7,6 +7,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "antipode/core/atomic_file.hpp"
 #include "antipode/core/error.hpp"
 #include "bench_report.hpp"
 #include "clutter_bench.hpp"
@@ -112,6 +113,7 @@ Json joined_records(const std::vector<Json>& shards, const std::vector<std::stri
 
 int bench_merge_command(const BenchMergeOptions& o) {
   if (o.reports.empty()) throw Error("bench merge: give the shards' reports");
+  if (!o.report_path.empty()) check_output_path(o.report_path);
   std::vector<Json> shards;
   for (const std::string& path : o.reports) shards.push_back(read_shard(path));
   for (std::size_t i = 1; i < shards.size(); ++i)

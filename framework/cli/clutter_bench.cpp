@@ -16,6 +16,7 @@
 #include <thread>
 
 #include "antipode/bt/loader.hpp"
+#include "antipode/core/atomic_file.hpp"
 #include "antipode/core/error.hpp"
 #include "antipode/interfaces/cell.hpp"
 #include "antipode/interfaces/clearing_run.hpp"
@@ -58,6 +59,7 @@ ClutterBenchOptions with_protocol(ClutterBenchOptions o) {
 }
 
 void check_options(const ClutterBenchOptions& o) {
+  if (!o.report_path.empty()) check_output_path(o.report_path);  // before minutes of runs
   if (o.runs < 1 || o.runs > 100000) throw Error("--runs must be in 1..100000");
   if (o.objects_per_run < 1 || o.objects_per_run > 100)
     throw Error("--objects-per-run must be in 1..100");

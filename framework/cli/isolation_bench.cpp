@@ -8,6 +8,7 @@
 #include <sstream>
 #include <thread>
 
+#include "antipode/core/atomic_file.hpp"
 #include "antipode/core/error.hpp"
 #include "bench_processes.hpp"
 #include "bench_report.hpp"
@@ -38,6 +39,7 @@ std::vector<const BenchVariant*> chosen_variants(const std::vector<std::string>&
 }
 
 void check_options(const IsolationBenchOptions& o) {
+  if (!o.report_path.empty()) check_output_path(o.report_path);  // before minutes of attempts
   if (o.poses < 1 || o.poses > 360) throw Error("--poses must be in 1..360");
   if (o.attempts < 0) throw Error("--attempts must be 0 (every object in every pose) or more");
   if (o.first < 0) throw Error("--first must be 0 or more");

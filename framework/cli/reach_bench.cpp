@@ -11,6 +11,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "antipode/core/atomic_file.hpp"
 #include "antipode/core/error.hpp"
 #include "antipode/core/random.hpp"
 #include "antipode/robot/inverse_kinematics.hpp"
@@ -74,6 +75,7 @@ nlohmann::ordered_json to_json(const SolverFigures& f) {
 }
 
 void check(const ReachBenchOptions& o) {
+  if (!o.report_path.empty()) check_output_path(o.report_path);
   if (o.ik_poses < 1) throw Error("bench reach: --ik-poses must be at least 1");
   if (!(o.timeout_ms > 0.0)) throw Error("bench reach: --timeout-ms must be positive");
   if (!(o.tolerance > 0.0 && o.tolerance < 1.0))

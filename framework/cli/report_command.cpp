@@ -76,6 +76,7 @@ std::string introduction(const std::vector<std::string>& reports) {
 int report_command(const ReportOptions& o) {
   if (o.reports.empty()) throw Error("report: give the bench reports to report on");
   if (o.out_path.empty()) throw Error("report: --out names no file");
+  check_output_path(o.out_path);
   const fs::path out = fs::absolute(o.out_path);
   const fs::path plots_dir =
       o.plots_dir.empty() ? out.parent_path() / "images" : fs::absolute(o.plots_dir);

@@ -3,6 +3,7 @@
 #include <iostream>
 
 #include "antipode/bt/loader.hpp"
+#include "antipode/core/atomic_file.hpp"
 #include "commands.hpp"
 #include "exit_codes.hpp"
 #include "progress_bar.hpp"
@@ -29,12 +30,16 @@ int run_tree(const std::string& tree_path, const std::vector<std::string>& entri
 }  // namespace
 
 int train_command(const TrainOptions& options) {
+  // Before the half hour of training, not after it.
+  for (const std::string* path : {&options.model_path, &options.dataset_path})
+    if (!path->empty()) check_output_path(*path);
   return run_tree(options.tree_path,
                   {"model_file=" + options.model_path, "dataset_file=" + options.dataset_path},
                   options.settings);
 }
 
 int eval_classifier_command(const EvalOptions& options) {
+  if (!options.report_path.empty()) check_output_path(options.report_path);
   return run_tree(options.tree_path,
                   {"model_file=" + options.model_path, "report_file=" + options.report_path},
                   options.settings);

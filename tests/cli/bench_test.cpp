@@ -103,6 +103,7 @@ TEST_F(BenchTest, BadOptionsAreOneLineErrors) {
   expect_error("--held-out box_z", "no object 'box_z'");
   expect_error("--tree trees/none.yaml", "no tree file");
   expect_error("--tree trees/detect.yaml", "has no component 'cell'");
+  expect_error("--report /no/such/folder/r.json", "directory '/no/such/folder' does not exist");
   expect_error("--noise -1", "--noise: Value -1 not in range");
 }
 

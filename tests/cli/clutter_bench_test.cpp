@@ -410,6 +410,7 @@ TEST_F(ClutterBenchTest, BadOptionsAreOneLineErrors) {
   expect_error("--objects-per-run 0", "--objects-per-run: Value 0 not in range 1 to 100");
   expect_error("--noise -1", "--noise: Value -1 not in range");
   expect_error("--tree trees/detect.yaml", "has no component 'cell'");
+  expect_error("--report /no/such/folder/r.json", "directory '/no/such/folder' does not exist");
   expect_error("--jobs 0", "--jobs must be in 1..64");
   expect_error("--objects /no/such/folder", "neither 'procedural' nor a folder");
   expect_error("--tree trees/none.yaml", "no tree file");
