@@ -320,20 +320,19 @@ std::pair<double, double> summary_graspable_width_m(const Json& summary) {
 
 Json between_runs_intervals(const Json& runs) {
   std::vector<RunCount> attempts, objects;
-  bool counted = true;  // every run counted its objects
   for (const Json& run : runs) {
     if (run.contains("error")) continue;  // counted apart, as in the summary
     attempts.push_back({run.at("successes").get<int>(), run.at("attempts").get<int>()});
-    objects.push_back({run.at("removed").get<int>(), run.at("objects").get<int>()});
-    counted = counted && objects.back().trials >= 0;
+    // As in the summary, a run whose cell cannot count its objects (-1) adds nothing to removal.
+    if (run.at("objects").get<int>() >= 0)
+      objects.push_back({run.at("removed").get<int>(), run.at("objects").get<int>()});
   }
   Json out = {{"runs", attempts.size()}};
-  if (attempts.size() < 2) return out;
   const auto as_json = [](std::pair<double, double> bounds) {
     return Json{bounds.first, bounds.second};
   };
-  out["success"] = as_json(run_bootstrap_interval(attempts));
-  if (counted) out["removed"] = as_json(run_bootstrap_interval(objects));
+  if (attempts.size() >= 2) out["success"] = as_json(run_bootstrap_interval(attempts));
+  if (objects.size() >= 2) out["removed"] = as_json(run_bootstrap_interval(objects));
   return out;
 }
 

@@ -49,9 +49,9 @@ nlohmann::ordered_json summarise_clutter(const nlohmann::ordered_json& runs);
 
 /// The 95% intervals that resample whole runs (run_bootstrap.hpp) over the run records that
 /// ended without an error: {"runs": how many, "success": [lo, hi]} for successes / attempts
-/// and, when every run counted its objects, "removed": [lo, hi] for removed / objects.
-/// Attempts within a run share its scene, so these are the better guide to noise. Only
-/// "runs" for fewer than two runs.
+/// and "removed": [lo, hi] for removed / objects over the runs whose cell counted its objects,
+/// each when at least two runs contribute. Attempts within a run share its scene, so these
+/// are the better guide to noise.
 nlohmann::ordered_json between_runs_intervals(const nlohmann::ordered_json& runs);
 
 /// Prints a clutter report's summary as the bench does after its runs, beside the published

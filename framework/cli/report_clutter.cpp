@@ -61,12 +61,10 @@ std::string headline(const Json& r, const Json& s) {
                         rows);
 }
 
-// The headline's rates again, with intervals that resample whole runs (computed from the run
-// records, so that reports written before the summary carried them have them too). Nothing
-// for fewer than two runs.
-std::string between_runs(const Json& r) {
-  const Json intervals = between_runs_intervals(r.value("run_records", Json::array()));
-  if (!intervals.contains("success")) return "";
+// The headline's rates again, with the intervals that resample whole runs (`s`, the summary
+// of the run records, carries them). Nothing for fewer than two runs.
+std::string between_runs(const Json& r, const Json& s) {
+  if (!s.at("success_rate").contains("ci95_runs")) return "";
   const ClutterProtocol& protocol = protocol_of(r);
   const auto interval = [](const Json& bounds) {
     char text[32];
@@ -74,12 +72,15 @@ std::string between_runs(const Json& r) {
                   100 * bounds.at(1).get<double>());
     return std::string(text);
   };
-  std::string text = "Between runs (the " + intervals.at("runs").dump() +
+  const int runs = s.at("runs").get<int>() - s.at("errors").get<int>();
+  std::string text = "Between runs (the " + std::to_string(runs) +
                      " runs resampled whole, 2,000 bootstrap draws; attempts within a run are "
                      "not independent trials), the 95% intervals are " +
-                     interval(intervals.at("success")) + " for " + protocol.success_name;
-  if (intervals.contains("removed"))
-    text += " and " + interval(intervals.at("removed")) + " for " + protocol.removed_name;
+                     interval(s.at("success_rate").at("ci95_runs")) + " for " +
+                     protocol.success_name;
+  if (s.at("removed_rate").contains("ci95_runs"))
+    text +=
+        " and " + interval(s.at("removed_rate").at("ci95_runs")) + " for " + protocol.removed_name;
   return text + ".\n\n";
 }
 
@@ -207,7 +208,7 @@ ReportSection clutter_section(const Json& report, const std::string& name, const
   if (report.at("tree") != protocol.tree || report.at("noise") != "tree")
     section.title += ", " + setting_words(report, "", "", protocol.tree, "");
   section.markdown = settings_text(report) + command_text(report, name) + headline(report, s) +
-                     "\n" + between_runs(report) + what_was_left(s) + failures(s) +
+                     "\n" + between_runs(report, s) + what_was_left(s) + failures(s) +
                      per_run(report, plots, name);
   return section;
 }
