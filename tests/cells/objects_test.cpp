@@ -206,12 +206,22 @@ TEST(MeshObjects, BadObjFilesAreClearErrors) {
   std::filesystem::remove(path);
 }
 
+// A folder of its own under the temporary directory, removed when the test ends however it
+// ends.
+struct ScratchFolder {
+  explicit ScratchFolder(const std::string& name)
+      : path(std::filesystem::temp_directory_path() / (name + "_" + std::to_string(::getpid()))) {
+    std::filesystem::create_directories(path);
+  }
+  ~ScratchFolder() { std::filesystem::remove_all(path); }
+  std::filesystem::path path;
+};
+
 // A mesh in millimetres (a 60 mm cube written as 60 units) is named as such, not dropped on
 // the table 60 m wide; scaled by 0.001 it loads.
 TEST(MeshObjects, AMeshInMillimetresIsAClearError) {
-  const std::filesystem::path folder =
-      std::filesystem::temp_directory_path() / ("mm_meshes_" + std::to_string(::getpid()));
-  std::filesystem::create_directories(folder);
+  const ScratchFolder scratch("mm_meshes");
+  const std::filesystem::path& folder = scratch.path;
   std::ofstream obj(folder / "cube.obj");
   for (int corner = 0; corner < 8; ++corner)
     obj << "v " << (corner & 1) * 60 << ' ' << (corner >> 1 & 1) * 60 << ' ' << (corner >> 2) * 60
@@ -230,16 +240,14 @@ TEST(MeshObjects, AMeshInMillimetresIsAClearError) {
   }
   const ObjectModel cube = load_mesh_object(folder.string(), "cube", 0.001, 700, 0.8);
   EXPECT_NEAR(cube.graspable_width_m, 0.06, 1e-6);
-  std::filesystem::remove_all(folder);
 }
 
 // A scan left open at the top with faces wound both ways - as scans often come - has a
 // signed volume near zero: its centre of mass comes from its hulls, inside the object, and it
 // stands on the table like any other.
 TEST(MeshObjects, AnOpenScanWoundBothWaysStandsOnTheTable) {
-  const std::filesystem::path folder =
-      std::filesystem::temp_directory_path() / ("open_scan_" + std::to_string(::getpid()));
-  std::filesystem::create_directories(folder);
+  const ScratchFolder scratch("open_scan");
+  const std::filesystem::path& folder = scratch.path;
   {
     // A 6.6 cm can 10 cm tall (48 sides, 4 rings), its bottom closed, its top open, each
     // triangle's winding flipped by a seeded coin: its signed volume is under 1% of its box
@@ -281,7 +289,6 @@ TEST(MeshObjects, AnOpenScanWoundBothWaysStandsOnTheTable) {
   const std::vector<int> ids = build_scene(spec, 0, meshes, world);
   ASSERT_EQ(ids.size(), 1u) << "the can stayed on the table";
   EXPECT_NEAR(world.pose(ids[0]).translation().x(), 0.72, 0.02);
-  std::filesystem::remove_all(folder);
 }
 
 TEST(MeshObjects, LoadsYcbAndBlobsWhenTheDataIsThere) {
