@@ -11,6 +11,7 @@
 #include "commands.hpp"
 #include "exit_codes.hpp"
 #include "isolation_bench.hpp"
+#include "outcome_data.hpp"
 #include "reach_bench.hpp"
 #include "report_command.hpp"
 
@@ -79,6 +80,7 @@ struct Commands {
   antipode::cli::DetectOptions detect;
   antipode::cli::SceneOptions scene;
   antipode::cli::TrainOptions train;
+  antipode::cli::OutcomeDataOptions outcomes;
   antipode::cli::EvalOptions eval;
   antipode::cli::IsolationBenchOptions isolation;
   antipode::cli::ReachBenchOptions reach;
@@ -155,6 +157,22 @@ void add_train(CLI::App& app, Commands& commands) {
   train->add_option("--dataset", options.dataset_path, "Also keep the examples in this file");
   train->add_option("--tree", options.tree_path, "Training tree")->capture_default_str();
   add_tree_run_options(*train, options.settings);
+}
+
+void add_outcomes(CLI::App& app, Commands& commands) {
+  auto& o = commands.outcomes;
+  CLI::App* outcomes = app.add_subcommand(
+      "outcomes",
+      "Try grasps in simulated training scenes and keep what held (trees/outcomes.yaml)");
+  outcomes->add_option("--out", o.out_dir, "Folder of the trial files (one pair per scene)")
+      ->required();
+  outcomes->add_option("--scenes", o.scenes, "Scenes to run")->capture_default_str();
+  outcomes->add_option("--first-seed", o.first_seed, "Seed of the first scene")
+      ->capture_default_str();
+  outcomes->add_option("--shard", o.shard, "i/n: run every n-th scene from the i-th");
+  outcomes->add_option("--jobs", o.jobs, "Processes")->capture_default_str();
+  outcomes->add_option("--tree", o.tree_path, "Outcome tree")->capture_default_str();
+  outcomes->add_option("--set", o.set, "key=value or component.key=value (repeatable)");
 }
 
 void add_eval(CLI::App& app, Commands& commands) {
@@ -286,6 +304,7 @@ int dispatch(const CLI::App& app, const Commands& commands) {
   if (app.got_subcommand("detect")) return antipode::cli::detect_command(commands.detect);
   if (app.got_subcommand("scene")) return antipode::cli::scene_command(commands.scene);
   if (app.got_subcommand("train")) return antipode::cli::train_command(commands.train);
+  if (app.got_subcommand("outcomes")) return antipode::cli::outcome_data_command(commands.outcomes);
   if (app.got_subcommand("eval-classifier")) {
     return antipode::cli::eval_classifier_command(commands.eval);
   }
@@ -328,6 +347,7 @@ int main(int argc, char** argv) {
   add_scene(app, commands);
   add_train(app, commands);
   add_eval(app, commands);
+  add_outcomes(app, commands);
   add_bench(app, commands);
   add_report(app, commands.report);
   CLI::App* validate = app.add_subcommand(

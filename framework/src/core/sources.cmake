@@ -3,6 +3,7 @@ list(APPEND ANTIPODE_SOURCES
   ${CMAKE_CURRENT_LIST_DIR}/input_file.cpp
   ${CMAKE_CURRENT_LIST_DIR}/yaml_limits.cpp
   ${CMAKE_CURRENT_LIST_DIR}/binary_file.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/cell.cpp
   ${CMAKE_CURRENT_LIST_DIR}/clearing_run.cpp
   ${CMAKE_CURRENT_LIST_DIR}/cloud.cpp
   ${CMAKE_CURRENT_LIST_DIR}/error.cpp

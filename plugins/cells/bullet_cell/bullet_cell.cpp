@@ -10,6 +10,15 @@
 namespace antipode::cells {
 namespace {
 
+// What BulletCell::save() keeps: the world and the counters that seed captures.
+struct BulletCellState final : CellState {
+  const void* owner = nullptr;
+  PhysicsSnapshot world;
+  std::uint64_t seed = 0;
+  int captures = 0;
+  int attempts = 0;
+};
+
 bool is_rotation(const Eigen::Matrix3d& r) {
   return r.allFinite() && (r.transpose() * r - Eigen::Matrix3d::Identity()).norm() < 1e-3 &&
          r.determinant() > 0.0;
@@ -273,6 +282,26 @@ void BulletCell::reset(std::uint64_t seed) {
   attempts_ = 0;
   world_ = std::make_unique<PhysicsWorld>(options_.physics);
   build_scene(scene_, seed, meshes_, *world_);
+}
+
+std::shared_ptr<const CellState> BulletCell::save() const {
+  auto state = std::make_shared<BulletCellState>();
+  state->owner = this;
+  state->world = world_->snapshot();
+  state->seed = seed_;
+  state->captures = captures_;
+  state->attempts = attempts_;
+  return state;
+}
+
+void BulletCell::restore(const CellState& state) {
+  const auto* saved = dynamic_cast<const BulletCellState*>(&state);
+  if (saved == nullptr || saved->owner != this)
+    throw Error("bullet_cell: the state to restore was saved by another cell");
+  world_->restore(saved->world);
+  seed_ = saved->seed;
+  captures_ = saved->captures;
+  attempts_ = saved->attempts;
 }
 
 }  // namespace antipode::cells

@@ -39,6 +39,11 @@ class BulletCell final : public Cell {
   std::vector<ObjectTruth> object_truth() const override;
   GraspAttempt execute(const GraspRequest& request) override;
   void reset(std::uint64_t seed) override;
+  /// The objects' recipes, poses and motion, the fixtures and the clock (PhysicsSnapshot).
+  std::shared_ptr<const CellState> save() const override;
+  /// Rebuilds the world from a state this cell saved (a fresh Bullet world: every restore of
+  /// one state steps identically); the captures and attempts counted go back too.
+  void restore(const CellState& state) override;
 
   /// Ground truth, for tests and tools.
   const PhysicsWorld& world() const { return *world_; }

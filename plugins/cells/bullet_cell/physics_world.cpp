@@ -28,6 +28,10 @@ struct PhysicsWorld::Entry {
   std::unique_ptr<btRigidBody> body;           // null for a registered part
   btCollisionObject* object = nullptr;         // the body, or the registered part
   std::shared_ptr<const TriangleMesh> visual;  // null = not rendered
+  // The recipe restore() rebuilds it from: an object's model, or a fixture box's size.
+  std::shared_ptr<const ObjectModel> model;
+  Eigen::Vector3d half_extents_m = Eigen::Vector3d::Zero();
+  double friction = 0.0;
 };
 
 namespace {
@@ -64,11 +68,15 @@ PhysicsWorld::~PhysicsWorld() {
 
 int PhysicsWorld::insert(std::unique_ptr<Entry> entry) {
   const int id = next_id_++;
+  insert_as(id, std::move(entry));
+  return id;
+}
+
+void PhysicsWorld::insert_as(int id, std::unique_ptr<Entry> entry) {
   entry->object = entry->body.get();
   entry->body->setUserIndex(id);
   engine_->world.addRigidBody(entry->body.get());
   bodies_[id] = std::move(entry);
-  return id;
 }
 
 btMultiBodyDynamicsWorld& PhysicsWorld::dynamics() { return engine_->world; }
@@ -97,6 +105,8 @@ int PhysicsWorld::add_fixture_box(const std::string& name, const Eigen::Isometry
   entry->motion = std::make_unique<btDefaultMotionState>(to_bullet(pose));
   entry->body = make_body(entry->shape, entry->motion.get(), 0.0, friction);
   if (visible) entry->visual = std::make_shared<const TriangleMesh>(box_mesh(half.cast<float>()));
+  entry->half_extents_m = half;
+  entry->friction = friction;
   return insert(std::move(entry));
 }
 
@@ -108,6 +118,7 @@ int PhysicsWorld::add_object(const ObjectModel& model, const Eigen::Isometry3d& 
   entry->motion = std::make_unique<btDefaultMotionState>(to_bullet(pose));
   entry->body = make_body(entry->shape, entry->motion.get(), model.mass_kg, model.friction);
   entry->visual = model.visual;
+  entry->model = std::make_shared<const ObjectModel>(model);
   return insert(std::move(entry));
 }
 
@@ -116,6 +127,70 @@ void PhysicsWorld::remove_body(int id) {
   if (it == bodies_.end() || !it->second->body) return;
   engine_->world.removeRigidBody(it->second->body.get());
   bodies_.erase(it);
+}
+
+void PhysicsWorld::require_no_parts(const char* what) const {
+  for (const auto& [id, entry] : bodies_)
+    if (!entry->body)
+      throw Error(std::string("cannot ") + what + " the world while '" + entry->name +
+                  "' (a registered part) is in it");
+}
+
+PhysicsSnapshot PhysicsWorld::snapshot() const {
+  require_no_parts("save");
+  PhysicsSnapshot saved;
+  saved.next_id = next_id_;
+  saved.steps = steps_;
+  for (const auto& [id, entry] : bodies_) {
+    const btRigidBody& b = *entry->body;
+    PhysicsSnapshot::Body body;
+    body.id = id;
+    body.role = entry->role;
+    body.name = entry->name;
+    body.model = entry->model;
+    body.half_extents_m = entry->half_extents_m;
+    body.friction = entry->friction;
+    body.visual = entry->visual;
+    body.pose = from_bullet(b.getWorldTransform());
+    body.velocity_m_s = from_bullet(b.getLinearVelocity());
+    body.angular_velocity_rad_s = from_bullet(b.getAngularVelocity());
+    body.activation = b.getActivationState();
+    body.deactivation_s = b.getDeactivationTime();
+    saved.bodies.push_back(std::move(body));
+  }
+  return saved;
+}
+
+void PhysicsWorld::restore(const PhysicsSnapshot& saved) {
+  require_no_parts("restore");
+  for (auto& [id, entry] : bodies_) engine_->world.removeRigidBody(entry->body.get());
+  bodies_.clear();
+  engine_ = std::make_unique<Engine>();  // no contact manifold or warm start survives
+  engine_->world.setGravity(btVector3(0, 0, -9.81f));
+  engine_->world.getSolverInfo().m_numIterations = options_.solver_iterations;
+  for (const PhysicsSnapshot::Body& body : saved.bodies) {
+    auto entry = std::make_unique<Entry>();
+    entry->role = body.role;
+    entry->name = body.name;
+    entry->model = body.model;
+    entry->half_extents_m = body.half_extents_m;
+    entry->friction = body.friction;
+    const bool object = body.model != nullptr;
+    entry->shape = object ? make_collision_shape(body.model->collision, options_.margin_m)
+                          : make_box_shape(body.half_extents_m, options_.margin_m);
+    entry->motion = std::make_unique<btDefaultMotionState>(to_bullet(body.pose));
+    entry->body = make_body(entry->shape, entry->motion.get(), object ? body.model->mass_kg : 0.0,
+                            object ? body.model->friction : body.friction);
+    entry->visual = body.visual;
+    entry->body->setLinearVelocity(to_bullet(body.velocity_m_s));
+    entry->body->setAngularVelocity(to_bullet(body.angular_velocity_rad_s));
+    insert_as(body.id, std::move(entry));
+    btRigidBody& b = *bodies_[body.id]->body;
+    b.forceActivationState(body.activation);
+    b.setDeactivationTime(btScalar(body.deactivation_s));
+  }
+  next_id_ = saved.next_id;
+  steps_ = saved.steps;
 }
 
 btRigidBody& PhysicsWorld::body(int id) const {

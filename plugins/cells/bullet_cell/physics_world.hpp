@@ -30,6 +30,28 @@ struct PhysicsOptions {
 
 enum class BodyRole { kFixture, kObject, kGripper };
 
+/// A world saved between attempts: what each body is (its recipe), where it is and how it
+/// moves, and the clock. PhysicsWorld::restore() rebuilds Bullet's world from it.
+struct PhysicsSnapshot {
+  struct Body {
+    int id = -1;
+    BodyRole role = BodyRole::kFixture;
+    std::string name;
+    std::shared_ptr<const ObjectModel> model;  ///< an object's; null for a fixture box
+    Eigen::Vector3d half_extents_m = Eigen::Vector3d::Zero();  ///< a fixture box's
+    double friction = 0.0;                                     ///< a fixture box's
+    std::shared_ptr<const TriangleMesh> visual;                ///< null: not rendered
+    Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
+    Eigen::Vector3d velocity_m_s = Eigen::Vector3d::Zero();
+    Eigen::Vector3d angular_velocity_rad_s = Eigen::Vector3d::Zero();
+    int activation = 1;           ///< Bullet's activation state (active, sleeping, ...)
+    double deactivation_s = 0.0;  ///< how long the body has been slow enough to sleep
+  };
+  std::vector<Body> bodies;
+  int next_id = 0;
+  long steps = 0;
+};
+
 class PhysicsWorld {
  public:
   explicit PhysicsWorld(const PhysicsOptions& options);
@@ -42,6 +64,15 @@ class PhysicsWorld {
                       const Eigen::Vector3d& half_extents_m, double friction, bool visible = true);
   int add_object(const ObjectModel& model, const Eigen::Isometry3d& pose);
   void remove_body(int id);
+
+  /// The world now. Throws antipode::Error while a registered part (the gripper) is in it:
+  /// a snapshot is taken between attempts.
+  PhysicsSnapshot snapshot() const;
+  /// Replaces the world with a fresh Bullet world holding the snapshot's bodies, ids, poses,
+  /// velocities and clock. Bullet's caches (contact manifolds, solver warm starts) start
+  /// empty, so every restore of one snapshot steps identically. Throws antipode::Error while
+  /// a registered part is in the world.
+  void restore(const PhysicsSnapshot& snapshot);
 
   /// The Bullet world itself, for parts that manage their own Bullet objects (the gripper
   /// adds its multibody and constraints here and removes them before it is destroyed).
@@ -93,6 +124,8 @@ class PhysicsWorld {
  private:
   struct Entry;
   int insert(std::unique_ptr<Entry> entry);
+  void insert_as(int id, std::unique_ptr<Entry> entry);
+  void require_no_parts(const char* what) const;
 
   PhysicsOptions options_;
   struct Engine;

@@ -15,6 +15,7 @@ void register_select_grasps(bt::NodeRegistry& registry);
 void register_plan_reach(bt::NodeRegistry& registry);
 void register_read_arm_state(bt::NodeRegistry& registry);
 void register_execute_grasp(bt::NodeRegistry& registry);
+void register_try_grasps(bt::NodeRegistry& registry);
 void register_write_grasps(bt::NodeRegistry& registry);
 void register_read_grasps(bt::NodeRegistry& registry);
 void register_reset_scene(bt::NodeRegistry& registry);

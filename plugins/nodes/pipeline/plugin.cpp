@@ -15,6 +15,8 @@ const antipode::PluginFactory kFactories[] = {
     {"node", "PlanReach", "plans an arm motion to a grasp", nullptr, &register_plan_reach},
     {"node", "ReadArmState", "reads a cell's arm state", nullptr, &register_read_arm_state},
     {"node", "ExecuteGrasp", "executes a grasp in a cell", nullptr, &register_execute_grasp},
+    {"node", "TryGrasps", "tries hands as trials from one saved world", nullptr,
+     &register_try_grasps},
     {"node", "WriteGrasps", "writes hands to JSON", nullptr, &register_write_grasps},
     {"node", "ReadGrasps", "reads hands from JSON", nullptr, &register_read_grasps},
     {"node", "SelectViews", "keeps the points of some views", nullptr, &register_select_views},

@@ -3,6 +3,7 @@
 /// Cell: the robot's world, real or simulated - it captures views and executes grasps.
 
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -25,6 +26,12 @@ struct ObjectTruth {
   /// base frame up): a gripper closing horizontally holds it from above only when this lies
   /// within its aperture. Metres.
   double narrowest_horizontal_m = 0.0;
+};
+
+/// A cell's world as save() found it: opaque to all but the cell that saved it.
+class CellState {
+ public:
+  virtual ~CellState() = default;
 };
 
 /// One caller at a time: a cell is the state of one robot and its world, and none of its
@@ -66,6 +73,15 @@ class Cell : public Component {
 
   /// Restores the cell's initial state for `seed`.
   virtual void reset(std::uint64_t seed) = 0;
+
+  /// The world as it is now (every object's pose and motion, the clock), for restore(); null
+  /// when the cell cannot save it (a real cell, whose default this is). Trials started from
+  /// one saved state are independent: each sees the same world, whatever the ones before did.
+  virtual std::shared_ptr<const CellState> save() const { return nullptr; }
+
+  /// Puts the world back as save() found it. Throws antipode::Error for a state that this
+  /// cell did not save (another cell's, or a cell that cannot restore).
+  virtual void restore(const CellState& state);
 };
 
 }  // namespace antipode

@@ -1,0 +1,184 @@
+#include "outcome_data.hpp"
+
+#include <sys/resource.h>
+
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <thread>
+
+#include "antipode/bt/loader.hpp"
+#include "antipode/core/error.hpp"
+#include "bench_processes.hpp"
+#include "bench_shard.hpp"
+#include "bench_task.hpp"
+#include "commands.hpp"
+#include "exit_codes.hpp"
+
+namespace fs = std::filesystem;
+
+namespace antipode::cli {
+namespace {
+
+using Json = nlohmann::ordered_json;
+
+struct Settings {
+  std::string tree_path;
+  std::string tree_yaml;
+  std::string folder;
+  int threads = 2;
+  std::vector<std::pair<std::string, std::string>> entries;
+};
+
+void check_options(const OutcomeDataOptions& o) {
+  if (o.out_dir.empty()) throw Error("--out: give the folder the trial files go to");
+  if (fs::exists(o.out_dir) && !fs::is_directory(o.out_dir))
+    throw Error("--out: '" + o.out_dir + "' is not a folder");
+  if (o.scenes < 1 || o.scenes > 10000000) throw Error("--scenes must be in 1..10000000");
+  if (o.jobs < 1 || o.jobs > 64) throw Error("--jobs must be in 1..64");
+  if (!fs::is_regular_file(o.tree_path)) throw Error("--tree: no tree file '" + o.tree_path + "'");
+  require_cell_component(o.tree_path, "trees/outcomes.yaml");
+  check_entries_are_read(o.tree_path, o.set);
+}
+
+bt::Tree load_scene_tree(const Session& session, const Settings& settings, std::uint64_t seed) {
+  bt::LoadOptions load;
+  load.registry = &session.registry;
+  load.components = session.host.get();
+  load.seed = seed;
+  load.overrides = {{"seed", std::to_string(seed)}, {"folder", settings.folder}};
+  for (const auto& entry : settings.entries) load.overrides.push_back(entry);
+  return bt::load_tree_string(settings.tree_yaml, settings.tree_path, load);
+}
+
+// The trials a finished scene wrote: how many, and how many held.
+std::pair<int, int> count_trials(const fs::path& records) {
+  std::ifstream in(records);
+  const Json file = Json::parse(in, nullptr, false);
+  if (file.is_discarded() || !file.contains("trials")) return {0, 0};
+  int held = 0;
+  for (const Json& trial : file["trials"]) held += trial.value("held", false) ? 1 : 0;
+  return {int(file["trials"].size()), held};
+}
+
+Json run_scene(const Session& session, const Settings& settings, std::size_t task,
+               std::uint64_t seed) {
+  Json out = {{"task", task}, {"seed", seed}};
+  const auto start = std::chrono::steady_clock::now();
+  try {
+    bt::Tree tree = load_scene_tree(session, settings, seed);
+    tree.set_log_sink([](const bt::Node&, const std::string&) {});
+    const bt::Status status = tree.tick_while_running(std::chrono::milliseconds(0));
+    const fs::path records = fs::path(settings.folder) / outcome_records_name(seed);
+    if (status != bt::Status::kSuccess || !fs::exists(records))
+      throw Error("the tree did not write " + records.string());
+    const auto [trials, held] = count_trials(records);
+    out["trials"] = trials;
+    out["held"] = held;
+  } catch (const Error& error) {
+    out["error"] = error.message();
+  }
+  out["wall_s"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return out;
+}
+
+std::string progress_line(const Json& r) {
+  if (r.contains("error"))
+    return "scene " + std::to_string(r["seed"].get<std::uint64_t>()) +
+           ": error: " + r["error"].get<std::string>() + "\n";
+  char text[160];
+  std::snprintf(text, sizeof(text), "scene %llu: %d of %d trials held (%.1f s)\n",
+                static_cast<unsigned long long>(r["seed"].get<std::uint64_t>()),
+                r["held"].get<int>(), r["trials"].get<int>(), r["wall_s"].get<double>());
+  return text;
+}
+
+// CPU seconds used so far by this process and its finished children.
+double cpu_seconds() {
+  double total = 0.0;
+  for (const int who : {RUSAGE_SELF, RUSAGE_CHILDREN}) {
+    rusage usage{};
+    getrusage(who, &usage);
+    total += double(usage.ru_utime.tv_sec + usage.ru_stime.tv_sec) +
+             1e-6 * double(usage.ru_utime.tv_usec + usage.ru_stime.tv_usec);
+  }
+  return total;
+}
+
+}  // namespace
+
+std::string outcome_records_name(std::uint64_t seed) {
+  char text[40];
+  std::snprintf(text, sizeof(text), "scene-%06llu.json", static_cast<unsigned long long>(seed));
+  return text;
+}
+
+int outcome_data_command(const OutcomeDataOptions& o) {
+  check_options(o);
+  const BenchShard shard = parse_shard(o.shard);
+  fs::create_directories(o.out_dir);
+  Settings settings;
+  settings.tree_path = o.tree_path;
+  settings.folder = fs::absolute(o.out_dir).string();
+  std::ifstream tree_file(o.tree_path);
+  settings.tree_yaml.assign(std::istreambuf_iterator<char>(tree_file), {});
+  const int cores = int(std::max(1u, std::thread::hardware_concurrency()));
+  settings.threads = std::max(1, cores / o.jobs);
+  settings.entries = parse_overrides(o.set);
+
+  // The shard's seeds whose record file is missing: a killed run resumes there.
+  std::vector<std::size_t> tasks;
+  int done = 0;
+  for (const std::size_t i : shard_tasks(std::size_t(o.scenes), shard)) {
+    if (fs::exists(fs::path(settings.folder) / outcome_records_name(o.first_seed + i)))
+      ++done;
+    else
+      tasks.push_back(i);
+  }
+  std::cout << "outcome data: " << tasks.size() << " scenes to run";
+  if (done > 0) std::cout << " (" << done << " done before)";
+  if (!shard.whole()) std::cout << "; " << shard.str();
+  std::cout << ", " << o.jobs << " process(es), into " << o.out_dir << "\n";
+  if (o.jobs > 1 && !tasks.empty()) {
+    try {
+      check_in_child([&](const Session& s) { load_scene_tree(s, settings, o.first_seed); });
+    } catch (const BenchStopped& stopped) {
+      return stopped.code;
+    }
+  }
+  const double cpu_before = cpu_seconds();
+  const auto start = std::chrono::steady_clock::now();
+  const std::vector<Json> records = run_bench_tasks(
+      tasks, o.jobs,
+      [&](const Session& s, std::size_t i) { return run_scene(s, settings, i, o.first_seed + i); },
+      progress_line);
+  const double wall_s =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  const double cpu_s = cpu_seconds() - cpu_before;
+  int trials = 0, held = 0, errors = 0;
+  for (const Json& r : records) {
+    if (r.contains("error")) {
+      ++errors;
+      continue;
+    }
+    trials += r["trials"].get<int>();
+    held += r["held"].get<int>();
+  }
+  char text[240];
+  std::snprintf(text, sizeof(text),
+                "%d trials in %zu scenes, %d held (%.1f%%); %.0f s wall, %.0f CPU-s: %.2f "
+                "trials per CPU-second\n",
+                trials, records.size() - std::size_t(errors), held,
+                trials > 0 ? 100.0 * held / trials : 0.0, wall_s, cpu_s,
+                cpu_s > 0 ? trials / cpu_s : 0.0);
+  std::cout << text;
+  if (errors > 0) {
+    std::cout << errors << " scene(s) ended in an error (above); run again to retry them\n";
+    return kExitTreeFailed;
+  }
+  return kExitSuccess;
+}
+
+}  // namespace antipode::cli

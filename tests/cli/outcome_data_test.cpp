@@ -1,0 +1,98 @@
+// `antipode outcomes`: grasp trials in the simulated cell, one pair of files per scene.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <map>
+#include <set>
+
+#include "support/bench_command.hpp"
+
+namespace {
+
+namespace fs = std::filesystem;
+using antipode::testing::CommandResult;
+
+class OutcomeDataTest : public antipode::testing::BenchCommandTest {
+ protected:
+  OutcomeDataTest() : BenchCommandTest("outcomes") {}
+
+  // Runs `antipode outcomes` into DIR/folder on two small scenes.
+  CommandResult outcomes(const std::string& folder, const std::string& arguments) const {
+    return antipode("outcomes --out " + file(folder) +
+                    " --scenes 2 --first-seed 100000 --set cell.object_count=3 " + arguments);
+  }
+
+  // Every file of DIR/folder by name, with its bytes.
+  std::map<std::string, std::string> files(const std::string& folder) const {
+    std::map<std::string, std::string> out;
+    for (const auto& entry : fs::directory_iterator(file(folder))) {
+      std::ifstream in(entry.path(), std::ios::binary);
+      out[entry.path().filename().string()] = std::string(std::istreambuf_iterator<char>(in), {});
+    }
+    return out;
+  }
+};
+
+// The same seeds give byte-identical trial files from one process, two processes, and a run
+// killed after one scene and resumed; the records carry both label sources.
+TEST_F(OutcomeDataTest, SameTrialsForAnyProcessCountAndAfterAResume) {
+  const CommandResult one = outcomes("one", "--jobs 1");
+  ASSERT_EQ(one.exit_code, 0) << one.out;
+  EXPECT_NE(one.out.find("trials per CPU-second"), std::string::npos) << one.out;
+  const CommandResult two = outcomes("two", "--jobs 2");
+  ASSERT_EQ(two.exit_code, 0) << two.out;
+  const auto first = files("one");
+  ASSERT_EQ(first.size(), 4u) << "a record file and a data file per scene";
+  EXPECT_EQ(files("two"), first);
+
+  // A run that stopped after the first scene (its second record file missing) resumes there.
+  fs::create_directories(file("resumed"));
+  fs::copy(file("one/scene-100000.json"), file("resumed/scene-100000.json"));
+  fs::copy(file("one/scene-100000.data"), file("resumed/scene-100000.data"));
+  const CommandResult resumed = outcomes("resumed", "--jobs 1");
+  ASSERT_EQ(resumed.exit_code, 0) << resumed.out;
+  EXPECT_NE(resumed.out.find("1 scenes to run (1 done before)"), std::string::npos) << resumed.out;
+  EXPECT_EQ(files("resumed"), first);
+
+  std::ifstream in(file("one/scene-100001.json"));
+  const nlohmann::json records = nlohmann::json::parse(in);
+  ASSERT_FALSE(records["trials"].empty());
+  std::set<std::string> scenes;
+  for (const auto& trial : records["trials"]) {
+    scenes.insert(trial["scene"].get<std::string>());
+    EXPECT_TRUE(trial["antipodal"] == "positive" || trial["antipodal"] == "negative" ||
+                trial["antipodal"] == "indeterminate")
+        << trial;
+    EXPECT_EQ(trial["held"].get<bool>(), trial["outcome"] == "success") << trial;
+  }
+  EXPECT_EQ(scenes.size(), 3u) << "trials from both views and from each view alone";
+}
+
+// Shards split the seeds: two shards together write what the whole run writes.
+TEST_F(OutcomeDataTest, ShardsTogetherWriteTheWholeRun) {
+  ASSERT_EQ(outcomes("whole", "").exit_code, 0);
+  const CommandResult a = outcomes("sharded", "--shard 1/2");
+  ASSERT_EQ(a.exit_code, 0) << a.out;
+  EXPECT_EQ(files("sharded").size(), 2u);
+  ASSERT_EQ(outcomes("sharded", "--shard 2/2").exit_code, 0);
+  EXPECT_EQ(files("sharded"), files("whole"));
+}
+
+TEST_F(OutcomeDataTest, BadOptionsAreOneClearError) {
+  const auto expect = [&](const std::string& arguments, const std::string& words) {
+    const CommandResult r = antipode("outcomes " + arguments);
+    EXPECT_EQ(r.exit_code, 2) << arguments << ": " << r.out;
+    EXPECT_NE(r.out.find("antipode: error: "), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find(words), std::string::npos) << arguments << ": " << r.out;
+  };
+  expect("--out " + file("x") + " --scenes 0", "--scenes must be in");
+  expect("--out " + file("x") + " --jobs 0", "--jobs must be in 1..64");
+  expect("--out " + file("x") + " --tree nowhere.yaml", "--tree: no tree file 'nowhere.yaml'");
+  std::ofstream(file("plain")) << "x";
+  expect("--out " + file("plain"), "is not a folder");
+  expect("--out " + file("x") + " --shard 3/2", "--shard");
+}
+
+}  // namespace
