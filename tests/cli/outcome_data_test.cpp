@@ -70,6 +70,27 @@ TEST_F(OutcomeDataTest, SameTrialsForAnyProcessCountAndAfterAResume) {
   EXPECT_EQ(scenes.size(), 3u) << "trials from both views and from each view alone";
 }
 
+// trees/train_outcomes.yaml trains on a folder of trials with either label source; the
+// antipodal labels leave the indeterminate trials out.
+TEST_F(OutcomeDataTest, TrainsOnOutcomeOrAntipodalLabels) {
+  ASSERT_EQ(outcomes("trials", "--jobs 1").exit_code, 0);
+  const std::string train = "train --tree trees/train_outcomes.yaml --set trials=" + file("trials");
+  const CommandResult by_outcome = antipode(train + " --out " + file("outcome.model") + " -v");
+  ASSERT_EQ(by_outcome.exit_code, 0) << by_outcome.out;
+  EXPECT_NE(by_outcome.out.find("from 2 scenes, labels: outcome"), std::string::npos)
+      << by_outcome.out;
+  EXPECT_TRUE(fs::exists(file("outcome.model")));
+  const CommandResult by_check =
+      antipode(train + " --set labels=antipodal --out " + file("antipodal.model") + " -v");
+  ASSERT_EQ(by_check.exit_code, 0) << by_check.out;
+  EXPECT_NE(by_check.out.find("from 2 scenes, labels: antipodal"), std::string::npos)
+      << by_check.out;
+  const CommandResult bad = antipode(train + " --set labels=held --out " + file("x.model"));
+  EXPECT_NE(bad.exit_code, 0);
+  EXPECT_NE(bad.out.find("labels must be outcome or antipodal, got 'held'"), std::string::npos)
+      << bad.out;
+}
+
 // Shards split the seeds: two shards together write what the whole run writes.
 TEST_F(OutcomeDataTest, ShardsTogetherWriteTheWholeRun) {
   ASSERT_EQ(outcomes("whole", "").exit_code, 0);
