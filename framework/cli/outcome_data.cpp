@@ -28,9 +28,11 @@ struct Settings {
   std::string tree_path;
   std::string tree_yaml;
   std::string folder;
-  int threads = 2;
-  std::vector<std::pair<std::string, std::string>> entries;
+  std::vector<std::pair<std::string, std::string>> entries;  ///< the same for every scene
 };
+
+// The near-antipodal labels a record gives its trials (CollectTrials), in the summary's order.
+const char* const kAntipodalLabels[] = {"positive", "negative", "indeterminate"};
 
 void check_options(const OutcomeDataOptions& o) {
   if (o.out_dir.empty()) throw Error("--out: give the folder the trial files go to");
@@ -48,19 +50,47 @@ bt::Tree load_scene_tree(const Session& session, const Settings& settings, std::
   load.registry = &session.registry;
   load.components = session.host.get();
   load.seed = seed;
-  load.overrides = {{"seed", std::to_string(seed)}, {"folder", settings.folder}};
+  const fs::path folder(settings.folder);
+  load.overrides = {{"seed", std::to_string(seed)},
+                    {"records_file", (folder / outcome_records_name(seed)).string()},
+                    {"data_file", (folder / outcome_data_name(seed)).string()}};
   for (const auto& entry : settings.entries) load.overrides.push_back(entry);
   return bt::load_tree_string(settings.tree_yaml, settings.tree_path, load);
 }
 
-// The trials a finished scene wrote: how many, and how many held.
-std::pair<int, int> count_trials(const fs::path& records) {
+// Counts of no trial: {"trials": 0, "held": 0, "positive": [0, 0], ...}.
+Json no_trials() {
+  Json counts = {{"trials", 0}, {"held", 0}};
+  for (const char* label : kAntipodalLabels) counts[label] = {0, 0};
+  return counts;
+}
+
+// Adds the counts of `part` (any of the keys of no_trials()) to `total`.
+void add_counts(const Json& part, Json& total) {
+  for (auto& item : total.items()) {
+    if (!part.contains(item.key())) continue;
+    const Json& add = part[item.key()];
+    Json& value = item.value();
+    value = value.is_array() ? Json{value[0].get<int>() + add[0].get<int>(),
+                                    value[1].get<int>() + add[1].get<int>()}
+                             : Json(value.get<int>() + add.get<int>());
+  }
+}
+
+// The trials a finished scene wrote: how many and how many held, in all and per near-antipodal
+// label ("trials", "held", and e.g. "positive": [trials, held]).
+Json count_trials(const fs::path& records) {
   std::ifstream in(records);
   const Json file = Json::parse(in, nullptr, false);
-  if (file.is_discarded() || !file.contains("trials")) return {0, 0};
-  int held = 0;
-  for (const Json& trial : file["trials"]) held += trial.value("held", false) ? 1 : 0;
-  return {int(file["trials"].size()), held};
+  if (file.is_discarded() || !file.contains("trials") || !file["trials"].is_array())
+    throw Error("'" + records.string() + "' is not a trial record file");
+  Json counts = no_trials();
+  for (const Json& trial : file["trials"]) {
+    const std::string label = trial.value("antipodal", "");
+    const int held = trial.value("held", false) ? 1 : 0;
+    add_counts({{"trials", 1}, {"held", held}, {label, {1, held}}}, counts);
+  }
+  return counts;
 }
 
 Json run_scene(const Session& session, const Settings& settings, std::size_t task,
@@ -74,9 +104,7 @@ Json run_scene(const Session& session, const Settings& settings, std::size_t tas
     const fs::path records = fs::path(settings.folder) / outcome_records_name(seed);
     if (status != bt::Status::kSuccess || !fs::exists(records))
       throw Error("the tree did not write " + records.string());
-    const auto [trials, held] = count_trials(records);
-    out["trials"] = trials;
-    out["held"] = held;
+    out.update(count_trials(records));
   } catch (const Error& error) {
     out["error"] = error.message();
   }
@@ -93,6 +121,25 @@ std::string progress_line(const Json& r) {
                 static_cast<unsigned long long>(r["seed"].get<std::uint64_t>()),
                 r["held"].get<int>(), r["trials"].get<int>(), r["wall_s"].get<double>());
   return text;
+}
+
+// "320 trials in 10 scenes, 177 held (55.3%); 64 s wall, 120 CPU-s: 2.66 trials per
+// CPU-second", then how often the trials of each near-antipodal label held.
+void print_summary(std::ostream& out, const Json& total, int scenes, double wall_s, double cpu_s) {
+  const int trials = total["trials"].get<int>(), held = total["held"].get<int>();
+  const auto percent = [](int part, int whole) { return whole > 0 ? 100.0 * part / whole : 0.0; };
+  char text[240];
+  std::snprintf(text, sizeof(text),
+                "%d trials in %d scenes, %d held (%.1f%%); %.0f s wall, %.0f CPU-s: %.2f "
+                "trials per CPU-second\n",
+                trials, scenes, held, percent(held, trials), wall_s, cpu_s,
+                cpu_s > 0 ? trials / cpu_s : 0.0);
+  out << text << "held by near-antipodal label:";
+  for (const char* label : kAntipodalLabels) {
+    const int n = total[label][0].get<int>(), h = total[label][1].get<int>();
+    std::snprintf(text, sizeof(text), " %s %d of %d (%.1f%%)", label, h, n, percent(h, n));
+    out << text << (label == kAntipodalLabels[2] ? "\n" : ";");
+  }
 }
 
 // CPU seconds used so far by this process and its finished children.
@@ -115,6 +162,10 @@ std::string outcome_records_name(std::uint64_t seed) {
   return text;
 }
 
+std::string outcome_data_name(std::uint64_t seed) {
+  return fs::path(outcome_records_name(seed)).replace_extension(".data").string();
+}
+
 int outcome_data_command(const OutcomeDataOptions& o) {
   check_options(o);
   const BenchShard shard = parse_shard(o.shard);
@@ -124,9 +175,11 @@ int outcome_data_command(const OutcomeDataOptions& o) {
   settings.folder = fs::absolute(o.out_dir).string();
   std::ifstream tree_file(o.tree_path);
   settings.tree_yaml.assign(std::istreambuf_iterator<char>(tree_file), {});
+  // The cores shared among the processes, as the benches share them; the user's --set last.
   const int cores = int(std::max(1u, std::thread::hardware_concurrency()));
-  settings.threads = std::max(1, cores / o.jobs);
-  settings.entries = parse_overrides(o.set);
+  const std::string threads = std::to_string(std::max(1, cores / o.jobs));
+  settings.entries = {{"cell.render_threads", threads}, {"sampler.threads", threads}};
+  for (auto& entry : parse_overrides(o.set)) settings.entries.push_back(std::move(entry));
 
   // The shard's seeds whose record file is missing: a killed run resumes there.
   std::vector<std::size_t> tasks;
@@ -157,23 +210,15 @@ int outcome_data_command(const OutcomeDataOptions& o) {
   const double wall_s =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   const double cpu_s = cpu_seconds() - cpu_before;
-  int trials = 0, held = 0, errors = 0;
+  Json total = no_trials();
+  int errors = 0;
   for (const Json& r : records) {
-    if (r.contains("error")) {
+    if (r.contains("error"))
       ++errors;
-      continue;
-    }
-    trials += r["trials"].get<int>();
-    held += r["held"].get<int>();
+    else
+      add_counts(r, total);
   }
-  char text[240];
-  std::snprintf(text, sizeof(text),
-                "%d trials in %zu scenes, %d held (%.1f%%); %.0f s wall, %.0f CPU-s: %.2f "
-                "trials per CPU-second\n",
-                trials, records.size() - std::size_t(errors), held,
-                trials > 0 ? 100.0 * held / trials : 0.0, wall_s, cpu_s,
-                cpu_s > 0 ? trials / cpu_s : 0.0);
-  std::cout << text;
+  print_summary(std::cout, total, int(records.size()) - errors, wall_s, cpu_s);
   if (errors > 0) {
     std::cout << errors << " scene(s) ended in an error (above); run again to retry them\n";
     return kExitTreeFailed;

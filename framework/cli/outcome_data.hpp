@@ -12,7 +12,7 @@ namespace antipode::cli {
 
 struct OutcomeDataOptions {
   std::string tree_path = "trees/outcomes.yaml";
-  std::string out_dir;                ///< the trial files' folder (entry `folder`)
+  std::string out_dir;                ///< the trial files' folder
   int scenes = 100;                   ///< seeds first_seed .. first_seed + scenes - 1
   std::uint64_t first_seed = 100000;  ///< far from the benches' seeds (2000-2019)
   std::string shard;                  ///< "i/n": every n-th seed from the i-th; "" = all
@@ -20,7 +20,8 @@ struct OutcomeDataOptions {
   std::vector<std::string> set;       ///< the user's --set entries, applied last
 };
 
-/// `antipode outcomes`: runs the tree for every seed of the shard whose record file is not in
+/// `antipode outcomes`: runs the tree (with the entries `seed`, `records_file` and `data_file`)
+/// for every seed of the shard whose record file is not in
 /// the folder yet (so a killed run resumes where it stopped), prints one line per scene and
 /// then the trials, the share that held and the throughput in trials per CPU-second. The same
 /// seeds give the same files for any number of processes or shards. Returns the exit code.
@@ -28,5 +29,7 @@ int outcome_data_command(const OutcomeDataOptions& options);
 
 /// "scene-000123.json": the file whose presence marks seed 123 done (SaveTrials writes it last).
 std::string outcome_records_name(std::uint64_t seed);
+/// "scene-000123.data": the descriptors of seed 123's trials, written before its record file.
+std::string outcome_data_name(std::uint64_t seed);
 
 }  // namespace antipode::cli

@@ -41,6 +41,7 @@ TEST_F(OutcomeDataTest, SameTrialsForAnyProcessCountAndAfterAResume) {
   const CommandResult one = outcomes("one", "--jobs 1");
   ASSERT_EQ(one.exit_code, 0) << one.out;
   EXPECT_NE(one.out.find("trials per CPU-second"), std::string::npos) << one.out;
+  EXPECT_NE(one.out.find("held by near-antipodal label: positive "), std::string::npos) << one.out;
   const CommandResult two = outcomes("two", "--jobs 2");
   ASSERT_EQ(two.exit_code, 0) << two.out;
   const auto first = files("one");
@@ -89,6 +90,12 @@ TEST_F(OutcomeDataTest, TrainsOnOutcomeOrAntipodalLabels) {
   EXPECT_NE(bad.exit_code, 0);
   EXPECT_NE(bad.out.find("labels must be outcome or antipodal, got 'held'"), std::string::npos)
       << bad.out;
+  std::ofstream(file("trials/notes.json")) << "{}";
+  const CommandResult foreign = antipode(train + " --out " + file("y.model"));
+  EXPECT_NE(foreign.exit_code, 0);
+  EXPECT_NE(foreign.out.find("notes.json' is not a trial record file"), std::string::npos)
+      << foreign.out;
+  EXPECT_FALSE(fs::exists(file("y.model")));
 }
 
 // Shards split the seeds: two shards together write what the whole run writes.

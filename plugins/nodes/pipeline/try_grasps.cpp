@@ -61,15 +61,16 @@ class TryGrasps final : public bt::SyncActionNode {
       fail("cell", "the cell of " + describe() +
                        " cannot save its world, so trials cannot "
                        "start from one state (a simulated cell such as bullet_cell can)");
-    auto tried = std::make_shared<HandSet>(*in);
-    tried->hands.clear();
+    auto tried =
+        std::make_shared<HandSet>(HandSet{in->cloud, {}, in->geometry, in->support, in->objects});
     std::vector<GraspAttempt> attempts;
     for (const std::size_t h : draw_hands(*in, std::size_t(trials), random())) {
+      // Every trial, the first too, meets a restored world: its caches start cold, as theirs.
       cell.restore(*saved);
       attempts.push_back(cell.execute(GraspRequest{in->hands[h], in->geometry, {}}));
       tried->hands.push_back(in->hands[h]);
     }
-    cell.restore(*saved);
+    if (!attempts.empty()) cell.restore(*saved);
     const auto held = std::count_if(attempts.begin(), attempts.end(), [](const GraspAttempt& a) {
       return a.outcome == GraspOutcome::kSuccess;
     });

@@ -78,8 +78,8 @@ class CollectTrials final : public bt::SyncActionNode {
     options.threads = get_input<int>("threads");
     TrainingSet examples;
     add_examples(by_outcome, options, std::int32_t(source), random(), examples);
+    const std::size_t views = tried->cloud ? tried->cloud->view_origins_m.size() : 0;
     for (std::size_t i = 0; i < attempts.size(); ++i) {
-      const std::size_t views = tried->cloud ? tried->cloud->view_origins_m.size() : 0;
       trials.records.push_back(
           trial_record(tried->hands[i], attempts[i], base + std::int32_t(i), source, scene, views));
     }

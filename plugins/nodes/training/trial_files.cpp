@@ -1,6 +1,5 @@
 // NewTrialLog, SaveTrials and MergeTrials: where a trial log starts, how one scene's trials are
 // kept (a record file and a data file), and how the scenes' files join into one training set.
-#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -8,6 +7,7 @@
 #include "antipode/bt/action_node.hpp"
 #include "antipode/core/atomic_file.hpp"
 #include "antipode/core/error.hpp"
+#include "antipode/grasp/svm_model.hpp"
 #include "nodes.hpp"
 #include "trial_log.hpp"
 
@@ -17,12 +17,6 @@ namespace {
 namespace fs = std::filesystem;
 
 constexpr const char* kFormat = "antipode-trials 1";
-
-std::string padded(std::uint64_t source) {
-  char text[32];
-  std::snprintf(text, sizeof(text), "%06llu", static_cast<unsigned long long>(source));
-  return text;
-}
 
 /// Starts an empty trial log.
 class NewTrialLog final : public bt::SyncActionNode {
@@ -45,9 +39,9 @@ class NewTrialLog final : public bt::SyncActionNode {
   }
 };
 
-/// Writes a trial log as FOLDER/scene-SOURCE.data (its examples, antipode's training-set
-/// format) and then FOLDER/scene-SOURCE.json (its records): the record file, written last and
-/// all-or-nothing, marks the scene done, so a run killed in between redoes the scene.
+/// Writes one scene's trial log: its examples to `data_file` (antipode's training-set format),
+/// then its records to `records_file` (JSON naming the data file), each all-or-nothing. The
+/// record file, written last, marks the scene done: a run killed in between redoes it.
 class SaveTrials final : public bt::SyncActionNode {
  public:
   using SyncActionNode::SyncActionNode;
@@ -55,8 +49,9 @@ class SaveTrials final : public bt::SyncActionNode {
     return {"SaveTrials",
             bt::NodeCategory::kAction,
             {bt::input_port<TrialLogPtr>("log", "the trial log"),
-             bt::input_port<std::string>("folder", "where to write it; empty = nowhere"),
-             bt::input_port<std::uint64_t>("source", "the scene's seed, which names the files")},
+             bt::input_port<std::string>("records_file", "the records (JSON); empty = nowhere"),
+             bt::input_port<std::string>("data_file", "the descriptors, beside the records"),
+             bt::input_port<std::uint64_t>("source", "the scene's seed")},
             0,
             0,
             "Writes one scene's trials (records and descriptors), all-or-nothing.",
@@ -65,47 +60,48 @@ class SaveTrials final : public bt::SyncActionNode {
 
  protected:
   bt::Status tick() override {
-    const std::string folder = get_input<std::string>("folder");
-    if (folder.empty()) return bt::Status::kSuccess;
+    const std::string records_file = get_input<std::string>("records_file");
+    if (records_file.empty()) return bt::Status::kSuccess;
+    const fs::path data_file = get_input<std::string>("data_file");
+    if (data_file.parent_path() != fs::path(records_file).parent_path())
+      fail("data_file", "data_file must lie in the folder of records_file");
     const TrialLog& trials = *get_input<TrialLogPtr>("log");
-    const std::uint64_t source = get_input<std::uint64_t>("source");
-    const fs::path dir(folder);
-    save_training_set(trials.examples, (dir / trial_data_name(source)).string());
-    const nlohmann::ordered_json file = {
-        {"format", kFormat}, {"source", source}, {"trials", trials.records}};
-    write_file_atomically((dir / trial_records_name(source)).string(), [&](const std::string& t) {
-      std::ofstream out(t);
+    save_training_set(trials.examples, data_file.string());
+    const nlohmann::ordered_json file = {{"format", kFormat},
+                                         {"source", get_input<std::uint64_t>("source")},
+                                         {"data", data_file.filename().string()},
+                                         {"trials", trials.records}};
+    write_file_atomically(records_file, [&](const std::string& temporary) {
+      std::ofstream out(temporary);
       out << file.dump(1) << "\n";
-      if (!out) throw Error("cannot write " + t);
+      if (!out) throw Error("cannot write " + temporary);
     });
-    log(std::to_string(trials.records.size()) + " trials written to " + folder);
+    log(std::to_string(trials.records.size()) + " trials written to " + records_file);
     return bt::Status::kSuccess;
   }
 };
 
-// The scene record files of `folder` by source, in ascending order.
-std::map<std::uint64_t, fs::path> record_files(const std::string& folder) {
-  std::map<std::uint64_t, fs::path> files;
+// The trial record files of `folder` (every *.json there must be one) by source, ascending.
+std::map<std::uint64_t, nlohmann::json> record_files(const std::string& folder) {
+  std::map<std::uint64_t, nlohmann::json> files;
   std::error_code error;
   for (const auto& entry : fs::directory_iterator(folder, error)) {
-    const std::string name = entry.path().filename().string();
-    unsigned long long source = 0;
-    char tail[8] = {};
-    if (std::sscanf(name.c_str(), "scene-%llu.%7s", &source, tail) == 2 &&
-        std::string(tail) == "json" && name == trial_records_name(source))
-      files[source] = entry.path();
+    if (entry.path().extension() != ".json") continue;
+    std::ifstream in(entry.path());
+    nlohmann::json file = nlohmann::json::parse(in, nullptr, false);
+    if (file.is_discarded() || !file.is_object() || file.value("format", "") != kFormat ||
+        !file.contains("trials") || !file["trials"].is_array() || !file.contains("source") ||
+        !file["source"].is_number_unsigned() || !file.contains("data") || !file["data"].is_string())
+      throw Error("trials: '" + entry.path().string() + "' is not a trial record file (" + kFormat +
+                  ")");
+    const auto source = file["source"].get<std::uint64_t>();
+    if (files.count(source) != 0)
+      throw Error("trials: two record files of '" + folder + "' are of scene " +
+                  std::to_string(source));
+    files[source] = std::move(file);
   }
   if (error) throw Error("trials: cannot read the folder '" + folder + "': " + error.message());
   return files;
-}
-
-nlohmann::json read_records(const fs::path& path) {
-  std::ifstream in(path);
-  nlohmann::json file = nlohmann::json::parse(in, nullptr, false);
-  if (file.is_discarded() || !file.is_object() || file.value("format", "") != kFormat ||
-      !file.contains("trials") || !file["trials"].is_array())
-    throw Error("trials: '" + path.string() + "' is not a trial record file (" + kFormat + ")");
-  return file;
 }
 
 // +1 / -1 for `record` under `labels`, 0 for no label (an indeterminate antipodal check).
@@ -128,9 +124,6 @@ class MergeTrials final : public bt::SyncActionNode {
             bt::NodeCategory::kAction,
             {bt::input_port<std::string>("folder", "a folder of trial files (SaveTrials)"),
              bt::input_port<std::string>("labels", std::string("outcome"), "outcome or antipodal"),
-             bt::input_port<std::vector<int>>("sources", std::vector<int>{0, -1},
-                                              "keep scenes whose seed is in [first, last] "
-                                              "(-1: no bound)"),
              bt::output_port<TrainingSetPtr>("dataset", "the examples")},
             0,
             0,
@@ -144,15 +137,10 @@ class MergeTrials final : public bt::SyncActionNode {
     const std::string labels = get_input<std::string>("labels");
     if (labels != "outcome" && labels != "antipodal")
       fail("labels", "labels must be outcome or antipodal, got '" + labels + "'");
-    const auto bounds = get_input<std::vector<int>>("sources");
-    if (bounds.size() != 2) fail("sources", "sources must be [first, last]");
     auto set = std::make_shared<TrainingSet>();
     std::size_t scenes = 0;
-    for (const auto& [source, path] : record_files(folder)) {
-      if ((bounds[0] >= 0 && source < std::uint64_t(bounds[0])) ||
-          (bounds[1] >= 0 && source > std::uint64_t(bounds[1])))
-        continue;
-      append_scene(read_records(path), folder, source, labels, *set);
+    for (const auto& [source, file] : record_files(folder)) {
+      append_scene(file, folder, source, labels, *set);
       ++scenes;
     }
     if (set->empty()) fail("folder", "trials: no example in the trial files of '" + folder + "'");
@@ -166,12 +154,18 @@ class MergeTrials final : public bt::SyncActionNode {
   static void append_scene(const nlohmann::json& file, const std::string& folder,
                            std::uint64_t source, const std::string& labels, TrainingSet& out) {
     const TrainingSet scene =
-        load_training_set((fs::path(folder) / trial_data_name(source)).string());
+        load_training_set((fs::path(folder) / file["data"].get<std::string>()).string());
     const nlohmann::json& records = file["trials"];
     const std::int32_t first_group = out.next_group();
-    if (out.empty() && !scene.empty()) {
+    if (scene.empty()) return;
+    if (out.empty()) {
       out.descriptor = scene.descriptor;
       out.geometry = scene.geometry;
+    } else if (!SvmDescriptorSpec::of(out.descriptor, out.geometry)
+                    .matches(SvmDescriptorSpec::of(scene.descriptor, scene.geometry))) {
+      throw Error("trials: scene " + std::to_string(source) +
+                  " was described with another descriptor or gripper than the scenes before it; "
+                  "merge one gripper's trials at a time");
     }
     for (std::size_t e = 0; e < scene.size(); ++e) {
       const auto group = std::size_t(scene.groups[e]);
@@ -187,9 +181,6 @@ class MergeTrials final : public bt::SyncActionNode {
 };
 
 }  // namespace
-
-std::string trial_records_name(std::uint64_t source) { return "scene-" + padded(source) + ".json"; }
-std::string trial_data_name(std::uint64_t source) { return "scene-" + padded(source) + ".data"; }
 
 void register_new_trial_log(bt::NodeRegistry& registry) { registry.register_node<NewTrialLog>(); }
 void register_save_trials(bt::NodeRegistry& registry) { registry.register_node<SaveTrials>(); }

@@ -20,8 +20,4 @@ struct TrialLog {
 
 using TrialLogPtr = std::shared_ptr<TrialLog>;
 
-/// The name of a trial file's record file and data file: "scene-000123.json" and ".data".
-std::string trial_records_name(std::uint64_t source);
-std::string trial_data_name(std::uint64_t source);
-
 }  // namespace antipode::training
