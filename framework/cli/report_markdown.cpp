@@ -57,11 +57,18 @@ std::string setting_words(const nlohmann::ordered_json& report, const std::strin
 }
 
 std::string classifier_words(const nlohmann::ordered_json& report) {
-  const std::string key = "classifier.plugin=";
-  std::string plugin;
+  std::string plugin, model;
+  bool probability = false;
   for (const auto& entry : report.value("overrides", nlohmann::ordered_json::array())) {
     const std::string text = entry.get<std::string>();
-    if (text.rfind(key, 0) == 0) plugin = text.substr(key.size());
+    if (text.rfind("classifier.plugin=", 0) == 0) plugin = text.substr(18);
+    if (text.rfind("classifier.model=", 0) == 0) model = text.substr(17);
+    if (text == "classifier.score=probability") probability = true;
+  }
+  if (probability) {
+    return "ranked by success probability" +
+           (model.empty() ? std::string()
+                          : " (`" + std::filesystem::path(model).filename().string() + "`)");
   }
   if (plugin.empty()) return "";
   if (plugin == "passthrough_classifier") return "no classifier (NC)";

@@ -44,8 +44,10 @@ std::string setting_words(const nlohmann::ordered_json& report, const std::strin
 
 /// The classifier a report's `--set classifier.plugin=P` puts in its tree's place, in the
 /// paper's variant words: "no classifier (NC)" for `passthrough_classifier`, "the antipodal
-/// classifier (A)" for `antipodal_classifier`, "classifier `P`" for any other; empty when
-/// the report keeps the tree's classifier.
+/// classifier (A)" for `antipodal_classifier`, "classifier `P`" for any other; "ranked by
+/// success probability (`MODEL`)" when `--set classifier.score=probability` (with the file
+/// name of `--set classifier.model=MODEL`, if given); empty when the report keeps the tree's
+/// classifier.
 std::string classifier_words(const nlohmann::ordered_json& report);
 
 /// "procedural shapes" or the mesh folder's name ("ycb objects").

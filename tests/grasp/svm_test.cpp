@@ -295,6 +295,17 @@ TEST(SvmTest, SaveLoadRoundTripKeepsValuesAndBytes) {
   EXPECT_EQ(loaded.descriptor.name, SvmDescriptorSpec{}.name);
   EXPECT_TRUE(loaded.descriptor.matches(model.descriptor));
   EXPECT_EQ(loaded.kernel.C, model.kernel.C);
+  EXPECT_FALSE(loaded.calibration.fitted());
+  SvmModel calibrated = model;
+  calibrated.calibration = {-1.25, 0.5, 300};
+  calibrated.save(again);
+  const SvmModel reloaded = SvmModel::load(again);
+  EXPECT_EQ(reloaded.calibration.a, -1.25);
+  EXPECT_EQ(reloaded.calibration.b, 0.5);
+  EXPECT_EQ(reloaded.calibration.examples, 300u);
+  calibrated.calibration.b = NAN;
+  EXPECT_NE(error_of([&] { calibrated.save(again); }).find("non-finite calibration"),
+            std::string::npos);
   const auto size = fs::file_size(path);
   std::printf("model: %zu components, %zu support vectors, %ju bytes\n", model.components(),
               model.support_vector_count(), static_cast<std::uintmax_t>(size));

@@ -9,6 +9,7 @@
 
 #include "antipode/bt/loader.hpp"
 #include "antipode/core/error.hpp"
+#include "antipode/geometry/hand_body.hpp"
 #include "antipode/interfaces/clearing_run.hpp"
 #include "antipode/interfaces/grasp_attempt.hpp"
 #include "antipode/interfaces/hand_set.hpp"
@@ -430,23 +431,34 @@ ClearingCycle executed_cycle(const std::string& outcome, double x_m, int before,
 class AvoidFailedGraspsTest : public PipelineNodesTest {
  protected:
   // The x coordinates of the hands AvoidFailedGrasps keeps of hands at x = 0, 0.01, 0.03,
-  // 0.1 after the cycles of `run`; empty when it fails.
-  std::vector<double> kept_after(const ClearingRun& run);
+  // 0.1 after the cycles of `run`; empty when it fails. The scene is segmented into two
+  // objects: the first three hands close on object 0, the last on object 1 (a cloud point at
+  // each hand's grasp centre).
+  std::vector<double> kept_after(const ClearingRun& run, int failures_per_object = 0);
 };
 
-std::vector<double> AvoidFailedGraspsTest::kept_after(const ClearingRun& run) {
+std::vector<double> AvoidFailedGraspsTest::kept_after(const ClearingRun& run,
+                                                      int failures_per_object) {
   bt::Tree tree = load(R"(
 main: avoid
 trees:
   avoid:
-    AvoidFailedGrasps: { hands: "{hands}", run: "{run}", kept: "{kept}" }
+    AvoidFailedGrasps: { hands: "{hands}", run: "{run}", failures_per_object: "{per_object}", kept: "{kept}" }
 )");
   auto hands = std::make_shared<HandSet>();
+  auto cloud = std::make_shared<Cloud>();
+  hands->objects.resize(2);
+  hands->objects[1].id = 1;
   for (double x : {0.0, 0.01, 0.03, 0.1}) {
     Hand hand;
     hand.X_FrameHand.translation() = Eigen::Vector3d(x, 0.0, 0.0);
+    hand.object = x < 0.05 ? 0 : 1;
+    hands->objects[std::size_t(hand.object)].points.push_back(std::int32_t(cloud->size()));
+    cloud->points_m.push_back(grasp_centre(hand, hands->geometry).cast<float>());
     hands->hands.push_back(hand);
   }
+  hands->cloud = cloud;
+  tree.blackboard().set<int>("per_object", failures_per_object);
   tree.blackboard().set<HandSetPtr>("hands", hands);
   tree.blackboard().set<ClearingRun>("run", run);
   tree.set_log_sink([](const bt::Node&, const std::string&) {});
@@ -470,6 +482,23 @@ TEST_F(AvoidFailedGraspsTest, DropsHandsWhereAGraspFailedSinceTheLastRemoval) {
   EXPECT_EQ(kept_after(run), (std::vector<double>{0.0, 0.01, 0.03}));
   run.cycles.push_back(executed_cycle("empty grasp", 0.015, 3, 3));
   EXPECT_EQ(kept_after(run), (std::vector<double>{}));  // every hand dropped: FAILURE
+}
+
+TEST_F(AvoidFailedGraspsTest, GivesUpAnObjectAfterRepeatedFailuresOnIt) {
+  ClearingRun run;
+  run.cycles.push_back(executed_cycle("empty grasp", 0.0, 4, 4));  // on object 0
+  run.cycles.push_back(executed_cycle("success", 0.1, 4, 3));      // the scene changed
+  run.cycles.push_back(executed_cycle("slipped", 0.005, 3, 3));    // object 0 again
+  EXPECT_EQ(kept_after(run), (std::vector<double>{0.03, 0.1}));    // near the last failure only
+  EXPECT_EQ(kept_after(run, 3), (std::vector<double>{0.03, 0.1}));
+  EXPECT_EQ(kept_after(run, 2), (std::vector<double>{0.1}));  // every hand on object 0 dropped
+  // A failure far from every object's points (the object has moved away) counts for none.
+  ClearingRun moved;
+  moved.cycles.push_back(executed_cycle("slipped", 0.5, 4, 4));
+  moved.cycles.push_back(executed_cycle("success", 0.1, 4, 3));
+  moved.cycles.push_back(executed_cycle("slipped", 0.0, 3, 3));
+  EXPECT_EQ(kept_after(moved, 2), (std::vector<double>{0.03, 0.1}));
+  EXPECT_EQ(kept_after(moved, 1), (std::vector<double>{0.1}));
 }
 
 constexpr const char* kEndlessPlanning = R"(

@@ -2,7 +2,10 @@
 // hypothesis image is encoded by its HOG descriptor and scored by a trained polynomial-kernel
 // SVM; see antipode/grasp/svm_model.hpp and docs/classification.md.
 //
-// Parameters: model (path, "models/hog_svm.model"), threshold (0), threads (0 = all).
+// Parameters: model (path, "models/hog_svm.model"), score ("decision": the SVM's decision
+// value; "probability": the calibrated probability of success of a model trained on outcome
+// labels, docs/training.md), threshold (the score from which a hand is a grasp: 0 for
+// decision values, 0.5 for probabilities), threads (0 = all).
 #include <cmath>
 #include <filesystem>
 #include <string>
@@ -28,16 +31,37 @@ SvmModel load_model(const Parameters& params, const std::string& path) {
   }
 }
 
+// Whether the score is the decision value (false) or the probability of success (true).
+bool read_score(const Parameters& params, const SvmModel& model, const std::string& path) {
+  const std::string score = params.get<std::string>("score", "decision");
+  if (score == "decision") return false;
+  if (score != "probability") {
+    params.fail("score", "parameter 'score' must be decision or probability, got '" + score + "'");
+  }
+  if (!model.calibration.fitted()) {
+    params.fail("score", "parameter 'score': probability needs a calibrated model, and " + path +
+                             " is not (calibrate it with trees/train_outcomes.yaml, "
+                             "docs/training.md)");
+  }
+  return true;
+}
+
 class HogSvmClassifier final : public Classifier {
  public:
   explicit HogSvmClassifier(const Parameters& params)
       : path_(
             resolve_path(params.get<std::string>("model", "models/hog_svm.model"), params.file())),
         model_(load_model(params, path_)),
-        threshold_(params.get<double>("threshold", 0.0)),
+        probability_(read_score(params, model_, path_)),
+        threshold_(params.get<double>("threshold", probability_ ? 0.5 : 0.0)),
         threads_(params.get<int>("threads", 0)) {
     if (!std::isfinite(threshold_))
       params.fail("threshold", "parameter 'threshold' must be finite");
+    if (probability_ && !(threshold_ >= 0.0 && threshold_ <= 1.0))
+      params.fail("threshold",
+                  "parameter 'threshold' is a probability (score: probability), "
+                  "so it must be in 0..1, got " +
+                      std::to_string(threshold_));
     if (threads_ < 0 || threads_ > 256) {
       params.fail("threads", "parameter 'threads' must be in 0..256 (0: one per core), got " +
                                  std::to_string(threads_));
@@ -55,8 +79,8 @@ class HogSvmClassifier final : public Classifier {
     stop.throw_if_stop_requested("hog_svm_classifier");
     for (std::size_t i = 0; i < set.hands.size(); ++i) {
       Hand& hand = set.hands[i];
-      hand.score = values[i];
-      if (values[i] >= threshold_) {
+      hand.score = probability_ ? model_.calibration.probability(values[i]) : values[i];
+      if (hand.score >= threshold_) {
         hand.label = HandLabel::kPositive;
       } else {
         hand.label = HandLabel::kNegative;
@@ -68,6 +92,7 @@ class HogSvmClassifier final : public Classifier {
  private:
   std::string path_;
   SvmModel model_;
+  bool probability_;
   double threshold_;
   int threads_;
 };

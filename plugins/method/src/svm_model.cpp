@@ -25,7 +25,7 @@ constexpr const char* kMagic = "ANTPSVM1";
 // 3: support vectors in half precision; not read.
 // 4: basis in 8-bit codes; support vectors in half precision (the leading components) and
 //    8-bit codes (the rest).
-constexpr std::uint32_t kVersion = 4;
+constexpr std::uint32_t kVersion = 5;  // 5: Platt scaling after the training facts
 // The largest finite half-precision number.
 constexpr float kHalfMax = 65504.0f;
 constexpr int kMaxOption = 4096;  // bound on each image option read from a file
@@ -105,6 +105,9 @@ std::string numbers_problem(const SvmModel& m) {
   }
   if (!(std::isfinite(m.info.cv_accuracy) && m.info.cv_accuracy <= 1.0)) {
     return "invalid cross-validation accuracy";
+  }
+  if (!std::isfinite(m.calibration.a) || !std::isfinite(m.calibration.b)) {
+    return "non-finite calibration";
   }
   return "";
 }
@@ -526,12 +529,15 @@ void SvmModel::save(const std::string& path) const {
   w.put<std::uint64_t>(info.seed);
   w.put(info.cv_accuracy);
   w.put_string(info.description);
+  w.put(calibration.a);
+  w.put(calibration.b);
+  w.put<std::uint64_t>(calibration.examples);
   w.write(path);
 }
 
 SvmModel SvmModel::load(const std::string& path) {
   BinaryReader r(path, kMagic, kVersion, "classifier model");
-  if (r.version() < kVersion) {
+  if (r.version() < 4) {
     r.fail("format version " + std::to_string(r.version()) +
            " was written by an older antipode; retrain with `antipode train`");
   }
@@ -573,6 +579,11 @@ SvmModel SvmModel::load(const std::string& path) {
   m.info.seed = r.get<std::uint64_t>();
   m.info.cv_accuracy = r.get<double>();
   m.info.description = r.get_string();
+  if (r.version() >= 5) {
+    m.calibration.a = r.get<double>();
+    m.calibration.b = r.get<double>();
+    m.calibration.examples = r.get<std::uint64_t>();
+  }
   r.expect_end();
   const std::size_t d = m.input_dimension();
   if (basis.codes.size() != m.components() * d) {

@@ -498,9 +498,18 @@ ConfusionMatrix evaluate(const SvmModel& model, const TrainingSet& set, int thre
   if (set.empty()) return {};
   const std::vector<double> values =
       model.decision_values(set.features.data(), set.size(), set.dimension, threads);
-  std::vector<std::size_t> all(set.size());
+  return confusion(values, set.labels, threshold);
+}
+
+ConfusionMatrix confusion(const std::vector<double>& values, const std::vector<std::int8_t>& labels,
+                          double threshold) {
+  if (values.size() != labels.size()) {
+    throw Error("confusion matrix: " + std::to_string(values.size()) + " values but " +
+                std::to_string(labels.size()) + " labels");
+  }
+  std::vector<std::size_t> all(values.size());
   std::iota(all.begin(), all.end(), 0);
-  return count(values, set.labels, all, threshold);
+  return count(values, labels, all, threshold);
 }
 
 }  // namespace antipode

@@ -1,4 +1,7 @@
 #include <cmath>
+#include <limits>
+#include <map>
+#include <string>
 #include <vector>
 
 #include "antipode/bt/action_node.hpp"
@@ -22,11 +25,42 @@ std::vector<Hand> failed_since_last_removal(const ClearingRun& run) {
   return failed;
 }
 
+// Every executed grasp of `run` that failed, whenever it was.
+std::vector<Hand> failed_in_run(const ClearingRun& run) {
+  std::vector<Hand> failed;
+  for (const ClearingCycle& cycle : run.cycles)
+    if (cycle.attempt && cycle.grasp && !cycle.succeeded()) failed.push_back(*cycle.grasp);
+  return failed;
+}
+
+// The id of the object of `hands` with a point nearest to `centre`, if that point lies within
+// `radius_m`; else -1. A failed grasp whose object has since moved away matches nothing.
+std::int32_t object_at(const HandSet& hands, const Eigen::Vector3d& centre, double radius_m) {
+  std::int32_t nearest = -1;
+  double best = radius_m * radius_m;
+  for (const SceneObject& object : hands.objects) {
+    for (const std::int32_t i : object.points) {
+      const double d2 =
+          (hands.cloud->points_m[std::size_t(i)].cast<double>() - centre).squaredNorm();
+      if (d2 < best) {
+        best = d2;
+        nearest = object.id;
+      }
+    }
+  }
+  return nearest;
+}
+
 /// Drops the hands that would grasp where an executed grasp of this clear-the-box run has
 /// just failed: on a scene that has not changed, the same grasp fails again (an object jammed
 /// against its neighbours, one wider than the open gripper). A hand is dropped when the middle
 /// of its closing region lies within `radius_m` of a failed grasp's; the failures counted
-/// are those since the last cycle that removed an object. Fails when every hand is dropped.
+/// are those since the last cycle that removed an object. With `failures_per_object` N > 0
+/// and a segmented scene (the sampler's `objects: auto`), an object on which N grasps of the
+/// run failed is given up whole: each failed grasp counts for the object that now has the point
+/// nearest its grasp centre within half the gripper's opening - between where the fingers were
+/// (an object that has moved away is a new chance) - and every hand on that object is dropped.
+/// Fails when every hand is dropped.
 class AvoidFailedGrasps final : public bt::SyncActionNode {
  public:
   using SyncActionNode::SyncActionNode;
@@ -38,6 +72,9 @@ class AvoidFailedGrasps final : public bt::SyncActionNode {
              bt::input_port<double>("radius_m", 0.02,
                                     "drop hands whose grasp centre is this close to a "
                                     "failed grasp's"),
+             bt::input_port<int>("failures_per_object", 0,
+                                 "give up an object after this many failed grasps on it "
+                                 "(0: never)"),
              bt::output_port<HandSetPtr>("kept", "the hands not dropped")},
             0,
             0,
@@ -51,29 +88,36 @@ class AvoidFailedGrasps final : public bt::SyncActionNode {
     const double radius_m = get_input<double>("radius_m");
     if (!(radius_m >= 0.0 && radius_m <= 1.0))
       fail("radius_m", "port 'radius_m' of " + describe() + " must be in [0, 1] m");
-    const std::vector<Hand> failed = failed_since_last_removal(get_input_ref<ClearingRun>("run"));
-    if (failed.empty()) {
+    const int per_object = get_input<int>("failures_per_object");
+    if (per_object < 0)
+      fail("failures_per_object",
+           "port 'failures_per_object' of " + describe() + " must be 0 (never) or more");
+    const ClearingRun& run = get_input_ref<ClearingRun>("run");
+    const std::vector<Hand> failed = failed_since_last_removal(run);
+    const std::vector<std::int32_t> given_up = objects_given_up(*in, run, per_object);
+    if (failed.empty() && given_up.empty()) {
       set_output("kept", in);
       return bt::Status::kSuccess;
     }
     std::vector<Eigen::Vector3d> avoid;
-    for (const Hand& grasp : failed) {
-      if (!in->hands.empty() && grasp.frame != in->hands.front().frame)
-        fail("run", "a failed grasp is in frame '" + grasp.frame + "' but the hands are in '" +
-                        in->hands.front().frame + "'");
-      avoid.push_back(grasp_centre(grasp, in->geometry));
-    }
+    avoid.reserve(failed.size());
+    for (const Hand& grasp : failed) avoid.push_back(centre_in_frame(grasp, *in));
     auto kept = std::make_shared<HandSet>(*in);
     kept->hands.clear();
     for (const Hand& hand : in->hands) {
       const Eigen::Vector3d centre = grasp_centre(hand, in->geometry);
       bool near = false;
       for (const Eigen::Vector3d& point : avoid) near = near || (centre - point).norm() < radius_m;
+      for (const std::int32_t object : given_up) near = near || hand.object == object;
       if (!near) kept->hands.push_back(hand);
     }
     const std::size_t dropped = in->hands.size() - kept->hands.size();
     log("dropped " + std::to_string(dropped) + " of " + std::to_string(in->hands.size()) +
-        " hands near " + std::to_string(failed.size()) + " failed grasp(s)");
+        " hands near " + std::to_string(failed.size()) + " failed grasp(s)" +
+        (given_up.empty()
+             ? std::string()
+             : " and on " + std::to_string(given_up.size()) + " object(s) given up after " +
+                   std::to_string(per_object) + " failed grasps"));
     const bool any = !kept->hands.empty();
     set_output("kept", HandSetPtr(std::move(kept)));
     if (!any) {
@@ -81,6 +125,30 @@ class AvoidFailedGrasps final : public bt::SyncActionNode {
       return bt::Status::kFailure;
     }
     return bt::Status::kSuccess;
+  }
+
+ private:
+  Eigen::Vector3d centre_in_frame(const Hand& grasp, const HandSet& hands) const {
+    if (!hands.hands.empty() && grasp.frame != hands.hands.front().frame)
+      fail("run", "a failed grasp is in frame '" + grasp.frame + "' but the hands are in '" +
+                      hands.hands.front().frame + "'");
+    return grasp_centre(grasp, hands.geometry);
+  }
+
+  // The objects of `hands` on which at least `per_object` grasps of the run failed.
+  std::vector<std::int32_t> objects_given_up(const HandSet& hands, const ClearingRun& run,
+                                             int per_object) const {
+    const double radius_m = 0.5 * hands.geometry.max_aperture_m;
+    if (per_object == 0 || hands.objects.empty() || !hands.cloud) return {};
+    std::map<std::int32_t, int> failures;
+    for (const Hand& grasp : failed_in_run(run)) {
+      const std::int32_t object = object_at(hands, centre_in_frame(grasp, hands), radius_m);
+      if (object >= 0) ++failures[object];
+    }
+    std::vector<std::int32_t> given_up;
+    for (const auto& [object, count] : failures)
+      if (count >= per_object) given_up.push_back(object);
+    return given_up;
   }
 };
 

@@ -5,11 +5,20 @@
 
 #include "antipode/bt/action_node.hpp"
 #include "antipode/core/atomic_file.hpp"
+#include "antipode/grasp/calibration.hpp"
 #include "antipode/grasp/svm_training.hpp"
 #include "nodes.hpp"
 
 namespace antipode::training {
 namespace {
+
+std::vector<bool> successes(const TrainingSet& set) {
+  std::vector<bool> out(set.size());
+  for (std::size_t i = 0; i < set.size(); ++i) out[i] = set.labels[i] > 0;
+  return out;
+}
+
+bool has_both_labels(const TrainingSet& set) { return set.positives() > 0 && set.negatives() > 0; }
 
 nlohmann::json report(const ConfusionMatrix& c, const TrainingSet& set, const std::string& model) {
   return {{"model", model},
@@ -22,7 +31,8 @@ nlohmann::json report(const ConfusionMatrix& c, const TrainingSet& set, const st
           {"confusion", {{"tp", c.tp}, {"fp", c.fp}, {"tn", c.tn}, {"fn", c.fn}}}};
 }
 
-/// Measures a model on labelled examples: accuracy, precision, recall, confusion matrix.
+/// Measures a model on labelled examples: accuracy, precision, recall, confusion matrix, the
+/// area under the ROC curve and, for a calibrated model, its calibration by decile.
 class EvaluateClassifier final : public bt::SyncActionNode {
  public:
   using SyncActionNode::SyncActionNode;
@@ -37,7 +47,7 @@ class EvaluateClassifier final : public bt::SyncActionNode {
              bt::input_port<int>("threads", 0, "workers (0: all cores)")},
             0,
             0,
-            "Measures a classifier model on labelled examples.",
+            "Measures a classifier model on labelled examples (and its calibration).",
             {}};
   }
 
@@ -47,8 +57,10 @@ class EvaluateClassifier final : public bt::SyncActionNode {
     const TrainingSetPtr set = get_input<TrainingSetPtr>("dataset");
     const SvmModel model = SvmModel::load(model_file);
     model.check_compatible(set->descriptor, set->geometry, model_file);
-    const ConfusionMatrix c =
-        evaluate(model, *set, get_input<int>("threads"), get_input<double>("threshold"));
+    set->validate();
+    const std::vector<double> values = model.decision_values(
+        set->features.data(), set->size(), set->dimension, get_input<int>("threads"));
+    const ConfusionMatrix c = confusion(values, set->labels, get_input<double>("threshold"));
     log(std::to_string(set->size()) + " examples (" + std::to_string(set->positives()) +
         " positive, " + std::to_string(set->negatives()) + " negative): accuracy " +
         percent(c.accuracy()) + ", precision " + percent(c.precision()) + ", recall " +
@@ -56,11 +68,42 @@ class EvaluateClassifier final : public bt::SyncActionNode {
     log("               classified grasp   classified not");
     log("  grasp        " + column(c.tp) + column(c.fn));
     log("  not a grasp  " + column(c.fp) + column(c.tn));
-    write_report(report(c, *set, model_file));
+    nlohmann::json numbers = report(c, *set, model_file);
+    if (has_both_labels(*set)) add_ranking(values, *set, model, numbers);
+    write_report(numbers);
     return bt::Status::kSuccess;
   }
 
  private:
+  // The area under the ROC curve, and for a calibrated model the calibration by decile.
+  void add_ranking(const std::vector<double>& values, const TrainingSet& set, const SvmModel& model,
+                   nlohmann::json& numbers) const {
+    const std::vector<bool> held = successes(set);
+    const double auc = roc_auc(values, held);
+    numbers["roc_auc"] = auc;
+    log("area under the ROC curve " + fixed(auc, 3));
+    if (!model.calibration.fitted()) return;
+    std::vector<double> p(values.size());
+    for (std::size_t i = 0; i < values.size(); ++i) p[i] = model.calibration.probability(values[i]);
+    const std::vector<CalibrationBin> table = calibration_table(p, held);
+    numbers["calibration_error"] = calibration_error(table);
+    log("calibration by decile (mean predicted / observed, examples):");
+    for (const CalibrationBin& bin : table) {
+      log("  " + percent(bin.predicted) + " / " + percent(bin.observed) + "  (" +
+          std::to_string(bin.count) + ")");
+      numbers["calibration"].push_back(
+          {{"predicted", bin.predicted}, {"observed", bin.observed}, {"count", bin.count}});
+    }
+    log("calibration error " + fixed(100.0 * calibration_error(table), 1) +
+        " points (mean |predicted - observed| over the deciles)");
+  }
+
+  static std::string fixed(double value, int digits) {
+    char text[32];
+    std::snprintf(text, sizeof(text), "%.*f", digits, value);
+    return text;
+  }
+
   static std::string column(std::uint64_t count) {
     char text[32];
     std::snprintf(text, sizeof(text), "%16llu   ", static_cast<unsigned long long>(count));

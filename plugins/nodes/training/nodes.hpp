@@ -33,6 +33,7 @@ void register_save_trials(bt::NodeRegistry& registry);
 void register_merge_trials(bt::NodeRegistry& registry);
 void register_train_classifier(bt::NodeRegistry& registry);
 void register_evaluate_classifier(bt::NodeRegistry& registry);
+void register_calibrate_classifier(bt::NodeRegistry& registry);
 void register_cross_validate(bt::NodeRegistry& registry);
 
 }  // namespace antipode::training

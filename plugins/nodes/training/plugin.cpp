@@ -24,6 +24,8 @@ const antipode::PluginFactory kFactories[] = {
     {"node", "CrossValidate", "cross-validates the SVM", nullptr, &register_cross_validate},
     {"node", "EvaluateClassifier", "measures a classifier model", nullptr,
      &register_evaluate_classifier},
+    {"node", "CalibrateClassifier", "fits a model's probability of success", nullptr,
+     &register_calibrate_classifier},
 };
 
 }  // namespace

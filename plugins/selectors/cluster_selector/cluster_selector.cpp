@@ -34,6 +34,7 @@ struct Proposal {
   double penalty = 0.0;  // criterion 2: the aperture
   double balance = 0.0;  // gravity's lever about the closing axis
   double arm_m = 0.0;
+  double mean_score = 0.0;  // the members' mean score
 };
 
 // The median of values[m] over the members m (the upper one of an even count).
@@ -212,6 +213,7 @@ HandSet choose(std::vector<Hand> hands, const std::vector<double>& held, const H
         !approach_is_free(p.grasp, g, *in.cloud, o.standoff_m))
       p.grasp.X_FrameHand = hands[members.front()].X_FrameHand;  // the seed passed them
     p.members = std::move(members);
+    p.mean_score = p.grasp.score / double(p.members.size());
     p.tilt = tilt_penalty(closing_tilt_rad(p.grasp, f.up), o.tilt_free_deg * M_PI / 180.0);
     p.penalty = aperture_penalty(held_width, p.grasp.width_m, g, o.aperture_margin_m);
     if (const auto centroid = mass_centre(in, f, p.grasp, o)) {
@@ -221,6 +223,9 @@ HandSet choose(std::vector<Hand> hands, const std::vector<double>& held, const H
     proposals.push_back(std::move(p));
   }
   std::stable_sort(proposals.begin(), proposals.end(), [&](const Proposal& a, const Proposal& b) {
+    const double first = o.score_first_tolerance;
+    if (first > 0.0 && std::abs(a.mean_score - b.mean_score) > first)
+      return a.mean_score > b.mean_score;
     if (std::abs(a.tilt - b.tilt) > o.tilt_tolerance_rad2) return a.tilt < b.tilt;
     const double tolerance = o.penalty_tolerance_m2;
     if (std::abs(a.penalty - b.penalty) > tolerance) return a.penalty < b.penalty;

@@ -63,6 +63,8 @@ SelectionOptions read_selection_options(const Parameters& params) {
   o.object_radius_m = params.number_in("object_radius_m", o.object_radius_m, 0.01, 2.0);
   o.penalty_tolerance_m2 =
       params.number_in("penalty_tolerance_m2", o.penalty_tolerance_m2, 0.0, 1.0);
+  o.score_first_tolerance =
+      params.number_in("score_first_tolerance", o.score_first_tolerance, 0.0, 1e6);
   o.max_grasps = std::size_t(params.number_in("max_grasps", double(o.max_grasps), 1, 1e6));
   o.threads = int(whole(params, "threads", o.threads, 0, 256));
   o.arm.robot_file =

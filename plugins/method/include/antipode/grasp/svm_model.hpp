@@ -19,6 +19,7 @@
 #include <vector>
 
 #include "antipode/core/hand_geometry.hpp"
+#include "antipode/grasp/calibration.hpp"
 #include "antipode/grasp/hand_image.hpp"
 
 namespace antipode {
@@ -96,6 +97,10 @@ class SvmModel {
   std::vector<double> alpha;  ///< dual coefficient of each support vector (label sign included)
   double rho = 0.0;           ///< offset subtracted from the kernel sum
   SvmTrainingInfo info;
+  /// Maps decision values to probabilities of success; not fitted() unless the model was
+  /// calibrated on held-out outcomes (calibration.hpp, `CalibrateClassifier`). Files of
+  /// format 4, from before calibration, load uncalibrated.
+  PlattScaling calibration;
 
   std::size_t input_dimension() const { return mean.size(); }
   std::size_t components() const { return scale.size(); }

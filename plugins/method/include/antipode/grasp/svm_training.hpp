@@ -117,6 +117,11 @@ SvmModel train_svm(const TrainingSet& set, const SvmTrainingOptions& options,
 /// The same, for the descriptor options and hand the training set records.
 SvmModel train_svm(const TrainingSet& set, const SvmTrainingOptions& options);
 
+/// The confusion matrix of decision values against labels (+1 a grasp): values at or above
+/// `threshold` are called grasps. Throws antipode::Error when the lengths differ.
+ConfusionMatrix confusion(const std::vector<double>& values, const std::vector<std::int8_t>& labels,
+                          double threshold = 0.0);
+
 /// Classifies every example of `set` with `model` (positive when the decision value is
 /// >= `threshold`) and counts the outcomes.
 ConfusionMatrix evaluate(const SvmModel& model, const TrainingSet& set, int threads = 0,

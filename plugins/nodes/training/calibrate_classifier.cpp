@@ -1,0 +1,72 @@
+#include <string>
+#include <vector>
+
+#include "antipode/bt/action_node.hpp"
+#include "antipode/grasp/calibration.hpp"
+#include "antipode/grasp/svm_model.hpp"
+#include "nodes.hpp"
+
+namespace antipode::training {
+namespace {
+
+/// Makes a model's score a probability of success: fits Platt scaling to its decision values
+/// on outcome-labelled examples it was not trained on (scenes held out from training) and
+/// writes the model with it (SvmModel::calibration). `hog_svm_classifier` with `score:
+/// probability` then scores hands by that probability.
+class CalibrateClassifier final : public bt::SyncActionNode {
+ public:
+  using SyncActionNode::SyncActionNode;
+  static bt::NodeManifest manifest() {
+    return {"CalibrateClassifier",
+            bt::NodeCategory::kAction,
+            {bt::input_port<std::string>("model_file", "the model to calibrate"),
+             bt::input_port<TrainingSetPtr>(
+                 "dataset", "outcome-labelled examples from scenes the model was not trained on"),
+             bt::input_port<std::string>("calibrated_file", std::string{},
+                                         "where to write the calibrated model (empty: model_file)"),
+             bt::input_port<int>("threads", 0, "workers (0: all cores)")},
+            0,
+            0,
+            "Fits a model's probability of success on held-out outcomes (Platt scaling).",
+            {}};
+  }
+
+ protected:
+  bt::Status tick() override {
+    const std::string model_file = get_input<std::string>("model_file");
+    std::string out = get_input<std::string>("calibrated_file");
+    if (out.empty()) out = model_file;
+    const TrainingSetPtr set = get_input<TrainingSetPtr>("dataset");
+    SvmModel model = SvmModel::load(model_file);
+    model.check_compatible(set->descriptor, set->geometry, model_file);
+    if (set->positives() == 0 || set->negatives() == 0) {
+      fail("dataset", "calibration needs trials that held and trials that failed; the " +
+                          std::to_string(set->size()) + " examples hold " +
+                          std::to_string(set->positives()) + " successes");
+    }
+    set->validate();
+    const std::vector<double> values = model.decision_values(
+        set->features.data(), set->size(), set->dimension, get_input<int>("threads"));
+    std::vector<bool> held(set->size());
+    for (std::size_t i = 0; i < set->size(); ++i) held[i] = set->labels[i] > 0;
+    model.calibration = fit_platt_scaling(values, held);
+    model.save(out);
+    std::vector<double> p(values.size());
+    for (std::size_t i = 0; i < values.size(); ++i) p[i] = model.calibration.probability(values[i]);
+    log("calibrated on " + std::to_string(set->size()) + " held-out examples (" +
+        percent(double(set->positives()) / double(set->size())) +
+        " held): P(success) = 1 / (1 + exp(" + std::to_string(model.calibration.a) + " f + " +
+        std::to_string(model.calibration.b) + ")); area under the ROC curve " +
+        std::to_string(roc_auc(values, held)) + "; calibration error on these examples " +
+        percent(calibration_error(calibration_table(p, held))) + "; written to " + out);
+    return bt::Status::kSuccess;
+  }
+};
+
+}  // namespace
+
+void register_calibrate_classifier(bt::NodeRegistry& registry) {
+  registry.register_node<CalibrateClassifier>();
+}
+
+}  // namespace antipode::training
