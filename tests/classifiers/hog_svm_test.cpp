@@ -1,3 +1,4 @@
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -140,6 +141,36 @@ TEST_F(HogSvmTest, BadModelsAndParametersAreErrorsAtTheirKeys) {
             }).find("parameter 'threads' must be in 0..256 (0: one per core), got -1"),
             std::string::npos);
   EXPECT_NE(error_of([&] { create(model_yaml() + "\nthreshold: .nan"); }).find("finite"),
+            std::string::npos);
+}
+
+// With `score: probability` a calibrated model scores each hand by its Platt probability and
+// labels by a threshold in 0..1 (0.5 unless given); an uncalibrated model is refused.
+TEST_F(HogSvmTest, ProbabilityScoresComeFromTheModelsCalibration) {
+  SvmModel calibrated = toy_model();
+  calibrated.calibration = {-2.0, 0.25, 100};
+  const std::string path = model_dir() + "/models/calibrated.model";
+  calibrated.save(path);
+  const ToyHands toy = toy_hands(20, 4);
+  HandSet decision = toy.set, probability = toy.set;
+  create(model_yaml())->classify(decision, {});
+  create("model: " + path + "\nscore: probability")->classify(probability, {});
+  for (std::size_t i = 0; i < probability.hands.size(); ++i) {
+    const double p = 1.0 / (1.0 + std::exp(-2.0 * decision.hands[i].score + 0.25));
+    EXPECT_NEAR(probability.hands[i].score, p, 1e-12) << i;
+    EXPECT_EQ(probability.hands[i].label, p >= 0.5 ? HandLabel::kPositive : HandLabel::kNegative);
+  }
+  const std::string uncalibrated = error_of([&] { create(model_yaml() + "\nscore: probability"); });
+  EXPECT_NE(uncalibrated.find("parameter 'score': probability needs a calibrated model, and"),
+            std::string::npos)
+      << uncalibrated;
+  EXPECT_NE(error_of([&] {
+              create("model: " + path + "\nscore: odds");
+            }).find("parameter 'score' must be decision or probability, got 'odds'"),
+            std::string::npos);
+  EXPECT_NE(error_of([&] {
+              create("model: " + path + "\nscore: probability\nthreshold: 2");
+            }).find("so it must be in 0..1, got 2"),
             std::string::npos);
 }
 

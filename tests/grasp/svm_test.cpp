@@ -424,9 +424,9 @@ TEST(SvmTest, DamagedModelFilesAreClearErrors) {
   EXPECT_NE(load_error(rbf).find("unknown kernel 'rbf_'"), std::string::npos);
   std::vector<char> nan = good;
   const double not_a_number = std::nan("");
-  // The file ends with rho, positives, negatives, seed, cv accuracy and the (empty)
-  // description's length, 8 bytes each.
-  std::memcpy(nan.data() + nan.size() - 48, &not_a_number, sizeof(double));
+  // The file ends with rho, positives, negatives, seed, cv accuracy, the (empty) description's
+  // length and the calibration's a, b and example count, 8 bytes each.
+  std::memcpy(nan.data() + nan.size() - 72, &not_a_number, sizeof(double));
   fix_checksum(nan);
   EXPECT_NE(load_error(nan).find("non-finite number"), std::string::npos) << load_error(nan);
   // An image size no descriptor needs (a model asking for 200 x 200 px cells would take
