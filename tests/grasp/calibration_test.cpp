@@ -56,6 +56,8 @@ TEST(CalibrationTest, ProbabilityIsFiniteAndMonotoneForExtremeValues) {
   EXPECT_DOUBLE_EQ(s.probability(1e6), 1.0);
   EXPECT_DOUBLE_EQ(s.probability(-1e6), 0.0);
   EXPECT_GT(s.probability(1.0), s.probability(0.5));
+  EXPECT_EQ(s.probabilities({0.0, 1.0, -1e6}),
+            (std::vector<double>{0.5, s.probability(1.0), s.probability(-1e6)}));
 }
 
 TEST(CalibrationTest, SeparableOutcomesGiveAFiniteSteepSigmoid) {

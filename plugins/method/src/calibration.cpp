@@ -61,6 +61,13 @@ double PlattScaling::probability(double decision_value) const {
   return sigmoid(a * decision_value + b).p;
 }
 
+std::vector<double> PlattScaling::probabilities(const std::vector<double>& decision_values) const {
+  std::vector<double> p;
+  p.reserve(decision_values.size());
+  for (const double f : decision_values) p.push_back(probability(f));
+  return p;
+}
+
 PlattScaling fit_platt_scaling(const std::vector<double>& f, const std::vector<bool>& successes) {
   check_inputs(f, successes, "Platt scaling");
   const double wins = static_cast<double>(std::count(successes.begin(), successes.end(), true));

@@ -5,6 +5,7 @@
 #include "antipode/grasp/calibration.hpp"
 #include "antipode/grasp/svm_model.hpp"
 #include "nodes.hpp"
+#include "scored_examples.hpp"
 
 namespace antipode::training {
 namespace {
@@ -39,26 +40,22 @@ class CalibrateClassifier final : public bt::SyncActionNode {
     const TrainingSetPtr set = get_input<TrainingSetPtr>("dataset");
     SvmModel model = SvmModel::load(model_file);
     model.check_compatible(set->descriptor, set->geometry, model_file);
-    if (set->positives() == 0 || set->negatives() == 0) {
+    const ScoredExamples scored = score_examples(model, *set, get_input<int>("threads"));
+    if (!scored.has_both_outcomes()) {
       fail("dataset", "calibration needs trials that held and trials that failed; the " +
                           std::to_string(set->size()) + " examples hold " +
                           std::to_string(set->positives()) + " successes");
     }
-    set->validate();
-    const std::vector<double> values = model.decision_values(
-        set->features.data(), set->size(), set->dimension, get_input<int>("threads"));
-    std::vector<bool> held(set->size());
-    for (std::size_t i = 0; i < set->size(); ++i) held[i] = set->labels[i] > 0;
-    model.calibration = fit_platt_scaling(values, held);
+    model.calibration = fit_platt_scaling(scored.values, scored.held);
     model.save(out);
-    std::vector<double> p(values.size());
-    for (std::size_t i = 0; i < values.size(); ++i) p[i] = model.calibration.probability(values[i]);
+    const std::vector<double> p = model.calibration.probabilities(scored.values);
     log("calibrated on " + std::to_string(set->size()) + " held-out examples (" +
         percent(double(set->positives()) / double(set->size())) +
         " held): P(success) = 1 / (1 + exp(" + std::to_string(model.calibration.a) + " f + " +
         std::to_string(model.calibration.b) + ")); area under the ROC curve " +
-        std::to_string(roc_auc(values, held)) + "; calibration error on these examples " +
-        percent(calibration_error(calibration_table(p, held))) + "; written to " + out);
+        std::to_string(roc_auc(scored.values, scored.held)) +
+        "; calibration error on these examples " +
+        percent(calibration_error(calibration_table(p, scored.held))) + "; written to " + out);
     return bt::Status::kSuccess;
   }
 };

@@ -8,17 +8,10 @@
 #include "antipode/grasp/calibration.hpp"
 #include "antipode/grasp/svm_training.hpp"
 #include "nodes.hpp"
+#include "scored_examples.hpp"
 
 namespace antipode::training {
 namespace {
-
-std::vector<bool> successes(const TrainingSet& set) {
-  std::vector<bool> out(set.size());
-  for (std::size_t i = 0; i < set.size(); ++i) out[i] = set.labels[i] > 0;
-  return out;
-}
-
-bool has_both_labels(const TrainingSet& set) { return set.positives() > 0 && set.negatives() > 0; }
 
 nlohmann::json report(const ConfusionMatrix& c, const TrainingSet& set, const std::string& model) {
   return {{"model", model},
@@ -57,10 +50,8 @@ class EvaluateClassifier final : public bt::SyncActionNode {
     const TrainingSetPtr set = get_input<TrainingSetPtr>("dataset");
     const SvmModel model = SvmModel::load(model_file);
     model.check_compatible(set->descriptor, set->geometry, model_file);
-    set->validate();
-    const std::vector<double> values = model.decision_values(
-        set->features.data(), set->size(), set->dimension, get_input<int>("threads"));
-    const ConfusionMatrix c = confusion(values, set->labels, get_input<double>("threshold"));
+    const ScoredExamples scored = score_examples(model, *set, get_input<int>("threads"));
+    const ConfusionMatrix c = confusion(scored.values, set->labels, get_input<double>("threshold"));
     log(std::to_string(set->size()) + " examples (" + std::to_string(set->positives()) +
         " positive, " + std::to_string(set->negatives()) + " negative): accuracy " +
         percent(c.accuracy()) + ", precision " + percent(c.precision()) + ", recall " +
@@ -69,23 +60,21 @@ class EvaluateClassifier final : public bt::SyncActionNode {
     log("  grasp        " + column(c.tp) + column(c.fn));
     log("  not a grasp  " + column(c.fp) + column(c.tn));
     nlohmann::json numbers = report(c, *set, model_file);
-    if (has_both_labels(*set)) add_ranking(values, *set, model, numbers);
+    if (scored.has_both_outcomes()) add_ranking(scored, model, numbers);
     write_report(numbers);
     return bt::Status::kSuccess;
   }
 
  private:
   // The area under the ROC curve, and for a calibrated model the calibration by decile.
-  void add_ranking(const std::vector<double>& values, const TrainingSet& set, const SvmModel& model,
+  void add_ranking(const ScoredExamples& scored, const SvmModel& model,
                    nlohmann::json& numbers) const {
-    const std::vector<bool> held = successes(set);
-    const double auc = roc_auc(values, held);
+    const double auc = roc_auc(scored.values, scored.held);
     numbers["roc_auc"] = auc;
     log("area under the ROC curve " + fixed(auc, 3));
     if (!model.calibration.fitted()) return;
-    std::vector<double> p(values.size());
-    for (std::size_t i = 0; i < values.size(); ++i) p[i] = model.calibration.probability(values[i]);
-    const std::vector<CalibrationBin> table = calibration_table(p, held);
+    const std::vector<CalibrationBin> table =
+        calibration_table(model.calibration.probabilities(scored.values), scored.held);
     numbers["calibration_error"] = calibration_error(table);
     log("calibration by decile (mean predicted / observed, examples):");
     for (const CalibrationBin& bin : table) {

@@ -31,6 +31,8 @@ struct PlattScaling {
   bool fitted() const { return examples > 0; }
   /// 1 / (1 + exp(a f + b)), computed without overflow; in [0, 1].
   double probability(double decision_value) const;
+  /// probability() of each decision value.
+  std::vector<double> probabilities(const std::vector<double>& decision_values) const;
 };
 
 /// Fits `PlattScaling` to decision values and their outcomes (true: success) by Newton's
