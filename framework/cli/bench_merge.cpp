@@ -1,9 +1,11 @@
 #include "bench_merge.hpp"
 
 #include <algorithm>
+#include <cstdint>
 #include <fstream>
 #include <iostream>
 #include <set>
+#include <sstream>
 
 #include <nlohmann/json.hpp>
 
@@ -11,6 +13,7 @@
 #include "antipode/core/error.hpp"
 #include "bench_report.hpp"
 #include "clutter_bench.hpp"
+#include "clutter_protocols.hpp"
 #include "exit_codes.hpp"
 
 namespace antipode::cli {
@@ -33,6 +36,11 @@ bool per_shard(const std::string& key, const std::string& records) {
   return key == records || keys.count(key) > 0;
 }
 
+// The most shards and tasks a report may claim (`--shard` takes at most 10000 shards;
+// `--runs`, and `--poses` times the objects, stay far below the tasks).
+constexpr std::int64_t kMaxShards = 10000;
+constexpr std::int64_t kMaxTasks = 10000000;
+
 Json read_shard(const std::string& path) {
   std::ifstream file(path);
   if (!file) throw Error(path + ": cannot read the report");
@@ -49,6 +57,16 @@ Json read_shard(const std::string& path) {
   if (!shard.is_object() || !shard.contains("index") || !shard.contains("count") ||
       !shard.contains("tasks"))
     throw Error(path + ": not a shard's report (no \"shard\" entry: run the bench with --shard)");
+  // Bounded as the bench's options are, before anything is sized by them.
+  const auto whole = [&](const char* key, std::int64_t lo, std::int64_t hi) {
+    const Json& v = shard[key];
+    if (!v.is_number_integer() || v.get<std::int64_t>() < lo || v.get<std::int64_t>() > hi)
+      throw Error(path + ": \"shard\": \"" + key + "\" is " + v.dump() +
+                  ", not a whole number in " + std::to_string(lo) + ".." + std::to_string(hi));
+  };
+  whole("count", 1, kMaxShards);
+  whole("index", 1, shard["count"].get<std::int64_t>());
+  whole("tasks", 0, kMaxTasks);
   if (!report.contains(records_key(report["bench"])) ||
       !report[records_key(report["bench"])].is_array())
     throw Error(path + ": the report has no records");
@@ -88,9 +106,11 @@ Json joined_records(const std::vector<Json>& shards, const std::vector<std::stri
     if (!seen.insert(shards[i]["shard"]["index"].get<int>()).second)
       throw Error(paths[i] + ": shard " + shards[i]["shard"]["index"].dump() + " given twice");
   if (int(seen.size()) != count) {
-    std::string missing;
-    for (int i = 1; i <= count; ++i)
-      if (!seen.count(i)) missing += (missing.empty() ? "" : ", ") + std::to_string(i);
+    std::string missing;  // the first ten
+    int listed = 0;
+    for (int i = 1; i <= count && listed <= 10; ++i)
+      if (!seen.count(i))
+        missing += (listed++ == 10 ? ", ..." : (missing.empty() ? "" : ", ") + std::to_string(i));
     throw Error("shards " + missing + " of " + std::to_string(count) + " are missing");
   }
   std::vector<Json> records;
@@ -134,20 +154,33 @@ int bench_merge_command(const BenchMergeOptions& o) {
 
   Json merged;
   double wall_s = 0.0;
-  for (const Json& shard : shards) wall_s += shard.value("wall_s", 0.0);
+  for (std::size_t i = 0; i < shards.size(); ++i) {
+    const auto entry = shards[i].find("wall_s");
+    if (entry != shards[i].end() && !entry->is_number())
+      throw Error(o.reports[i] + ": \"wall_s\" is " + entry->dump() + ", not a number of seconds");
+    if (entry != shards[i].end()) wall_s += entry->get<double>();
+  }
   for (const auto& [key, value] : shards.front().items())
     if (key != "shard") merged[key] = value;
   merged["wall_s"] = wall_s;
   merged["shards"] = shards.size();
   merged[records_key(bench)] = records;
-  std::cout << bench << " bench: " << shards.size() << " shards, " << records.size()
-            << " records\n\n";
   merged["summary"] = summary;
-  if (bench == "clutter")
-    print_clutter_summary(std::cout, summary, merged.value("protocol", "paper"));
-  else
-    print_report(std::cout, records, summary, variants);
-  std::cout << "wall time " << wall_s << " s (the shards' sum)\n";
+  // What is printed reads the merged report: a malformed entry is the shards' fault.
+  std::ostringstream printed;
+  try {
+    if (bench == "clutter")
+      print_clutter_summary(printed, summary, report_protocol(merged).name);
+    else
+      print_report(printed, records, summary, variants);
+  } catch (const Error& e) {
+    throw Error("bench merge: " + o.reports.front() + ": " + e.what());
+  } catch (const Json::exception& e) {
+    throw Error("bench merge: a shard has a malformed entry (" + std::string(e.what()) + ")");
+  }
+  std::cout << bench << " bench: " << shards.size() << " shards, " << records.size()
+            << " records\n\n"
+            << printed.str() << "wall time " << wall_s << " s (the shards' sum)\n";
   write_report(std::cout, o.report_path, merged);
   return kExitSuccess;
 }

@@ -136,7 +136,7 @@ std::string failure_class(const GraspAttempt& r) {
   if (!r.reached_pose) return "stopped short of the pose";
   if (r.between_fingers_at_detection.empty()) return "nothing between the planned fingers";
   if (r.outcome == GraspOutcome::kEmptyGrasp) return "closed on nothing";
-  if (r.outcome == GraspOutcome::kObjectKnockedOut) return "knocked off the table";
+  if (r.outcome == GraspOutcome::kObjectKnockedOut) return "knocked out";
   return "slipped";
 }
 

@@ -57,7 +57,7 @@ nlohmann::ordered_json record_json(const GraspAttempt& record);
 /// The failure class of an executed attempt, from the cell's record (docs/cli.md lists
 /// them): "success", "collision at the stand-off pose", "arm collision", "planned into the
 /// object", "stopped short of the pose", "nothing between the planned fingers", "closed on
-/// nothing", "knocked off the table", "slipped" or "not executed".
+/// nothing", "knocked out", "slipped" or "not executed".
 std::string failure_class(const GraspAttempt& record);
 
 /// Throws antipode::Error unless the tree file at `tree_path` (which exists) has a component

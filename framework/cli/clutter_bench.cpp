@@ -45,6 +45,7 @@ struct RunSettings {
   std::string pictures_dir;    ///< failed attempts drawn here as seed-S-cycle-NN.png ("" = none)
   std::string selections_dir;  ///< each cycle's selection as seed-S-cycle-NN.json ("" = none)
   int threads = 2;
+  int objects_dropped = 0;  ///< objects the cell drops into each run's scene
   std::vector<std::pair<std::string, std::string>> entries;  ///< the same for every run
   /// Objects left whose narrowest horizontal extent lies in [min, max] count as holdable.
   std::pair<double, double> graspable_m{kMinGraspableWidthM, kMaxGraspableWidthM};
@@ -105,7 +106,10 @@ void require_tree_entry(const RunSettings& settings, const std::string& option,
   if (settings.tree_yaml.find("{" + key + "}") == std::string::npos)
     throw Error(option + ": the tree '" + settings.tree_path + "' " + what + " (it reads no {" +
                 key + "} entry; trees/clear_box.yaml does)");
-  fs::create_directories(dir);
+  std::error_code error;
+  fs::create_directories(dir, error);
+  if (error)
+    throw Error(option + ": cannot make the folder '" + dir + "' (" + error.message() + ")");
 }
 
 bt::Tree load_run_tree(const Session& session, const RunSettings& settings, std::uint64_t seed) {
@@ -197,6 +201,9 @@ Json run_one(const Session& session, const RunSettings& settings, std::size_t in
       out["removed"] = run.successes();
       out["left"] = run.objects_left();
       out["lost"] = run.objects_lost();
+      // Objects that did not come to rest in the workspace (bounced out of the box).
+      if (run.objects_at_start >= 0)
+        out["missed_at_filling"] = std::max(0, settings.objects_dropped - run.objects_at_start);
       out["stop"] = to_string(run.stop);
       out["summary"] = run.summary();
       record_what_was_left(tree, settings.graspable_m, out);
@@ -281,8 +288,11 @@ void print_clutter_summary(std::ostream& out, const Json& s, const std::string& 
   out << protocol.success_name << " " << s["successes"] << " / " << s["attempts"] << " = "
       << interval(s["success_rate"]) << " (" << published(true) << ")\n";
   out << protocol.removed_name << " " << s["removed"] << " / " << s["objects"] << " = "
-      << interval(s["removed_rate"]) << " (" << published(false) << "); lost off the table "
-      << s["lost"] << "\n";
+      << interval(s["removed_rate"]) << " (" << published(false) << ")\n";
+  out << "objects out of the workspace (off the table or out of the box) other than by a pick: "
+      << s["lost"] << " during the runs";
+  if (s.contains("missed_at_filling")) out << ", " << s["missed_at_filling"] << " while filling";
+  out << "\n";
   if (s.contains("left_graspable")) {
     const int graspable = s["removed"].get<int>() + s["left_graspable"].get<int>();
     const auto [min_m, max_m] = summary_graspable_width_m(s);
@@ -338,10 +348,11 @@ Json between_runs_intervals(const Json& runs) {
 
 Json summarise_clutter(const Json& runs) {
   int attempts = 0, successes = 0, objects = 0, removed = 0, lost = 0, cycles = 0, no_grasp = 0,
-      errors = 0;
+      errors = 0, missed_at_filling = 0;
   int left = 0, left_graspable = 0;
   Json graspable_width = {kMinGraspableWidthM, kMaxGraspableWidthM};
-  bool truth = true;  // every run says what was left
+  bool truth = true;            // every run says what was left
+  bool filling_counted = true;  // ... and how many objects missed the box while filling
   Json reasons = Json::object(), groups = Json::object(), stops = Json::object();
   std::vector<double> cycle_s, run_s;
   for (const Json& run : runs) {
@@ -356,6 +367,8 @@ Json summarise_clutter(const Json& runs) {
       removed += run.at("removed").get<int>();
     }
     lost += std::max(0, run.at("lost").get<int>());
+    filling_counted = filling_counted && run.contains("missed_at_filling");  // not in older reports
+    missed_at_filling += run.value("missed_at_filling", 0);
     truth = truth && run.contains("left_graspable");
     if (truth) {
       left += int(run.at("left_objects").size());
@@ -369,8 +382,10 @@ Json summarise_clutter(const Json& runs) {
       ++cycles;
       cycle_s.push_back(cycle.at("seconds").get<double>());
       const std::string reason = cycle.at("reason");
-      if (cycle.at("outcome") == kNoGraspFound) ++no_grasp;
-      if (cycle.at("outcome") == kNoGraspFound || reason == "success") continue;
+      const bool found_none =
+          cycle.at("outcome") == kNoGraspFound || cycle.at("outcome") == kNothingPredictedToHold;
+      if (found_none) ++no_grasp;
+      if (found_none || reason == "success") continue;
       reasons[reason] = reasons.value(reason, 0) + 1;
       const std::string group = paper_class(reason);
       groups[group] = groups.value(group, 0) + 1;
@@ -397,6 +412,7 @@ Json summarise_clutter(const Json& runs) {
     summary["success_rate"]["ci95_runs"] = between_runs.at("success");
   if (between_runs.contains("removed"))
     summary["removed_rate"]["ci95_runs"] = between_runs.at("removed");
+  if (filling_counted) summary["missed_at_filling"] = missed_at_filling;
   // The objects the gripper could hold as they lay: those removed and those left that fit.
   if (truth && errors < int(runs.size())) {
     summary["left"] = left;
@@ -417,6 +433,7 @@ int bench_clutter_command(const ClutterBenchOptions& options) {
   settings.tree_path = o.tree_path;
   settings.pictures_dir = o.pictures_dir;
   settings.selections_dir = o.selections_dir;
+  settings.objects_dropped = o.objects_per_run;
   std::ifstream tree_file(o.tree_path);
   settings.tree_yaml.assign(std::istreambuf_iterator<char>(tree_file), {});
   // The pictures and selections are the tree's: it writes them from the `picture_prefix` and

@@ -45,4 +45,14 @@ const ClutterProtocol& clutter_protocol(const std::string& name) {
   throw Error("--protocol: unknown protocol '" + name + "' (paper, vgn-pile, vgn-packed)");
 }
 
+const ClutterProtocol& report_protocol(const nlohmann::ordered_json& report) {
+  const auto entry = report.find("protocol");
+  if (entry == report.end()) return clutter_protocol("paper");
+  if (entry->is_string())
+    for (const char* name : {"paper", "vgn-pile", "vgn-packed"})
+      if (*entry == name) return clutter_protocol(name);
+  throw Error("the report's \"protocol\" is " + entry->dump() +
+              ", not one of \"paper\", \"vgn-pile\", \"vgn-packed\"");
+}
+
 }  // namespace antipode::cli

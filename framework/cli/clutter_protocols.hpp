@@ -5,6 +5,8 @@
 #include <string>
 #include <vector>
 
+#include <nlohmann/json.hpp>
+
 namespace antipode::cli {
 
 /// A published result: who, grasp success and objects removed (percent; < 0 = not given).
@@ -26,5 +28,9 @@ struct ClutterProtocol {
 
 /// The protocol called `name`; throws antipode::Error listing the known ones otherwise.
 const ClutterProtocol& clutter_protocol(const std::string& name);
+
+/// The protocol a clutter bench's report names (its "protocol" entry; "paper" without one);
+/// throws antipode::Error, naming the report's entry, for one that is not a known name.
+const ClutterProtocol& report_protocol(const nlohmann::ordered_json& report);
 
 }  // namespace antipode::cli

@@ -25,9 +25,7 @@ std::string settings_text(const Json& r) {
          " process(es), " + wall_time(r.at("wall_s")) + " of wall time.\n\n";
 }
 
-const ClutterProtocol& protocol_of(const Json& r) {
-  return clutter_protocol(r.value("protocol", "paper"));
-}
+const ClutterProtocol& protocol_of(const Json& r) { return report_protocol(r); }
 
 std::string command_text(const Json& r, const std::string& name) {
   const ClutterProtocol& protocol = protocol_of(r);
@@ -126,18 +124,22 @@ std::string failures(const Json& s) {
   std::string stops;
   for (const auto& [stop, count] : s.at("stops").items())
     stops += (stops.empty() ? "" : ", ") + stop + " " + count.dump();
-  char seconds[160];
+  char seconds[320];
   std::snprintf(seconds, sizeof seconds,
                 "Median cycle (capture to outcome) %.2f s, median run %.1f s; %d of %d cycles "
-                "found no grasp; objects lost off the table: %d.\n\n",
+                "found no grasp; objects out of the workspace (off the table or out of the box) "
+                "other than by a pick: %d during the runs",
                 s.at("cycle_s_median").get<double>(), s.at("run_s_median").get<double>(),
                 s.at("no_grasp").get<int>(), s.at("cycles").get<int>(), s.at("lost").get<int>());
+  std::string lost = seconds;
+  if (s.contains("missed_at_filling"))  // reports older than the count have no such entry
+    lost += ", " + s.at("missed_at_filling").dump() + " while filling the box";
   const std::string groups = rows.empty()
                                  ? "Failures as the paper groups them: none.\n"
                                  : "Failures as the paper groups them (share of attempts):\n\n" +
                                        markdown_table({"group", "attempts", "share"}, rows);
   return groups + "\nFailure classes: " + (classes.empty() ? "none" : classes) +
-         ". Runs ended: " + stops + ". " + seconds;
+         ". Runs ended: " + stops + ". " + lost + ".\n\n";
 }
 
 // More runs than this get one line about them instead of a row and a bar each.

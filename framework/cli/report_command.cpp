@@ -5,6 +5,9 @@
 #include <iostream>
 #include <map>
 #include <sstream>
+#include <system_error>
+
+#include <unistd.h>
 
 #include <nlohmann/json.hpp>
 
@@ -54,12 +57,48 @@ ReportSection section_of(const std::string& path, const std::string& name, const
     const std::string bench = report.value("bench", "");
     if (bench == "isolation") return isolation_section(report, name, plots);
     if (bench == "clutter") return clutter_section(report, name, plots);
+    if (bench == "classifier") return calibration_section(report, name, plots);
   } catch (const Json::exception& e) {
     throw Error(path + ": an entry the report needs is missing or malformed (" +
                 std::string(e.what()) + ")");
   }
-  throw Error(path + ": not the report of an isolation or clutter bench");
+  throw Error(path + ": not the report of an isolation or clutter bench or of eval-classifier");
 }
+
+// A folder of its own in the system's temporary folder, removed with this object unless
+// kept: the charts are drawn there and moved to --plots only once every section is made, so
+// that a bad report leaves nothing behind.
+class StagingFolder {
+ public:
+  StagingFolder()
+      : path_(fs::temp_directory_path() / ("antipode-report-" + std::to_string(::getpid()))) {
+    fs::remove_all(path_);
+    fs::create_directories(path_);
+  }
+  ~StagingFolder() {
+    std::error_code ignored;
+    fs::remove_all(path_, ignored);
+  }
+  StagingFolder(const StagingFolder&) = delete;
+  StagingFolder& operator=(const StagingFolder&) = delete;
+  const fs::path& path() const { return path_; }
+  /// Copies every file drawn here into `dir` (made if missing), replacing files of that name.
+  /// Throws antipode::Error naming `dir` when it cannot be made or written.
+  void move_into(const fs::path& dir) const {
+    try {
+      fs::create_directories(dir);
+      for (const auto& entry : fs::directory_iterator(path_))
+        fs::copy_file(entry.path(), dir / entry.path().filename(),
+                      fs::copy_options::overwrite_existing);
+    } catch (const fs::filesystem_error& e) {
+      throw Error("report: --plots: cannot write the charts to '" + dir.string() + "' (" +
+                  e.code().message() + ")");
+    }
+  }
+
+ private:
+  fs::path path_;
+};
 
 std::string introduction(const std::vector<std::string>& reports) {
   std::string text =
@@ -80,8 +119,11 @@ int report_command(const ReportOptions& o) {
   const fs::path out = fs::absolute(o.out_path);
   const fs::path plots_dir =
       o.plots_dir.empty() ? out.parent_path() / "images" : fs::absolute(o.plots_dir);
-  fs::create_directories(plots_dir);
-  const PlotPlace plots{plots_dir.string(), fs::relative(plots_dir, out.parent_path()).string()};
+  if (fs::exists(plots_dir) && !fs::is_directory(plots_dir))
+    throw Error("report: --plots: '" + plots_dir.string() + "' is not a folder");
+  const StagingFolder staging;
+  const PlotPlace plots{staging.path().string(),
+                        fs::relative(plots_dir, out.parent_path()).string()};
   const Notes notes = read_notes(o.notes_path);
 
   std::string markdown = introduction(o.reports) + notes.intro;
@@ -102,13 +144,14 @@ int report_command(const ReportOptions& o) {
   }
   for (std::size_t i = 0; i < notes.sections.size(); ++i)
     if (!placed[i]) markdown += "## " + notes.sections[i].title + "\n" + notes.sections[i].markdown;
+  staging.move_into(plots_dir);
   write_file_atomically(out.string(), [&](const std::string& temporary) {
     std::ofstream file(temporary);
     file << markdown;
     if (!file) throw Error("cannot write the report");
   });
   std::cout << "report: " << o.out_path << " (" << o.reports.size() << " bench reports, charts in "
-            << plots.dir << ")\n";
+            << plots_dir.string() << ")\n";
   return kExitSuccess;
 }
 

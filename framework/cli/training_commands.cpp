@@ -1,9 +1,14 @@
 // `antipode train` and `antipode eval-classifier`: the training and evaluation trees run with
 // their file entries filled from the command line, with a progress bar on a terminal.
+#include <fstream>
 #include <iostream>
+
+#include <nlohmann/json.hpp>
 
 #include "antipode/bt/loader.hpp"
 #include "antipode/core/atomic_file.hpp"
+#include "antipode/core/error.hpp"
+#include "bench_report.hpp"
 #include "commands.hpp"
 #include "exit_codes.hpp"
 #include "progress_bar.hpp"
@@ -38,11 +43,35 @@ int train_command(const TrainOptions& options) {
                   options.settings);
 }
 
+namespace {
+
+// Adds to the tree's report what `antipode report` needs to place it: the kind, the
+// command's settings and the machine.
+void stamp_eval_report(const EvalOptions& o) {
+  std::ifstream in(o.report_path);
+  if (!in) return;  // the tree wrote no report (its EvaluateClassifier has no report_file)
+  nlohmann::ordered_json report = nlohmann::ordered_json::parse(in, nullptr, false);
+  if (report.is_discarded()) throw Error(o.report_path + ": the tree wrote no JSON report");
+  report["bench"] = "classifier";
+  report["tree"] = o.tree_path;
+  report["overrides"] = o.settings.set;
+  report["machine"] = machine_json();
+  write_file_atomically(o.report_path, [&](const std::string& temporary) {
+    std::ofstream out(temporary);
+    out << report.dump(2) << '\n';
+    if (!out.flush()) throw Error("cannot write " + temporary);
+  });
+}
+
+}  // namespace
+
 int eval_classifier_command(const EvalOptions& options) {
   if (!options.report_path.empty()) check_output_path(options.report_path);
-  return run_tree(options.tree_path,
-                  {"model_file=" + options.model_path, "report_file=" + options.report_path},
-                  options.settings);
+  const int code = run_tree(
+      options.tree_path, {"model_file=" + options.model_path, "report_file=" + options.report_path},
+      options.settings);
+  if (code == kExitSuccess && !options.report_path.empty()) stamp_eval_report(options);
+  return code;
 }
 
 }  // namespace antipode::cli

@@ -46,6 +46,30 @@ TEST(Scene, PileSettlesInsideTheBoxWithoutInterpenetration) {
   }
 }
 
+// Balls dropped from high into a small, low box: some bounce out; with refills, each is
+// dropped again until it stays in.
+TEST(Scene, RefillsPutBackWhatBouncedOutOfTheBox) {
+  SceneSpec spec = parse(R"(
+box: { inner_size_m: [0.12, 0.12], wall_height_m: 0.02 }
+placement: pile
+drop_height_m: 0.4
+random_objects: { count: 6, shapes: [sphere] }
+)");
+  const auto outside = [&](int refills) {
+    spec.box.refills = refills;
+    int count = 0;
+    for (std::uint64_t seed = 0; seed < 3; ++seed) {
+      PhysicsWorld world(PhysicsOptions{});
+      MeshCache meshes;
+      for (int id : build_scene(spec, seed, meshes, world))
+        count += !inside_box(spec.box, world.pose(id).translation());
+    }
+    return count;
+  };
+  EXPECT_GT(outside(0), 0);
+  EXPECT_EQ(outside(5), 0);
+}
+
 // VGN's pile: the box is lifted away once the objects have settled; no wall is left and
 // the objects stay on the table.
 TEST(Scene, ABoxRemovedAfterTheDropLeavesThePileOnTheTable) {
@@ -144,6 +168,11 @@ TEST(Scene, ImpossibleSizesAndAnEmptyFileAreErrors) {
   EXPECT_NE(error_of("box: { inner_size_m: [0.3, 0] }\n").find("'inner_size_m'"),
             std::string::npos);
   EXPECT_NE(error_of("table: { top_z_m: 1e30 }\n").find("'top_z_m'"), std::string::npos);
+  // A NaN anywhere in a vector, not only first.
+  for (const char* yaml :
+       {"fixtures: [{ size_m: [0.1, 4.0, .nan] }]\n", "fixtures: [{ size_m: [.nan, 4.0, 0.1] }]\n",
+        "box: { inner_size_m: [0.3, .nan] }\n", "table: { center_m: [0.7, .inf] }\n"})
+    EXPECT_NE(error_of(yaml).find("must be finite numbers"), std::string::npos) << yaml;
   std::string crowd = "objects:\n";
   for (int i = 0; i < 101; ++i) crowd += "  - { shape: sphere, size_m: [0.05] }\n";
   EXPECT_NE(error_of(crowd).find("'objects' lists 101 objects; a scene holds at most 100"),

@@ -175,6 +175,16 @@ TEST_F(ClutterBenchTest, ReportWritesMarkdownAndAChart) {
   std::ofstream(file("broken.json")) << broken.dump();
   report_error(file("broken.json") + " --out " + file("x.md"), "key 'attempts' not found");
   EXPECT_FALSE(std::filesystem::exists(file("x.md")));
+  // Nothing is left behind: no chart of the good report before the broken one, no folder.
+  report_error(file("clutter-small.json") + " " + file("broken.json") + " --out " + file("x.md") +
+                   " --plots " + file("bad/charts"),
+               "key 'attempts' not found");
+  EXPECT_FALSE(std::filesystem::exists(file("bad/charts")));
+  // A --plots folder that cannot be made is one clear error.
+  report_error(file("clutter-small.json") + " --out " + file("y.md") + " --plots " +
+                   file("clutter-small.json") + "/charts",
+               "--plots: cannot write the charts to");
+  EXPECT_FALSE(std::filesystem::exists(file("y.md")));
 }
 
 // A run whose classifier is swapped by `--set` is reported apart, named as the paper names
@@ -271,6 +281,28 @@ TEST_F(ClutterBenchTest, MergeRefusesShardsThatAreNotOneWholeBench) {
   merge_error(file("1.json") + " " + file("2_broken.json") + " --report " + file("m.json"),
               "a shard's record lacks an entry or has a malformed one");
   EXPECT_FALSE(std::filesystem::exists(file("m.json")));
+  // Entries of the wrong type are named, never an internal error.
+  const auto with = [&](const std::string& key, const nlohmann::json& value) {
+    auto shard = second;
+    shard["run_records"][0]["attempts"] = 1;
+    shard[key] = value;
+    std::ofstream(file("2_" + key + ".json")) << shard.dump();
+    return file("1.json") + " " + file("2_" + key + ".json");
+  };
+  merge_error(with("wall_s", "12 s"), "\"wall_s\" is \"12 s\", not a number of seconds");
+  merge_error(with("protocol", 3), "entry \"protocol\" differs");
+  auto first = nlohmann::json::parse(std::ifstream(file("1.json")));
+  first["protocol"] = 3;
+  std::ofstream(file("1_protocol.json")) << first.dump();
+  with("protocol", 3);  // writes 2_protocol.json
+  merge_error(file("1_protocol.json") + " " + file("2_protocol.json"),
+              "the report's \"protocol\" is 3, not one of");
+  // A shard count no bench makes is refused before anything is sized by it.
+  auto huge = first;
+  huge["shard"]["count"] = 2147483647;
+  std::ofstream(file("1_huge.json")) << huge.dump();
+  merge_error(file("1_huge.json"),
+              "\"shard\": \"count\" is 2147483647, not a whole number in 1..10000");
 }
 
 // VGN's protocol: rounds of five objects from one noisy view; a round ends when the scene is
@@ -324,21 +356,21 @@ TEST_F(ClutterBenchTest, AGripperFileSetsTheHandAndWhatCountsAsHoldable) {
 // and nothing else.
 TEST_F(ClutterBenchTest, PicturesShowEveryFailedAttempt) {
   const std::string folder = file("pictures");
-  const auto r = report("--runs 1 --seed 2001 --pictures " + folder, "pictured.json");
+  const auto r = report("--runs 1 --seed 2002 --pictures " + folder, "pictured.json");
   ASSERT_EQ(r["run_records"].size(), 1u);
   std::set<std::string> expected;
   const auto& cycles = r["run_records"][0]["cycles"];
   for (std::size_t c = 0; c < cycles.size(); ++c) {
     if (!cycles[c].contains("record") || cycles[c]["outcome"] == "success") continue;
     char name[64];
-    std::snprintf(name, sizeof name, "seed-2001-cycle-%02zu.png", c + 1);
+    std::snprintf(name, sizeof name, "seed-2002-cycle-%02zu.png", c + 1);
     expected.insert(name);
   }
   std::set<std::string> drawn;
   for (const auto& entry : std::filesystem::directory_iterator(folder))
     drawn.insert(entry.path().filename().string());
   EXPECT_EQ(drawn, expected);
-  EXPECT_FALSE(expected.empty()) << "seed 2001 no longer fails an attempt: pick another seed";
+  EXPECT_FALSE(expected.empty()) << "seed 2002 no longer fails an attempt: pick another seed";
 }
 
 // --selections writes, for every cycle that chose a grasp, what the selection kept - in rank
@@ -425,6 +457,8 @@ TEST_F(ClutterBenchTest, BadOptionsAreOneLineErrors) {
                "--selections: the tree 'trees/vgn_round.yaml' writes no selections");
   EXPECT_FALSE(std::filesystem::exists(file("vgn-selections")));
   expect_error("--selections CMakeLists.txt", "--selections: 'CMakeLists.txt' is not a folder");
+  expect_error("--pictures CMakeLists.txt/pictures",
+               "--pictures: cannot make the folder 'CMakeLists.txt/pictures' (Not a directory)");
 }
 
 }  // namespace

@@ -140,6 +140,18 @@ TEST_F(OutcomeDataTest, ASmallModelRanksHeldOutTrialsByWhetherTheyHeld) {
   EXPECT_GE(report["examples"].get<int>(), 100) << measured.out;
   EXPECT_GE(report["roc_auc"].get<double>(), 0.85) << measured.out;
   EXPECT_EQ(report["calibration"].size(), 10u) << measured.out;
+
+  // `antipode report` gives the calibration by decile as a table and a chart.
+  const CommandResult reported = antipode("report " + file("eval.json") + " --out " +
+                                          file("results.md") + " --plots " + file("plots"));
+  ASSERT_EQ(reported.exit_code, 0) << reported.out;
+  std::ifstream md(file("results.md"));
+  const std::string text(std::istreambuf_iterator<char>(md), {});
+  EXPECT_NE(text.find("## Calibration: `small.model` on `" + file("test") + "`"), std::string::npos)
+      << text;
+  EXPECT_NE(text.find("| 10 | "), std::string::npos) << text;  // the last decile's row
+  EXPECT_NE(text.find("--set trials=" + file("test")), std::string::npos) << text;
+  EXPECT_TRUE(fs::exists(file("plots") + "/eval-calibration.png"));
 }
 
 // Shards split the seeds: two shards together write what the whole run writes.

@@ -369,6 +369,18 @@ TEST_F(PipelineNodesTest, ClearBoxStopsAfterConsecutiveCyclesWithoutAGrasp) {
   EXPECT_EQ(run.summary(), "cleared 0 of 4 objects; 0 of 0 attempts succeeded");
 }
 
+// A cycle whose classifier predicted nothing to hold ends the run at once, with that reason.
+TEST_F(PipelineNodesTest, ClearBoxStopsWhenNothingIsPredictedToHold) {
+  const ClearingRun run = run_clearing(load(
+      clearing_tree("{ plugin: line_cell, objects: 4 }", "max_misses: 3",
+                    R"(SetBlackboard: { key: outcome, value: "no grasp predicted to hold" })")));
+  EXPECT_EQ(run.stop, ClearingStop::kNothingHolds);
+  EXPECT_EQ(run.cycles.size(), 1u);
+  EXPECT_EQ(run.attempts(), 0);
+  EXPECT_EQ(run.trailing_misses(), 1);
+  EXPECT_EQ(std::string(to_string(run.stop)), "no grasp was predicted to hold");
+}
+
 // VGN's rule: two consecutive failed attempts end the round.
 TEST_F(PipelineNodesTest, ClearBoxStopsAfterConsecutiveFailedAttempts) {
   const ClearingRun run = run_clearing(

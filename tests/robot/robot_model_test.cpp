@@ -190,5 +190,20 @@ TEST(RobotModel, FloatingJointsCannotFormAChain) {
             std::string::npos);
 }
 
+// Limits no position satisfies are refused when the chain is built, naming the joint: a
+// planner would otherwise search an empty space and report only that it found nothing.
+TEST(RobotModel, InvertedJointLimitsAreRefused) {
+  const RobotModel robot = RobotModel::parse(
+      "<robot name='r'><link name='a'/><link name='b'/>"
+      "<joint name='j' type='revolute'><parent link='a'/><child link='b'/><axis xyz='0 0 1'/>"
+      "<limit lower='1.0' upper='-1.0' effort='1' velocity='1'/></joint></robot>",
+      "inverted.urdf");
+  EXPECT_NE(error_of([&] { robot.chain("a", "b"); })
+                .find("inverted.urdf: joint 'j' has its lower limit (1.000000) above its upper "
+                      "limit (-1.000000)"),
+            std::string::npos)
+      << error_of([&] { robot.chain("a", "b"); });
+}
+
 }  // namespace
 }  // namespace antipode

@@ -16,6 +16,8 @@ const char* to_string(ClearingStop stop) {
       return "the run used all its cycles";
     case ClearingStop::kFailureStreak:
       return "consecutive attempts failed";
+    case ClearingStop::kNothingHolds:
+      return "no grasp was predicted to hold";
   }
   return "?";
 }

@@ -77,7 +77,10 @@ KDL::Joint to_kdl_joint(const urdf::Joint& j, const std::string& source) {
   }
 }
 
-JointLimits limits_of(const urdf::Joint& j) {
+// The joint's limits; throws antipode::Error, naming `source` and the joint, for limits no
+// position satisfies (lower above upper, or not numbers): every planner and solver would
+// otherwise search an empty space and report only that it found nothing.
+JointLimits limits_of(const urdf::Joint& j, const std::string& source) {
   JointLimits l;
   if (j.type == urdf::Joint::CONTINUOUS || !j.limits) {
     l.lower = -std::numeric_limits<double>::infinity();
@@ -87,6 +90,10 @@ JointLimits limits_of(const urdf::Joint& j) {
     l.upper = j.limits->upper;
   }
   if (j.limits) l.velocity = j.limits->velocity;
+  if (std::isnan(l.lower) || std::isnan(l.upper) || l.lower > l.upper)
+    throw Error(source + ": joint '" + j.name + "' has its lower limit (" +
+                std::to_string(l.lower) + ") above its upper limit (" + std::to_string(l.upper) +
+                ") or not a number; swap them");
   return l;
 }
 
@@ -164,7 +171,7 @@ KinematicChain RobotModel::chain(const std::string& base, const std::string& tip
         KDL::Segment((*it)->name, kdl_joint, to_kdl(joint.parent_to_joint_origin_transform)));
     if (joint.type == urdf::Joint::FIXED) continue;
     impl->joint_names.push_back(joint.name);
-    impl->limits.push_back(limits_of(joint));
+    impl->limits.push_back(limits_of(joint, impl_->source));
   }
   return KinematicChain(std::move(impl));
 }

@@ -151,9 +151,21 @@ BulletCell::BulletCell(SceneSpec scene, const CellOptions& options)
 
 JointState BulletCell::arm_state() const { return arm_ ? arm_->home() : JointState{}; }
 
+std::vector<int> BulletCell::objects_in_workspace() const {
+  const bool has_box = scene_.box.present && !scene_.box.removed_after_drop;
+  std::vector<int> ids;
+  for (const int id : objects()) {
+    const Eigen::Vector3d p = world_->pose(id).translation();
+    if (p.z() < scene_.table.top_z_m - 0.01) continue;  // about to be removed as fallen
+    if (has_box && !inside_box(scene_.box, p)) continue;
+    ids.push_back(id);
+  }
+  return ids;
+}
+
 std::vector<ObjectTruth> BulletCell::object_truth() const {
   std::vector<ObjectTruth> truth;
-  for (const int id : objects()) {
+  for (const int id : objects_in_workspace()) {
     ObjectTruth object{world_->name(id), world_->pose(id), 0.0};
     if (const auto mesh = world_->visual(id)) {
       std::vector<Eigen::Vector3d> vertices;
@@ -221,21 +233,33 @@ GraspAttempt BulletCell::execute(const GraspRequest& request) {
   ++attempts_;
   AttemptOptions attempt = options_.attempt;
   attempt.gripper.geometry = request.gripper;
-  const std::size_t before = objects().size();
+  const std::vector<int> before = objects_in_workspace();
   AttemptResult result = attempt_grasp(*world_, grasp.X_FrameHand, attempt);
   GraspAttempt& record = result.record;
   if (record.outcome == GraspOutcome::kSuccess) world_->remove_body(result.held_object);
   world_->settle(1.0);
-  const std::vector<std::string> fallen = remove_fallen_objects();
-  const std::size_t expected = before - (record.outcome == GraspOutcome::kSuccess ? 1 : 0);
+  const std::vector<std::string> out = names_gone(before, result.held_object);
+  remove_fallen_objects();
   if (record.outcome != GraspOutcome::kSuccess &&
-      record.outcome != GraspOutcome::kCollisionOnApproach && objects().size() < expected) {
+      record.outcome != GraspOutcome::kCollisionOnApproach && !out.empty()) {
     record.outcome = GraspOutcome::kObjectKnockedOut;
     std::string names;
-    for (const auto& name : fallen) names += (names.empty() ? "" : ", ") + name;
-    record.reason += "; knocked off the table: " + names;
+    for (const auto& name : out) names += (names.empty() ? "" : ", ") + name;
+    record.reason += "; knocked out of the workspace: " + names;
   }
   return record;
+}
+
+std::vector<std::string> BulletCell::names_gone(const std::vector<int>& before, int held) const {
+  const std::vector<int> now = objects_in_workspace();
+  std::vector<std::string> names;
+  for (const int id : before)
+    if (id != held && std::find(now.begin(), now.end(), id) == now.end())
+      names.push_back(world_->name(id) +
+                      (world_->pose(id).translation().z() < scene_.table.top_z_m - 0.01
+                           ? " (off the table)"
+                           : " (out of the box)"));
+  return names;
 }
 
 std::string BulletCell::follow_trajectory(const GraspRequest& request,
@@ -266,14 +290,9 @@ std::string BulletCell::follow_trajectory(const GraspRequest& request,
   return "";
 }
 
-std::vector<std::string> BulletCell::remove_fallen_objects() {
-  std::vector<std::string> names;
+void BulletCell::remove_fallen_objects() {
   for (int id : objects())
-    if (world_->pose(id).translation().z() < scene_.table.top_z_m - 0.01) {
-      names.push_back(world_->name(id));
-      world_->remove_body(id);
-    }
-  return names;
+    if (world_->pose(id).translation().z() < scene_.table.top_z_m - 0.01) world_->remove_body(id);
 }
 
 void BulletCell::reset(std::uint64_t seed) {

@@ -34,8 +34,11 @@ class BulletCell final : public Cell {
   std::vector<std::string> view_names() const override;
   Cloud capture(const std::vector<std::string>& views) override;
   JointState arm_state() const override;
-  std::optional<int> objects_left() const override { return int(objects().size()); }
-  /// Each object's name, pose and narrowest horizontal extent (from its rendered mesh).
+  /// The objects in the workspace: on the table and, in a scene that keeps its box, inside
+  /// the box's walls (an object on the table beside the box has left the workspace).
+  std::optional<int> objects_left() const override { return int(objects_in_workspace().size()); }
+  /// Each object in the workspace: its name, pose and narrowest horizontal extent (from its
+  /// rendered mesh).
   std::vector<ObjectTruth> object_truth() const override;
   GraspAttempt execute(const GraspRequest& request) override;
   void reset(std::uint64_t seed) override;
@@ -48,12 +51,17 @@ class BulletCell final : public Cell {
   /// Ground truth, for tests and tools.
   const PhysicsWorld& world() const { return *world_; }
   std::vector<int> objects() const { return world_->ids(BodyRole::kObject); }
+  /// The objects objects_left() counts.
+  std::vector<int> objects_in_workspace() const;
   const SceneSpec& scene() const { return scene_; }
   int attempts() const { return attempts_; }
 
  private:
-  /// Removes the objects below the table top; returns their names.
-  std::vector<std::string> remove_fallen_objects();
+  /// Removes the objects below the table top.
+  void remove_fallen_objects();
+  /// The names of the objects of `before` (all but `held`, the object picked) that have
+  /// left the workspace since, each with where it went.
+  std::vector<std::string> names_gone(const std::vector<int>& before, int held) const;
   /// Follows the request's trajectory with the arm: "" when it reached the grasp without
   /// touching the scene, else the refusal (outcome kNotExecuted) or contact (kArmCollision).
   std::string follow_trajectory(const GraspRequest& request, GraspOutcome* outcome) const;

@@ -123,6 +123,25 @@ Eigen::Isometry3d placed_pose(const SceneSpec& spec, const ObjectModel& model, R
   return pose;
 }
 
+// Up to the box's `refills` rounds: each object of a pile that came to rest outside the box
+// (bounced out, or knocked out by a later one) is dropped again at a new random point.
+void refill_box(const SceneSpec& spec, const std::vector<ObjectModel>& models, RandomStream& random,
+                PhysicsWorld& world, std::vector<int>& ids) {
+  if (spec.placement != Placement::kPile || !spec.box.present) return;
+  for (int round = 0; round < spec.box.refills; ++round) {
+    bool refilled = false;
+    for (std::size_t i = 0; i < ids.size(); ++i) {
+      if (inside_box(spec.box, world.pose(ids[i]).translation())) continue;
+      world.remove_body(ids[i]);
+      ids[i] = world.add_object(models[i], placed_pose(spec, models[i], random, {}));
+      world.settle(1.5);
+      refilled = true;
+    }
+    if (!refilled) return;
+    world.settle(2.0);
+  }
+}
+
 void remove_fallen(const SceneSpec& spec, PhysicsWorld& world, std::vector<int>& ids) {
   std::vector<int> kept;
   for (int id : ids) {
@@ -181,6 +200,7 @@ std::vector<int> build_scene(const SceneSpec& spec, std::uint64_t seed, MeshCach
     if (spec.placement == Placement::kPile) world.settle(1.5);
   }
   world.settle(2.0);
+  refill_box(spec, models, random, world, ids);
   if (spec.box.removed_after_drop) {
     for (int wall : walls) world.remove_body(wall);
     world.settle(2.0);

@@ -23,6 +23,10 @@ Eigen::VectorXd vector_at(const Parameters& p, const std::string& key, std::size
   }
   const auto values = p.require<std::vector<double>>(key);
   if (values.size() != n) p.fail(key, "'" + key + "' needs " + std::to_string(n) + " numbers");
+  // Checked here once for every vector: a NaN slips through the range checks after it (a
+  // comparison with NaN is false, and Eigen's minCoeff/maxCoeff may skip it).
+  for (const double v : values)
+    if (!std::isfinite(v)) p.fail(key, "'" + key + "' must be finite numbers");
   return Eigen::Map<const Eigen::VectorXd>(values.data(), Eigen::Index(n));
 }
 
@@ -68,6 +72,8 @@ BoxSpec parse_box(const Parameters& p, const TableSpec& table) {
   b.wall_height_m = positive(p, "wall_height_m", b.wall_height_m);
   b.wall_thickness_m = positive(p, "wall_thickness_m", b.wall_thickness_m);
   b.removed_after_drop = p.get<bool>("removed_after_drop", false);
+  b.refills = p.get<int>("refills", 0);
+  if (b.refills < 0 || b.refills > 100) p.fail("refills", "'refills' must be in 0..100");
   p.reject_unknown();
   return b;
 }
@@ -266,6 +272,12 @@ SceneSpec read_scene(const std::string& path) {
                 (root.IsNull() ? std::string("the file is empty") : "not a map of scene keys") +
                 " (see docs/cell.md, \"Scene files\")");
   return parse_scene(Parameters(root, "scene '" + path + "'", path));
+}
+
+bool inside_box(const BoxSpec& box, const Eigen::Vector3d& position_m) {
+  const Eigen::Vector2d half =
+      box.inner_size_m / 2 + Eigen::Vector2d::Constant(box.wall_thickness_m / 2);
+  return ((position_m.head<2>() - box.center_m).array().abs() <= half.array()).all();
 }
 
 }  // namespace antipode::cells

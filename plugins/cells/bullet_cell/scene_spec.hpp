@@ -34,7 +34,14 @@ struct BoxSpec {
   double wall_thickness_m = 0.01;
   /// Lifted away once a pile has settled, as in VGN's "pile" scenes: the objects spread.
   bool removed_after_drop = false;
+  /// A pile's object that comes to rest outside the box is dropped again at a new random
+  /// point, up to this many times (as a person filling the box puts back what bounced out).
+  int refills = 0;
 };
+
+/// True when `position_m` (an object's centre, base frame) lies inside the box's walls (their
+/// mid-planes): on the box's floor, leaning on a wall from inside or on its rim.
+bool inside_box(const BoxSpec& box, const Eigen::Vector3d& position_m);
 
 /// One listed object: a primitive (`shape` + `size_m`) or a mesh object (`mesh` in `folder`).
 struct ObjectEntry {

@@ -18,9 +18,10 @@ bool cell_executed(const std::string& outcome) {
 }
 
 /// Runs its child - one pick attempt that reports `outcome` - again and again until the cell
-/// has no object left, `max_misses` consecutive cycles found no grasp, or the run has used
-/// `max_cycles` cycles (the paper's dense-clutter protocol, section 5.3). Each cycle is
-/// logged on one line and kept in the run record; the summary line ends the run.
+/// has no object left, a cycle found no grasp predicted to hold (kNothingPredictedToHold),
+/// `max_misses` consecutive cycles found no grasp, or the run has used `max_cycles` cycles (the
+/// paper's dense-clutter protocol, section 5.3). Each cycle is logged on one line and kept in the
+/// run record; the summary line ends the run.
 ///
 /// Returns RUNNING after each cycle (the tree stays responsive), SUCCESS when a rule ends the
 /// run, FAILURE when the child fails (the child is expected to report failed picks through
@@ -60,7 +61,8 @@ class ClearBox final : public bt::DecoratorNode {
              bt::output_port<ClearingRun>("run", "the record of the run, cycle by cycle")},
             1,
             1,
-            "Repeats a pick attempt until the box is empty, grasps run out or the cycles do.",
+            "Repeats a pick attempt until the box is empty, nothing is predicted to hold, "
+            "grasps run out or the cycles do.",
             {}};
   }
 
@@ -111,6 +113,8 @@ class ClearBox final : public bt::DecoratorNode {
 
   ClearingStop stop_rule() const {
     if (run_.objects_left() == 0) return ClearingStop::kCleared;
+    if (!run_.cycles.empty() && run_.cycles.back().outcome == kNothingPredictedToHold)
+      return ClearingStop::kNothingHolds;
     if (run_.trailing_misses() >= max_misses_) return ClearingStop::kMissStreak;
     if (max_failures_ > 0 && run_.trailing_failures() >= max_failures_)
       return ClearingStop::kFailureStreak;

@@ -62,8 +62,9 @@ class Cell : public Component {
   virtual GraspAttempt execute(const GraspRequest& request) = 0;
 
   /// How many objects are left in the cell's workspace (picked objects leave it, and so do
-  /// objects knocked off the table); nullopt when the cell cannot tell (a real cell without
-  /// ground truth). A clear-the-box loop ends when it reaches 0.
+  /// objects knocked off the table or, in a cell with a box, out of the box); nullopt when
+  /// the cell cannot tell (a real cell without ground truth). A clear-the-box loop ends when
+  /// it reaches 0.
   virtual std::optional<int> objects_left() const { return std::nullopt; }
 
   /// The objects left in the workspace (as objects_left() counts them), as the cell's ground

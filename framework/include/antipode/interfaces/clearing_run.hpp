@@ -8,7 +8,8 @@
 /// (section 5.3):
 /// - an *attempt* is a cycle that chose a grasp: one the cell executed, or one the arm could
 ///   not reach ("no IK", "no motion plan");
-/// - a *localisation failure* is a cycle that found no grasp ("no grasp found");
+/// - a *localisation failure* is a cycle that found no grasp ("no grasp found", or "no grasp
+///   predicted to hold" when the classifier accepted no hand);
 /// - an object is *removed* when an attempt lifted it out (a success).
 ///
 /// Units: seconds of wall time. Object counts are -1 where the cell cannot tell (a real
@@ -26,11 +27,16 @@ namespace antipode {
 
 /// The outcome a cycle reports when it found no grasp to try.
 inline constexpr const char* kNoGraspFound = "no grasp found";
+/// The outcome a cycle reports when the classifier predicted no hand in the scene to hold
+/// (none scored above its threshold): trying again on the same scene is pointless, and the
+/// run ends (ClearingStop::kNothingHolds).
+inline constexpr const char* kNothingPredictedToHold = "no grasp predicted to hold";
 
 /// One cycle of the loop.
 struct ClearingCycle {
   /// How the cycle ended: a GraspOutcome's name ("success", "slipped", ...) when the cell
-  /// executed a grasp, else "no grasp found", "no IK" or "no motion plan".
+  /// executed a grasp, else "no grasp found", "no grasp predicted to hold", "no IK" or "no
+  /// motion plan".
   std::string outcome;
   std::optional<GraspAttempt> attempt;  ///< the cell's record, when it executed a grasp
   std::optional<Hand> grasp;            ///< the grasp it executed
@@ -38,7 +44,9 @@ struct ClearingCycle {
   int objects_after = -1;               ///< ... and when it ended
   double seconds = 0.0;                 ///< wall time, capture to outcome
 
-  bool chose_grasp() const { return outcome != kNoGraspFound; }
+  bool chose_grasp() const {
+    return outcome != kNoGraspFound && outcome != kNothingPredictedToHold;
+  }
   bool succeeded() const { return outcome == to_string(GraspOutcome::kSuccess); }
 };
 
@@ -49,6 +57,7 @@ enum class ClearingStop : std::uint8_t {
   kMissStreak,     ///< that many consecutive cycles found no grasp
   kCycleLimit,     ///< the run used all its cycles
   kFailureStreak,  ///< that many consecutive attempts failed (VGN's rule)
+  kNothingHolds,   ///< a cycle found no grasp predicted to hold (kNothingPredictedToHold)
 };
 
 const char* to_string(ClearingStop stop);
@@ -62,7 +71,8 @@ struct ClearingRun {
   int attempts() const;      ///< cycles that chose a grasp
   int successes() const;     ///< attempts that lifted an object out = objects removed
   int objects_left() const;  ///< objects in the cell at the end (-1: unknown)
-  /// Objects that left the cell without being picked (knocked off the table; -1: unknown).
+  /// Objects that left the cell's workspace without being picked (knocked off the table or
+  /// out of the box; -1: unknown).
   int objects_lost() const;
   /// Consecutive cycles at the end of the run that found no grasp.
   int trailing_misses() const;

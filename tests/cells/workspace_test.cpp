@@ -1,0 +1,44 @@
+// The cell's workspace: the objects objects_left() counts are those on the table and, in a
+// scene that keeps its box, inside the box's walls.
+#include <gtest/gtest.h>
+
+#include "antipode/core/parameters.hpp"
+#include "bullet_cell.hpp"
+
+namespace antipode::cells {
+namespace {
+
+SceneSpec parse(const std::string& yaml) {
+  return parse_scene(Parameters(YAML::Load(yaml), "scene 'test.yaml'", "test.yaml"));
+}
+
+// The dense-clutter box (inner faces at x 0.44 / 0.74, y -0.35 / -0.05) and two cylinders:
+// one in the box, one on the table 10 cm beside it.
+const char* const kBoxAndTwoCylinders = R"(
+box: { center_m: [0.59, -0.20], inner_size_m: [0.30, 0.30], wall_height_m: 0.06 }
+placement: packed
+objects:
+  - { shape: cylinder, size_m: [0.05, 0.1], position_m: [0.59, -0.20] }
+  - { shape: cylinder, size_m: [0.05, 0.1], position_m: [0.59, 0.10] }
+)";
+
+TEST(CellWorkspace, AnObjectBesideTheBoxIsNotLeftInIt) {
+  const BulletCell cell(parse(kBoxAndTwoCylinders), CellOptions{});
+  ASSERT_EQ(cell.objects().size(), 2u) << "both rest on the table";
+  EXPECT_EQ(*cell.objects_left(), 1);
+  const std::vector<ObjectTruth> truth = cell.object_truth();
+  ASSERT_EQ(truth.size(), 1u);
+  EXPECT_NEAR(truth[0].X_BaseObject.translation().y(), -0.20, 0.01) << "the one in the box";
+}
+
+TEST(CellWorkspace, WithoutABoxTheWholeTableIsTheWorkspace) {
+  std::string yaml = kBoxAndTwoCylinders;
+  yaml.replace(yaml.find("box:"), yaml.find('\n', yaml.find("box:")) - yaml.find("box:"),
+               "# no box");
+  const BulletCell cell(parse(yaml), CellOptions{});
+  EXPECT_EQ(*cell.objects_left(), 2);
+  EXPECT_EQ(cell.object_truth().size(), 2u);
+}
+
+}  // namespace
+}  // namespace antipode::cells
