@@ -65,9 +65,9 @@ ReportSection section_of(const std::string& path, const std::string& name, const
   throw Error(path + ": not the report of an isolation or clutter bench or of eval-classifier");
 }
 
-// A folder of its own in the system's temporary folder, removed with this object unless
-// kept: the charts are drawn there and moved to --plots only once every section is made, so
-// that a bad report leaves nothing behind.
+// A folder of its own in the system's temporary folder, removed with this object: the charts
+// are drawn there and copied to --plots only once every section is made, so that a bad report
+// leaves nothing behind.
 class StagingFolder {
  public:
   StagingFolder()
