@@ -6,6 +6,8 @@
 # <prefix>/<libdir>/antipode/plugins under the installing project's prefix: antipode's own
 # plugin folder when that is antipode's prefix (then refresh the folder's index with
 # `antipode plugins --write-index DIR`), else a folder to put on ANTIPODE_PLUGIN_PATH.
+# The library is linked with -z defs (outside sanitizer builds): a symbol it uses that no
+# library it links provides is a link error.
 function(antipode_add_plugin name)
   cmake_parse_arguments(ARG "" "" "SOURCES;LIBRARIES" ${ARGN})
   add_library(${name} MODULE ${ARG_SOURCES})
@@ -14,6 +16,12 @@ function(antipode_add_plugin name)
     set(output_dir "${ANTIPODE_PLUGIN_BUILD_DIR}")
   else()
     set(output_dir "${CMAKE_BINARY_DIR}/plugins")
+  endif()
+  # Every symbol resolved at link time, so a missing one fails the author's build, not the
+  # load. Not under sanitizers: their runtime lives in the executable, not in shared objects.
+  get_directory_property(link_options LINK_OPTIONS)
+  if(NOT "${CMAKE_CXX_FLAGS} ${CMAKE_MODULE_LINKER_FLAGS} ${link_options}" MATCHES "-fsanitize")
+    target_link_options(${name} PRIVATE "LINKER:-z,defs")
   endif()
   set_target_properties(${name} PROPERTIES
     PREFIX "libantipode_"

@@ -3,12 +3,10 @@
 #include <algorithm>
 #include <cstdio>
 
-#include <png.h>
-
 #include <opencv2/imgproc.hpp>
 
-#include "antipode/core/atomic_file.hpp"
 #include "antipode/core/error.hpp"
+#include "antipode/io/png_file.hpp"
 
 namespace antipode::cli {
 namespace {
@@ -16,6 +14,9 @@ namespace {
 constexpr int kLeft = 60, kRight = 20, kTop = 50, kBottom = 175;  // margins, pixels
 constexpr int kHeight = 420;                                      // of the plot area
 constexpr int kGroupWidth = 70;                                   // per group, pixels
+// What one chart shows: past these it would be unreadable (and a report listing 20,000
+// objects would draw a 1.4-million-pixel-wide image).
+constexpr std::size_t kMaxGroups = 60, kMaxSeries = 8, kMaxLabelChars = 40;
 
 const cv::Scalar kInk(40, 40, 40), kGrid(220, 220, 220);
 
@@ -81,26 +82,38 @@ void draw_legend(cv::Mat& image, const BarChart& c) {
   }
 }
 
-// The chart as a PNG with libpng: OpenCV's image codecs would bring GDAL and some hundred
-// libraries into every start of the command (60 ms of its 70 ms to start an empty tree).
-void write_png(const cv::Mat& bgr, const std::string& path) {
-  png_image image{};
-  image.version = PNG_IMAGE_VERSION;
-  image.width = static_cast<png_uint_32>(bgr.cols);
-  image.height = static_cast<png_uint_32>(bgr.rows);
-  image.format = PNG_FORMAT_BGR;
-  if (png_image_write_to_file(&image, path.c_str(), 0, bgr.data,
-                              static_cast<png_int_32>(bgr.step[0]), nullptr) == 0) {
-    const std::string message = image.message;
-    png_image_free(&image);
-    throw Error("cannot write the chart: " + message);
-  }
+std::string shortened(const std::string& label) {
+  return label.size() <= kMaxLabelChars ? label : label.substr(0, kMaxLabelChars - 3) + "...";
+}
+
+// `c` cut to what a chart shows: its first kMaxGroups groups and kMaxSeries series, long
+// labels shortened; the title says what was left out.
+BarChart fitted(BarChart c) {
+  const std::size_t groups = c.groups.size(), series = c.series.size();
+  const auto cut = [&](std::vector<std::vector<double>>& v) {
+    if (v.empty()) return;
+    v.resize(std::min(series, kMaxSeries));
+    for (auto& row : v) row.resize(std::min(groups, kMaxGroups));
+  };
+  cut(c.values);
+  cut(c.low);
+  cut(c.high);
+  c.groups.resize(std::min(groups, kMaxGroups));
+  c.series.resize(std::min(series, kMaxSeries));
+  for (auto* labels : {&c.groups, &c.series})
+    for (auto& label : *labels) label = shortened(label);
+  if (groups > kMaxGroups)
+    c.title += " (the first " + std::to_string(kMaxGroups) + " of " + std::to_string(groups) + ")";
+  if (series > kMaxSeries)
+    c.title += " (" + std::to_string(kMaxSeries) + " of " + std::to_string(series) + " series)";
+  return c;
 }
 
 }  // namespace
 
-void write_bar_chart(const BarChart& c, const std::string& path) {
-  check_shape(c);
+void write_bar_chart(const BarChart& chart, const std::string& path) {
+  check_shape(chart);
+  const BarChart c = fitted(chart);
   const int width = std::max(360, int(c.groups.size()) * kGroupWidth);
   cv::Mat image(kTop + kHeight + kBottom, kLeft + width + kRight, CV_8UC3,
                 cv::Scalar(255, 255, 255));
@@ -123,7 +136,7 @@ void write_bar_chart(const BarChart& c, const std::string& path) {
     }
     vertical_text(image, c.groups[g], {x0 + (kGroupWidth - 14) / 2, kTop + kHeight + 6});
   }
-  write_file_atomically(path, [&](const std::string& temporary) { write_png(image, temporary); });
+  write_png_bgr(path, image.cols, image.rows, image.data, image.step[0]);
 }
 
 }  // namespace antipode::cli

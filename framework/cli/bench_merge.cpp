@@ -15,6 +15,7 @@
 #include "clutter_bench.hpp"
 #include "clutter_protocols.hpp"
 #include "exit_codes.hpp"
+#include "json_file.hpp"
 
 namespace antipode::cli {
 namespace {
@@ -42,14 +43,7 @@ constexpr std::int64_t kMaxShards = 10000;
 constexpr std::int64_t kMaxTasks = 10000000;
 
 Json read_shard(const std::string& path) {
-  std::ifstream file(path);
-  if (!file) throw Error(path + ": cannot read the report");
-  Json report;
-  try {
-    report = Json::parse(file);
-  } catch (const Json::exception& e) {
-    throw Error(path + ": not a JSON report (" + std::string(e.what()) + ")");
-  }
+  Json report = read_json_file(path, "a bench report");
   if (!report.is_object() || !report.contains("bench") || !report["bench"].is_string() ||
       records_key(report["bench"].get<std::string>()).empty())
     throw Error(path + ": not the report of an isolation or clutter bench");
@@ -146,6 +140,8 @@ int bench_merge_command(const BenchMergeOptions& o) {
   try {
     records = joined_records(shards, o.reports);
     if (bench != "clutter") variants = shards.front().at("variants");
+    if (bench != "clutter" && variants.empty())
+      throw Error(o.reports.front() + ": \"variants\" is empty: the report names no variant");
     summary = bench == "clutter" ? summarise_clutter(records) : summarise(records, variants);
   } catch (const Json::exception& e) {
     throw Error("bench merge: a shard's record lacks an entry or has a malformed one (" +

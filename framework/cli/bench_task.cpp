@@ -81,7 +81,7 @@ nlohmann::ordered_json funnel(const bt::Blackboard& board) {
   if (board.has("grasps")) {
     nlohmann::ordered_json reasons = nlohmann::ordered_json::object();
     for (const Hand& hand : board.get_ref<HandSetPtr>("grasps")->hands) {
-      const std::string reason = to_string(hand.rejection);
+      const std::string reason = rejection_reason(hand);
       reasons[reason] = reasons.value(reason, 0) + 1;
     }
     out["selection"] = reasons;

@@ -18,6 +18,7 @@
 #include "antipode/bt/loader.hpp"
 #include "antipode/core/atomic_file.hpp"
 #include "antipode/core/error.hpp"
+#include "antipode/core/shipped_data.hpp"
 #include "antipode/interfaces/cell.hpp"
 #include "antipode/interfaces/clearing_run.hpp"
 #include "antipode/io/gripper_file.hpp"
@@ -54,7 +55,7 @@ struct RunSettings {
 // `o` with the protocol's tree and object count where the options leave them open.
 ClutterBenchOptions with_protocol(ClutterBenchOptions o) {
   const ClutterProtocol& protocol = clutter_protocol(o.protocol);  // throws for a bad name
-  if (o.tree_path.empty()) o.tree_path = protocol.tree;
+  if (o.tree_path.empty()) o.tree_path = resolve_shipped(protocol.tree);
   if (o.objects_per_run == 0) o.objects_per_run = protocol.objects_per_run;
   return o;
 }

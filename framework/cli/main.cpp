@@ -6,6 +6,7 @@
 
 #include "antipode/config.hpp"
 #include "antipode/core/error.hpp"
+#include "antipode/core/shipped_data.hpp"
 #include "bench_merge.hpp"
 #include "clutter_bench.hpp"
 #include "commands.hpp"
@@ -299,6 +300,19 @@ void add_report(CLI::App& app, antipode::cli::ReportOptions& o) {
   report->add_option("--notes", o.notes_path, "Hand-written context (markdown, ## sections)");
 }
 
+// The paths a command reads that antipode ships (its trees, the default model and robot):
+// from any folder, a relative path missing there is taken from the shipped data
+// (antipode/core/shipped_data.hpp), so that an installed antipode runs its own trees.
+void resolve_shipped_paths(Commands& c) {
+  for (std::string* path :
+       {&c.run.tree_path, &c.detect.tree_path, &c.scene.scene_path, &c.scene.tree_path,
+        &c.train.tree_path, &c.outcomes.tree_path, &c.eval.tree_path, &c.eval.model_path,
+        &c.isolation.tree_path, &c.reach.robot_path, &c.reach.scene_tree, &c.reach.scene_file,
+        &c.clutter.tree_path, &c.clutter.gripper_path})
+    *path = antipode::resolve_shipped(*path);
+  for (std::string& path : c.validate_paths) path = antipode::resolve_shipped(path);
+}
+
 int dispatch(const CLI::App& app, const Commands& commands) {
   if (app.got_subcommand("run")) return antipode::cli::run_command(commands.run);
   if (app.got_subcommand("detect")) return antipode::cli::detect_command(commands.detect);
@@ -379,6 +393,7 @@ int main(int argc, char** argv) {
     return kExitInvalidInput;
   }
   try {
+    resolve_shipped_paths(commands);
     return dispatch(app, commands);
   } catch (const antipode::InternalError& error) {
     std::cerr << "antipode: internal error: " << error.what() << "\n";

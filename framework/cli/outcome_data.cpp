@@ -16,6 +16,7 @@
 #include "bench_task.hpp"
 #include "commands.hpp"
 #include "exit_codes.hpp"
+#include "json_file.hpp"
 
 namespace fs = std::filesystem;
 
@@ -80,9 +81,8 @@ void add_counts(const Json& part, Json& total) {
 // The trials a finished scene wrote: how many and how many held, in all and per near-antipodal
 // label ("trials", "held", and e.g. "positive": [trials, held]).
 Json count_trials(const fs::path& records) {
-  std::ifstream in(records);
-  const Json file = Json::parse(in, nullptr, false);
-  if (file.is_discarded() || !file.contains("trials") || !file["trials"].is_array())
+  const Json file = read_json_file(records.string(), "a trial record file");
+  if (!file.is_object() || !file.contains("trials") || !file["trials"].is_array())
     throw Error("'" + records.string() + "' is not a trial record file");
   Json counts = no_trials();
   for (const Json& trial : file["trials"]) {

@@ -14,6 +14,7 @@
 #include "antipode/core/atomic_file.hpp"
 #include "antipode/core/error.hpp"
 #include "exit_codes.hpp"
+#include "json_file.hpp"
 #include "report_sections.hpp"
 
 namespace fs = std::filesystem;
@@ -45,14 +46,7 @@ Notes read_notes(const std::string& path) {
 
 // `name` names the section's chart files.
 ReportSection section_of(const std::string& path, const std::string& name, const PlotPlace& plots) {
-  std::ifstream file(path);
-  if (!file) throw Error(path + ": cannot read the bench report");
-  Json report;
-  try {
-    report = Json::parse(file);
-  } catch (const Json::exception& e) {
-    throw Error(path + ": not a JSON report (" + std::string(e.what()) + ")");
-  }
+  const Json report = read_json_file(path, "a bench report");
   try {
     const std::string bench = report.value("bench", "");
     if (bench == "isolation") return isolation_section(report, name, plots);
@@ -61,6 +55,8 @@ ReportSection section_of(const std::string& path, const std::string& name, const
   } catch (const Json::exception& e) {
     throw Error(path + ": an entry the report needs is missing or malformed (" +
                 std::string(e.what()) + ")");
+  } catch (const Error& e) {
+    throw Error(path + ": " + e.what());
   }
   throw Error(path + ": not the report of an isolation or clutter bench or of eval-classifier");
 }

@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <map>
 
+#include "antipode/core/error.hpp"
 #include "bar_chart.hpp"
 #include "report_sections.hpp"
 
@@ -33,7 +34,9 @@ std::string paper_rate(const std::string& variant) {
 }
 
 std::vector<std::string> variants_of(const Json& r) {
-  return r.at("variants").get<std::vector<std::string>>();
+  auto variants = r.at("variants").get<std::vector<std::string>>();
+  if (variants.empty()) throw Error("\"variants\" is empty: the report names no variant");
+  return variants;
 }
 
 std::string settings_text(const Json& r) {

@@ -40,10 +40,8 @@ bt::Tree load_tree_for(Session& session, const std::string& tree_path,
   }
   try {
     return bt::load_tree_file(tree_path, load_options(session, entries, settings));
-  } catch (const Error& error) {
-    const std::string note = refused_plugins_note(*session.host);
-    if (note.empty()) throw;
-    throw Error(error.what() + note);
+  } catch (const UnknownTypeError& error) {
+    throw_with_refused_plugins_note(error, *session.host);
   }
 }
 
@@ -69,10 +67,8 @@ int validate_command(const std::string& tree_path) {
   }
   try {
     bt::validate_tree_file(tree_path, load_options(session, {}, TreeRunSettings{}));
-  } catch (const Error& error) {
-    const std::string note = refused_plugins_note(*session.host);
-    if (note.empty()) throw;
-    throw Error(error.what() + note);
+  } catch (const UnknownTypeError& error) {
+    throw_with_refused_plugins_note(error, *session.host);
   }
   std::cout << tree_path << ": valid\n";
   return kExitSuccess;

@@ -103,14 +103,15 @@ std::string result_line(const std::string& tree_path, bt::Status status, const T
   return line;
 }
 
-std::string refused_plugins_note(const PluginHost& host) {
+void throw_with_refused_plugins_note(const UnknownTypeError& error, const PluginHost& host) {
   int refused = 0;
   for (const auto& record : host.records()) {
     if (record.state == PluginRecord::State::kRefused) ++refused;
   }
-  if (refused == 0) return {};
-  return " - note: " + std::to_string(refused) + " plugin " +
-         (refused == 1 ? "library was" : "libraries were") + " refused; see 'antipode plugins'";
+  if (refused == 0) throw error;
+  throw UnknownTypeError(error.what() + std::string(" - note: ") + std::to_string(refused) +
+                         " plugin " + (refused == 1 ? "library was" : "libraries were") +
+                         " refused, and may provide it; see 'antipode plugins'");
 }
 
 }  // namespace antipode::cli

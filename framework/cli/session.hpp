@@ -63,7 +63,10 @@ Tracing attach_tracers(bt::Tree& tree, bool console, const std::string& trace_pa
 /// showed it.
 std::string result_line(const std::string& tree_path, bt::Status status, const Tracing& tracing);
 
-/// " - note: N plugin libraries were refused; see 'antipode plugins'", or "" when none were.
-std::string refused_plugins_note(const PluginHost& host);
+/// Rethrows `error` (a tree naming a type no loaded library provides), with " - note: N plugin
+/// libraries were refused, and may provide it; see 'antipode plugins'" when the host refused
+/// any: only then can a refused library be the cause.
+[[noreturn]] void throw_with_refused_plugins_note(const UnknownTypeError& error,
+                                                  const PluginHost& host);
 
 }  // namespace antipode::cli

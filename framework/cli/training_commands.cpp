@@ -7,6 +7,7 @@
 
 #include "antipode/bt/loader.hpp"
 #include "antipode/core/atomic_file.hpp"
+#include "antipode/core/binary_file.hpp"
 #include "antipode/core/error.hpp"
 #include "bench_report.hpp"
 #include "commands.hpp"
@@ -67,6 +68,8 @@ void stamp_eval_report(const EvalOptions& o) {
 
 int eval_classifier_command(const EvalOptions& options) {
   if (!options.report_path.empty()) check_output_path(options.report_path);
+  // The tree reads the model only after computing every example: a damaged one is refused now.
+  check_binary_file(options.model_path, "classifier model");
   const int code = run_tree(
       options.tree_path, {"model_file=" + options.model_path, "report_file=" + options.report_path},
       options.settings);

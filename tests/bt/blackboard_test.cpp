@@ -1,4 +1,6 @@
 // Blackboard typing, text conversion, remapping, and entries flowing between nodes.
+#include <stdexcept>
+
 #include "test_support.hpp"
 
 namespace antipode::bt::testing {
@@ -297,17 +299,26 @@ trees:
   }
 }
 
-TEST_F(EntryTest, ErrorsThrownByATickAreLocatedAtTheNode) {
-  NodeManifest thrower;
-  thrower.type = "Thrower";
-  thrower.create = [](const NodeConfig& config) -> std::unique_ptr<Node> {
+// A node type "Thrower" whose tick calls `fault`, which throws.
+NodeManifest thrower(void (*fault)()) {
+  NodeManifest made;
+  made.type = "Thrower";
+  made.create = [fault](const NodeConfig& config) -> std::unique_ptr<Node> {
     struct Throwing : SyncActionNode {
-      using SyncActionNode::SyncActionNode;
-      Status tick() override { throw std::runtime_error("no finite point"); }
+      Throwing(const NodeConfig& config, void (*fault)()) : SyncActionNode(config), fault(fault) {}
+      Status tick() override {
+        fault();
+        return Status::kSuccess;
+      }
+      void (*fault)();
     };
-    return std::make_unique<Throwing>(config);
+    return std::make_unique<Throwing>(config, fault);
   };
-  registry.add(thrower);
+  return made;
+}
+
+TEST_F(EntryTest, ErrorsThrownByATickAreLocatedAtTheNode) {
+  registry.add(thrower([] { throw Error("no finite point"); }));
   Tree tree = load("main: t\ntrees:\n  t:\n    Sequence: [AlwaysSuccess, Thrower]\n");
   try {
     tree.tick_once();
@@ -330,6 +341,19 @@ trees:
   EXPECT_EQ(probes()["a"].halts, 1);
   parallel.visit(
       [](const Node& node, int) { EXPECT_EQ(node.status(), Status::kIdle) << node.path(); });
+}
+
+// A standard exception from a tick is a bug of plugin code: the node fails (the run ends as a
+// failure, exit 1) with the exception's type and message as the reason.
+TEST_F(EntryTest, AStandardExceptionFromATickFailsTheNode) {
+  registry.add(thrower([] { throw std::length_error("vector::reserve"); }));
+  Tree tree = load("main: t\ntrees:\n  t:\n    Sequence: [AlwaysSuccess, Thrower]\n");
+  EXPECT_EQ(tree.tick_once(), Status::kFailure);
+  std::string reason;
+  tree.visit([&](const Node& node, int) {
+    if (node.type() == "Thrower") reason = node.failure_reason();
+  });
+  EXPECT_EQ(reason, "Thrower's code threw std::length_error: vector::reserve");
 }
 
 }  // namespace

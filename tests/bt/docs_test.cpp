@@ -38,13 +38,13 @@ class SampleHands : public SyncActionNode {
     made.type = "SampleHands";
     made.ports = {component_port<Sampler>("sampler", ""),
                   input_port<std::shared_ptr<const Cloud>>("cloud", ""),
-                  output_port<HandSet>("hands", "")};
+                  output_port<HandSetPtr>("hands", "")};
     return made;
   }
 
  protected:
   Status tick() override {
-    set_output("hands", HandSet{});
+    set_output("hands", std::make_shared<const HandSet>());
     return Status::kSuccess;
   }
 };

@@ -127,4 +127,45 @@ TEST_F(BenchTest, TheReportsCommandRerunsTheAttemptsItReports) {
   EXPECT_TRUE(fs::exists(file("images/first-2-objects.png")));
 }
 
+// Reports a user edited or generated: no variant at all is an error naming the entry, and a
+// report of thousands of objects charts the first 60 of them (a chart a screen can show),
+// not an image of a million pixels across.
+TEST_F(BenchTest, ReportsOfNoVariantOrThousandsOfObjectsStayBounded) {
+  auto r = report("--objects procedural --variants nc_1v --poses 1 --attempts 1", "one.json");
+  auto empty = r;
+  empty["variants"] = nlohmann::json::array();
+  std::ofstream(file("empty.json")) << empty.dump();
+  const auto no_variant = antipode("report " + file("empty.json") + " --out " + file("e.md"));
+  EXPECT_EQ(no_variant.exit_code, 2) << no_variant.out;
+  EXPECT_NE(no_variant.out.find("empty.json: \"variants\" is empty"), std::string::npos)
+      << no_variant.out;
+  EXPECT_FALSE(fs::exists(file("e.md")));
+  auto shard = empty;  // the whole bench as its only shard
+  shard["shard"] = {{"index", 1}, {"count", 1}, {"tasks", 1}};
+  std::ofstream(file("s_empty.json")) << shard.dump();
+  const auto merge = antipode("bench merge " + file("s_empty.json"));
+  EXPECT_EQ(merge.exit_code, 2) << merge.out;
+  EXPECT_NE(merge.out.find("\"variants\" is empty"), std::string::npos) << merge.out;
+
+  ASSERT_EQ(r["attempts"].size(), 1u);
+  const auto attempt = r["attempts"][0];
+  r["attempts"] = nlohmann::json::array();
+  for (int i = 0; i < 2000; ++i) {
+    r["attempts"].push_back(attempt);
+    r["attempts"].back()["object"] = "object_" + std::to_string(i);
+  }
+  std::ofstream(file("many.json")) << r.dump();
+  const auto made = antipode("report " + file("many.json") + " --out " + file("many.md"));
+  ASSERT_EQ(made.exit_code, 0) << made.out;
+  std::ifstream png(file("images/many-objects.png"), std::ios::binary);
+  unsigned char header[24] = {};
+  png.read(reinterpret_cast<char*>(header), 24);  // the PNG signature, then IHDR's width
+  const unsigned width = header[16] << 24 | header[17] << 16 | header[18] << 8 | header[19];
+  EXPECT_GT(width, 60u * 70u);
+  EXPECT_LT(width, 61u * 70u + 200u);
+  std::ifstream md(file("many.md"));
+  const std::string markdown((std::istreambuf_iterator<char>(md)), {});
+  EXPECT_NE(markdown.find("| object_1999"), std::string::npos);  // the table has them all
+}
+
 }  // namespace

@@ -125,6 +125,58 @@ TEST_F(CliTest, TraceFileIsJsonLines) {
   EXPECT_EQ(events[3]["to"], "FAILURE");
 }
 
+// eval-classifier's tree reads the model only after computing every example: a damaged model
+// is refused before the tree starts (the tree here would log and succeed).
+TEST_F(CliTest, EvalClassifierRefusesADamagedModelBeforeAnyWork) {
+  const std::string tree = write("eval.yaml",
+                                 "main: t\ntrees:\n  t:\n    Sequence:\n"
+                                 "      - Log: { message: \"evaluating {model_file}\" }\n");
+  const std::string shipped = std::string(ANTIPODE_TEST_SOURCE_DIR) + "/models/hog_svm.model";
+  std::ifstream in(shipped, std::ios::binary);
+  std::string bytes((std::istreambuf_iterator<char>(in)), {});
+  ASSERT_GT(bytes.size(), 1000u);
+  bytes[bytes.size() / 2] ^= 0x10;
+  const std::string model = write("damaged.model", bytes);
+  const Result damaged = run("eval-classifier --tree " + tree + " --model " + model);
+  EXPECT_EQ(damaged.exit_code, 2) << damaged.out;
+  EXPECT_NE(damaged.out.find("damaged.model: classifier model file: corrupted (checksum mismatch)"),
+            std::string::npos)
+      << damaged.out;
+  EXPECT_EQ(damaged.out.find("evaluating"), std::string::npos) << damaged.out;
+  const Result intact = run("eval-classifier --tree " + tree + " --model " + shipped);
+  EXPECT_EQ(intact.exit_code, 0) << intact.out;
+  EXPECT_NE(intact.out.find("evaluating " + shipped), std::string::npos) << intact.out;
+}
+
+// docs/cli.md opens with a synopsis line per command: every option a command's --help lists
+// is on its line (by its long or its short name), so the synopsis cannot fall behind.
+TEST_F(CliTest, TheSynopsisInTheDocsListsEveryOption) {
+  std::ifstream in(std::string(ANTIPODE_TEST_SOURCE_DIR) + "/docs/cli.md");
+  std::map<std::string, std::string> synopsis;  // "bench clutter" -> its line
+  for (std::string line; std::getline(in, line);) {
+    if (line == "```" && !synopsis.empty()) break;  // the end of the synopsis block
+    std::smatch command;
+    if (std::regex_search(line, command, std::regex("^antipode ((bench )?[a-z][a-z-]*)")))
+      synopsis[command[1]] = line + " ";
+  }
+  ASSERT_GE(synopsis.size(), 14u);
+  const std::regex option_line(R"(^\s+(-[a-z],)?(--[a-z-]+))");
+  for (const auto& [command, line] : synopsis) {
+    const Result help = run(command + " --help");
+    ASSERT_EQ(help.exit_code, 0) << command << ": " << help.out;
+    std::istringstream lines(help.out);
+    for (std::string entry; std::getline(lines, entry);) {
+      std::smatch option;
+      if (!std::regex_search(entry, option, option_line) || option[2] == "--help") continue;
+      const std::string short_name = option[1].length() ? option[1].str().substr(0, 2) : "";
+      const bool listed = line.find(option[2].str() + " ") != std::string::npos ||
+                          line.find(option[2].str() + "]") != std::string::npos ||
+                          (!short_name.empty() && line.find(short_name) != std::string::npos);
+      EXPECT_TRUE(listed) << "docs/cli.md's synopsis of '" << command << "' lacks " << option[2];
+    }
+  }
+}
+
 // Every command that runs a tree takes --set, --seed and -v the same way.
 TEST_F(CliTest, TreeCommandsShareSetSeedAndVerbose) {
   for (const char* command : {"run", "detect", "scene", "train", "eval-classifier"}) {
@@ -231,14 +283,24 @@ TEST_F(CliTest, MalformedSetIsRejected) {
       << result.out;
 }
 
+// A refused library is mentioned where it could be the cause - a type no loaded library
+// provides - and nowhere else.
 TEST_F(CliTest, UnknownNodeMentionsRefusedPlugins) {
+  const std::string bad = "ANTIPODE_PLUGIN_PATH=" + std::string(FIXTURE_DIR) + "/bad";
   const std::string tree = write("x.yaml", "main: t\ntrees:\n  t:\n    CountTick: {}\n");
-  const Result result =
-      run("validate " + tree, "ANTIPODE_PLUGIN_PATH=" + std::string(FIXTURE_DIR) + "/bad");
+  Result result = run("validate " + tree, bad);
   EXPECT_EQ(result.exit_code, 2);
-  EXPECT_NE(result.out.find("plugin libraries were refused; see 'antipode plugins'"),
-            std::string::npos)
+  EXPECT_NE(result.out.find("unknown node 'CountTick'"), std::string::npos) << result.out;
+  EXPECT_NE(
+      result.out.find("plugin libraries were refused, and may provide it; see 'antipode plugins'"),
+      std::string::npos)
       << result.out;
+  const std::string misspelt =
+      write("port.yaml", "main: t\ntrees:\n  t:\n    Log: { mesage: hi }\n");
+  result = run("validate " + misspelt, bad);
+  EXPECT_EQ(result.exit_code, 2);
+  EXPECT_NE(result.out.find("mesage"), std::string::npos) << result.out;
+  EXPECT_EQ(result.out.find("refused"), std::string::npos) << result.out;
 }
 
 // The dynamic loader names every library it opens (LD_DEBUG=files): a tree opens only the
@@ -296,6 +358,17 @@ TEST_F(CliTest, PluginsCheckReportsOneLibraryOrWhyItCannotLoad) {
   EXPECT_EQ(result.exit_code, 0) << result.out;
   EXPECT_NE(result.out.find("test_fixtures 1.2.3, plugin ABI "), std::string::npos) << result.out;
   EXPECT_NE(result.out.find("provides sampler point_sampler"), std::string::npos) << result.out;
+  EXPECT_EQ(result.out.find("note:"), std::string::npos) << result.out;
+  // The same library under another name loads, with why a plugin directory would skip it.
+  fs::copy_file(std::string(FIXTURE_DIR) + "/good/libantipode_test_fixtures.so",
+                dir_ / "fixtures.so");
+  result = run("plugins --check " + (dir_ / "fixtures.so").string());
+  EXPECT_EQ(result.exit_code, 0) << result.out;
+  EXPECT_NE(result.out.find("note: a plugin directory loads only files named "
+                            "libantipode_NAME.so; this one would be skipped there: rename it "
+                            "to libantipode_test_fixtures.so"),
+            std::string::npos)
+      << result.out;
   const std::string broken = std::string(FIXTURE_DIR) + "/bad/libantipode_undefined_symbol.so";
   result = run("plugins --check " + broken);
   EXPECT_EQ(result.exit_code, 2) << result.out;

@@ -163,9 +163,14 @@ TEST_F(ClutterBenchTest, ReportWritesMarkdownAndAChart) {
     EXPECT_NE(e.out.find("antipode: error: "), std::string::npos) << e.out;
     EXPECT_NE(e.out.find(words), std::string::npos) << arguments << ": " << e.out;
   };
-  report_error(file("none.json") + " --out " + file("x.md"), "cannot read the bench report");
-  report_error("CMakeLists.txt --out " + file("x.md"), "not a JSON report");
-  report_error("robots/baxter/baxter.urdf --out " + file("x.md"), "not a JSON report");
+  report_error(file("none.json") + " --out " + file("x.md"), "cannot read a bench report");
+  report_error("CMakeLists.txt --out " + file("x.md"), "not JSON (");
+  report_error("robots/baxter/baxter.urdf --out " + file("x.md"), "not JSON (");
+  // A report nested a million levels deep is refused while it is read.
+  std::ofstream(file("deep.json"))
+      << "{\"bench\": \"clutter\", \"runs\": " << std::string(1000000, '[')
+      << std::string(1000000, ']') << "}";
+  report_error(file("deep.json") + " --out " + file("x.md"), "nested deeper than 100 levels");
   report_error(
       file("clutter-small.json") + " --out " + file("x.md") + " --notes " + file("none.md"),
       "cannot read the notes");
@@ -273,7 +278,9 @@ TEST_F(ClutterBenchTest, MergeRefusesShardsThatAreNotOneWholeBench) {
   merge_error(file("1.json"), "shards 2 of 2 are missing");
   merge_error(file("1.json") + " " + file("1.json"), "shard 1 given twice");
   merge_error(file("whole.json"), "not a shard's report");
-  merge_error(file("none.json"), "cannot read the report");
+  merge_error(file("none.json"), "cannot read a bench report");
+  std::ofstream(file("deep.json")) << std::string(1000000, '[') << std::string(1000000, ']');
+  merge_error(file("deep.json"), "deep.json: nested deeper than 100 levels");
   // A shard whose record lacks an entry (a hand-edited or truncated file) is bad input.
   auto second = report(args + " --seed 7 --shard 2/2", "2.json");
   second["run_records"][0].erase("attempts");

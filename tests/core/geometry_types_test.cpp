@@ -1,3 +1,5 @@
+#include <vector>
+
 #include <gtest/gtest.h>
 
 #include "antipode/core/cloud.hpp"
@@ -50,6 +52,21 @@ TEST(HandTest, AxesAreRotationColumns) {
   EXPECT_TRUE(hand.approach().isApprox(Eigen::Vector3d(0, 1, 0)));
   EXPECT_TRUE(hand.closing().isApprox(Eigen::Vector3d(0, 0, 1)));
   EXPECT_TRUE(hand.axis().isApprox(Eigen::Vector3d(1, 0, 0)));
+}
+
+// A plugin's own rejection reason is what is printed and counted; a code's name otherwise.
+TEST(HandTest, APluginsOwnRejectionReasonIsPrintedAndCounted) {
+  std::vector<Hand> hands(4);
+  reject_for(hands[0], "too tilted");
+  reject_for(hands[1], "too tilted");
+  hands[2].rejection = Rejection::kLowScore;
+  EXPECT_EQ(hands[0].rejection, Rejection::kPluginReason);
+  EXPECT_EQ(rejection_reason(hands[0]), "too tilted");
+  EXPECT_EQ(rejection_reason(hands[2]), "low score");
+  EXPECT_EQ(rejection_counts(hands, false), "2 too tilted, 1 low score");
+  EXPECT_EQ(rejection_counts(hands), "2 too tilted, 1 low score, 1 none");
+  hands[3].rejection = Rejection::kPluginReason;  // no text given
+  EXPECT_EQ(rejection_reason(hands[3]), "a plugin's reason");
 }
 
 }  // namespace

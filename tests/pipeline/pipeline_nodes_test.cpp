@@ -85,13 +85,17 @@ trees:
   EXPECT_NEAR(board.get<Hand>("executed").position_m().z(), 0.04, 1e-6);
 }
 
-// A classifier that throws or returns something that is not a classification of the hands
+// A classifier that throws (an antipode::Error, or a standard exception: a bug of its plugin,
+// named with the component) or returns something that is not a classification of the hands
 // given fails ClassifyHands with the reason: nothing wrong is passed on, nothing crashes.
 TEST_F(PipelineNodesTest, AMisbehavingClassifierFailsItsNodeWithTheReason) {
   for (const auto& [garbage, reason] :
        {std::pair<std::string, std::string>{"nan", "gave hand 0 a score that is not a number"},
         {"drop", "returned 4 hands for 5"},
-        {"throw", "the classifier failed: the model file vanished"}}) {
+        {"throw", "the classifier failed: the model file vanished"},
+        {"std",
+         "ClassifyHands's code or its classifier 'classifier' (plugin garbage_classifier) "
+         "threw std::out_of_range: vector::_M_range_check"}}) {
     bt::Tree tree = load(R"(
 components:
   cell: { plugin: line_cell, points: 5 }

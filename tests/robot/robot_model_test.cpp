@@ -162,6 +162,15 @@ TEST(RobotModelErrors, NameTheFileTheLinkAndTheFix) {
             std::string::npos);
   EXPECT_NE(error_of([] { RobotModel::parse("not xml at all", "bad.urdf"); }).find("bad.urdf"),
             std::string::npos);
+  // 100,000 nested elements: refused where they pass 100 levels, not a stack overflow.
+  std::string deep = "<robot name='r'><link name='a'/>";
+  for (int i = 0; i < 100000; ++i) deep += "<x>";
+  for (int i = 0; i < 100000; ++i) deep += "</x>";
+  deep += "</robot>";
+  EXPECT_NE(error_of([&] { RobotModel::parse(deep, "deep.urdf"); })
+                .find("deep.urdf: not XML a robot description can be: elements nested deeper "
+                      "than 100 levels, at line 1"),
+            std::string::npos);
   const RobotModel robot = baxter();
   EXPECT_NE(error_of([&] {
               robot.chain("base", "right_hnd");

@@ -1,8 +1,10 @@
 #!/usr/bin/env bash
 # Installs the antipode SDK into a temporary prefix, checks that it carries no method
-# internals (no antipode/grasp headers, no SVM symbols exported by libantipode), builds the
-# out-of-tree example plugin against it with find_package(antipode), checks that the
-# installed `antipode` loads it, and runs the example's tree on a cloud (argument 3).
+# internals (no antipode/grasp headers, no SVM symbols exported by libantipode), runs the
+# installed detection tree from an empty folder, builds the out-of-tree example plugin
+# against it with find_package(antipode), checks that the installed `antipode` loads it,
+# and runs the example's tree on a cloud (argument 3), whose written hands carry the
+# plugin's own rejection reason.
 set -euo pipefail
 build_dir="$1"
 source_dir="$2"
@@ -24,6 +26,11 @@ cmake -S "$source_dir/plugins/examples/out_of_tree" -B "$work/plugin" \
   -DCMAKE_PREFIX_PATH="$work/prefix" -DCMAKE_BUILD_TYPE=Release >/dev/null
 cmake --build "$work/plugin" -j2 >/dev/null
 antipode="$(find "$work/prefix" -path '*/bin/antipode')"
+# The installation runs its own detection tree, with its shipped model, from an empty folder.
+mkdir "$work/empty"
+(cd "$work/empty" && "$antipode" detect "$cloud" --out grasps.json)
+grep -q '"frame"' "$work/empty/grasps.json"
+test -f "$work/prefix/share/antipode/models/hog_svm.model"
 listing="$(ANTIPODE_PLUGIN_PATH="$work/plugin/plugins" "$antipode" plugins)"
 echo "$listing"
 grep -q "^loaded  $work/plugin/plugins/libantipode_width_preference.so" <<<"$listing"
@@ -39,7 +46,10 @@ grep -q "^loaded  $work/prefix/lib.*/antipode/plugins/libantipode_pipeline_nodes
 if grep -q "^shadowed  $work/prefix" <<<"$listing"; then exit 1; fi
 # Its tree runs with the installed host and plugins.
 run="$(ANTIPODE_PLUGIN_PATH="$work/plugin/plugins" "$antipode" run \
-  "$source_dir/plugins/examples/out_of_tree/width_preference.yaml" --set cloud_file="$cloud")"
+  "$source_dir/plugins/examples/out_of_tree/width_preference.yaml" --set cloud_file="$cloud" \
+  --set grasps_file="$work/hands.json")"
 echo "$run"
 grep -Eq "width_preference labelled [0-9]+ hands as grasps" <<<"$run"
+# The plugin's own rejection reason reaches the written hands.
+grep -q '"rejection": "width far from the preferred"' "$work/hands.json"
 echo "out-of-tree plugin built against the installed SDK, loaded and run"

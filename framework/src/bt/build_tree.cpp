@@ -31,6 +31,7 @@ void TreeBuilder::create_components() {
                   declared.where);
     }
     context->components.emplace(declared.name, std::move(made));
+    context->component_plugins.emplace(declared.name, declared.plugin);
   }
 }
 

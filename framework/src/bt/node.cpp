@@ -1,7 +1,10 @@
 #include "antipode/bt/node.hpp"
 
 #include <iostream>
+#include <typeindex>
+#include <typeinfo>
 
+#include "antipode/bt/converters.hpp"
 #include "tree_context.hpp"
 
 namespace antipode::bt {
@@ -52,12 +55,34 @@ Status Node::execute_tick() {
     abandon(previous);
     failure_reason_ = e.message();
     result = Status::kFailure;
+  } catch (const Error&) {
+    abandon(previous);
+    rethrow_located();
+  } catch (const std::exception& fault) {
+    abandon(previous);
+    failure_reason_ = plugin_fault(fault);
+    result = Status::kFailure;
   } catch (...) {
     abandon(previous);
     rethrow_located();
   }
   set_status(result);
   return result;
+}
+
+std::string Node::plugin_fault(const std::exception& fault) const {
+  std::string components;
+  for (const auto& [port, bound] : config_.ports) {
+    const auto* name = std::any_cast<std::string>(&bound.value);
+    if (!bound.info.component_kind || name == nullptr || !config_.context) continue;
+    const auto plugin = config_.context->component_plugins.find(*name);
+    if (plugin == config_.context->component_plugins.end()) continue;
+    components += std::string(components.empty() ? "" : ", ") +
+                  to_string(*bound.info.component_kind) + " '" + *name + "' (plugin " +
+                  plugin->second + ")";
+  }
+  return type() + "'s code" + (components.empty() ? "" : " or its " + components) + " threw " +
+         type_name(std::type_index(typeid(fault))) + ": " + fault.what();
 }
 
 void Node::abandon(Status previous) noexcept {

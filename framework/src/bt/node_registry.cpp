@@ -75,7 +75,7 @@ void NodeRegistry::add(NodeManifest manifest) {
 const NodeManifest& NodeRegistry::get(const std::string& type) const {
   const auto found = manifests_.find(type);
   if (found == manifests_.end()) {
-    throw Error("unknown node '" + type + "'" + did_you_mean(type, types()));
+    throw UnknownTypeError("unknown node '" + type + "'" + did_you_mean(type, types()));
   }
   return found->second;
 }

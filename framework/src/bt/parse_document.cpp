@@ -33,9 +33,9 @@ ComponentSpec parse_component(const YAML::Node& key, const YAML::Node& value,
   }
   const auto kind = context.components->kind_of(spec.plugin);
   if (!kind) {
-    throw Error("unknown plugin type '" + spec.plugin + "' of " + owner +
-                    did_you_mean(spec.plugin, context.components->component_types()),
-                plugin_where);
+    throw UnknownTypeError("unknown plugin type '" + spec.plugin + "' of " + owner +
+                               did_you_mean(spec.plugin, context.components->component_types()),
+                           plugin_where);
   }
   spec.kind = *kind;
   return spec;

@@ -162,8 +162,9 @@ NodeSpec parse_node_entry(const YAML::Node& key, const YAML::Node& value,
                           const ParseContext& context) {
   const std::string type = key.Scalar();
   if (!context.registry->has(type)) {
-    throw Error("unknown node '" + type + "'" + did_you_mean(type, context.registry->types()),
-                locate(key, context.file));
+    throw UnknownTypeError(
+        "unknown node '" + type + "'" + did_you_mean(type, context.registry->types()),
+        locate(key, context.file));
   }
   NodeSpec spec;
   spec.manifest = &context.registry->get(type);

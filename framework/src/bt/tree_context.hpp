@@ -19,6 +19,8 @@ namespace antipode::bt::detail {
 struct TreeContext {
   std::uint64_t seed = 0;
   std::map<std::string, std::shared_ptr<Component>> components;
+  /// The plugin type of each component, by name ("classifier" -> "hog_svm_classifier").
+  std::map<std::string, std::string> component_plugins;
   std::vector<TreeObserver*> observers;
   std::vector<std::shared_ptr<TreeObserver>> owned_observers;
   LogSink log_sink;

@@ -1,7 +1,7 @@
 #include "antipode/core/binary_file.hpp"
 
+#include <algorithm>
 #include <fstream>
-#include <iterator>
 
 #include "antipode/core/atomic_file.hpp"
 #include "antipode/core/input_file.hpp"
@@ -28,7 +28,53 @@ T read_at(const std::vector<char>& bytes, std::size_t offset) {
   return value;
 }
 
+[[noreturn]] void fail_file(const std::string& path, const std::string& what,
+                            const std::string& message) {
+  throw Error(what + " file: " + message, SourceLocation{path});
+}
+
+struct Container {
+  std::uint32_t version = 0;
+  std::vector<char> payload;
+};
+
+// The version and checked payload of the file `path`, whose magic must be `magic`, or any
+// antipode magic ("ANTP...") when `magic` is empty.
+Container read_container(const std::string& path, const std::string& what,
+                         const std::string& magic) {
+  require_regular_file(path, "a " + what + " file");
+  std::ifstream in(path, std::ios::binary | std::ios::ate);
+  if (!in) throw Error("cannot open " + what + " file", SourceLocation{path});
+  // One read of the whole file, not a copy through stream iterators byte by byte.
+  std::vector<char> bytes(static_cast<std::size_t>(std::max<std::streamoff>(0, in.tellg())));
+  in.seekg(0);
+  if (!in.read(bytes.data(), static_cast<std::streamsize>(bytes.size())))
+    throw Error("cannot read " + what + " file", SourceLocation{path});
+  const std::string expected = magic.empty() ? std::string("ANTP") : magic;
+  if (bytes.size() < kHeaderSize || std::string(bytes.data(), expected.size()) != expected)
+    fail_file(path, what,
+              "not an antipode " + what + " file (it does not start with '" + expected + "')");
+  Container file;
+  file.version = read_at<std::uint32_t>(bytes, kMagicSize);
+  const auto size = read_at<std::uint64_t>(bytes, kMagicSize + 4);
+  const auto checksum = read_at<std::uint64_t>(bytes, kMagicSize + 12);
+  if (bytes.size() - kHeaderSize != size) {
+    fail_file(path, what,
+              "truncated or extended: " + std::to_string(bytes.size() - kHeaderSize) +
+                  " payload bytes, the header says " + std::to_string(size));
+  }
+  bytes.erase(bytes.begin(), bytes.begin() + kHeaderSize);
+  file.payload = std::move(bytes);
+  if (fnv1a(file.payload) != checksum)
+    fail_file(path, what, "corrupted (checksum mismatch); re-create the file");
+  return file;
+}
+
 }  // namespace
+
+void check_binary_file(const std::string& path, const std::string& what) {
+  read_container(path, what, "");
+}
 
 BinaryWriter::BinaryWriter(std::string magic, std::uint32_t version)
     : magic_(std::move(magic)), version_(version) {
@@ -63,26 +109,13 @@ void BinaryWriter::write(const std::string& path) const {
 BinaryReader::BinaryReader(const std::string& path, const std::string& magic,
                            std::uint32_t newest_version, std::string what)
     : path_(path), what_(std::move(what)) {
-  require_regular_file(path, "a " + what_ + " file");
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw Error("cannot open " + what_ + " file", SourceLocation{path});
-  std::vector<char> bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  if (bytes.size() < kHeaderSize || std::string(bytes.data(), kMagicSize) != magic) {
-    fail("not an antipode " + what_ + " file (it does not start with '" + magic + "')");
-  }
-  version_ = read_at<std::uint32_t>(bytes, kMagicSize);
-  const auto size = read_at<std::uint64_t>(bytes, kMagicSize + 4);
-  const auto checksum = read_at<std::uint64_t>(bytes, kMagicSize + 12);
+  Container file = read_container(path, what_, magic);
+  version_ = file.version;
   if (version_ == 0 || version_ > newest_version) {
     fail("format version " + std::to_string(version_) + ", but this antipode reads versions 1-" +
          std::to_string(newest_version) + " (update antipode or re-create the file)");
   }
-  if (bytes.size() - kHeaderSize != size) {
-    fail("truncated or extended: " + std::to_string(bytes.size() - kHeaderSize) +
-         " payload bytes, the header says " + std::to_string(size));
-  }
-  payload_.assign(bytes.begin() + kHeaderSize, bytes.end());
-  if (fnv1a(payload_) != checksum) fail("corrupted (checksum mismatch); re-create the file");
+  payload_ = std::move(file.payload);
 }
 
 std::string BinaryReader::get_string() {
@@ -103,8 +136,6 @@ void BinaryReader::expect_end() const {
   if (remaining() != 0) fail(std::to_string(remaining()) + " unexpected bytes at the end");
 }
 
-void BinaryReader::fail(const std::string& message) const {
-  throw Error(what_ + " file: " + message, SourceLocation{path_});
-}
+void BinaryReader::fail(const std::string& message) const { fail_file(path_, what_, message); }
 
 }  // namespace antipode

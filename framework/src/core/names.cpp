@@ -60,6 +60,8 @@ const char* to_string(Rejection reason) {
       return "fingers over an edge";
     case Rejection::kWidestBeyondTheTips:
       return "widest beyond the fingertips";
+    case Rejection::kPluginReason:
+      return "a plugin's reason";
   }
   return "?";
 }

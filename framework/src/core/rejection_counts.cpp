@@ -8,10 +8,21 @@
 
 namespace antipode {
 
+void reject_for(Hand& hand, std::string reason) {
+  hand.rejection = Rejection::kPluginReason;
+  hand.rejection_text = std::move(reason);
+}
+
+std::string rejection_reason(const Hand& hand) {
+  if (hand.rejection == Rejection::kPluginReason && !hand.rejection_text.empty())
+    return hand.rejection_text;
+  return to_string(hand.rejection);
+}
+
 std::string rejection_counts(const std::vector<Hand>& hands, bool count_kept) {
   std::map<std::string, int> count;
   for (const Hand& hand : hands)
-    if (count_kept || hand.rejection != Rejection::kNone) ++count[to_string(hand.rejection)];
+    if (count_kept || hand.rejection != Rejection::kNone) ++count[rejection_reason(hand)];
   std::vector<std::pair<int, std::string>> order;
   for (const auto& [reason, n] : count) order.emplace_back(-n, reason);
   std::sort(order.begin(), order.end());

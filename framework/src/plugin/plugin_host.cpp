@@ -12,6 +12,7 @@
 #include <set>
 #include <sstream>
 
+#include "../core/library_dir.hpp"
 #include "antipode/config.hpp"
 #include "antipode/core/error.hpp"
 #include "antipode/plugin/plugin_index.hpp"
@@ -59,16 +60,10 @@ constexpr std::size_t kDescriptorBytesRead =
     offsetof(PluginDescriptor, factories) +
     sizeof(PluginDescriptor::factories);  // NOLINT(bugprone-sizeof-expression): the field's size
 
+using detail::library_dir;
+
 // <directory of libantipode.so>/antipode/plugins: found at run time, so an installed tree
 // works from whatever prefix it was installed to.
-// The folder holding this libantipode.so, "" when the loader cannot say.
-fs::path library_dir() {
-  Dl_info info{};
-  if (dladdr(reinterpret_cast<void*>(&split_path_list), &info) == 0 || info.dli_fname == nullptr)
-    return {};
-  return fs::path(info.dli_fname).parent_path();
-}
-
 std::string installed_plugin_dir() {
   return (library_dir() / ANTIPODE_PLUGIN_DIR_BESIDE_LIBRARY).lexically_normal().string();
 }

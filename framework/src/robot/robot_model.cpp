@@ -9,6 +9,7 @@
 #include <utility>
 
 #include <console_bridge/console.h>
+#include <tinyxml2.h>
 #include <urdf_parser/urdf_parser.h>
 #include <kdl/joint.hpp>
 #include <kdl/segment.hpp>
@@ -35,7 +36,23 @@ class FirstError : public console_bridge::OutputHandler {
   std::string first;
 };
 
+// urdfdom reads with TinyXML, whose parser recurses once per nested element: 100,000 nested
+// elements overflow the stack. tinyxml2 stops at TINYXML2_MAX_ELEMENT_DEPTH (100; a URDF
+// nests 5) and says where, so the description is checked with it first.
+void check_xml(const std::string& xml, const std::string& source) {
+  tinyxml2::XMLDocument document;
+  if (document.Parse(xml.data(), xml.size()) == tinyxml2::XML_SUCCESS) return;
+  const std::string why = document.ErrorID() == tinyxml2::XML_ELEMENT_DEPTH_EXCEEDED
+                              ? "elements nested deeper than " +
+                                    std::to_string(TINYXML2_MAX_ELEMENT_DEPTH) +
+                                    " levels, at line " + std::to_string(document.ErrorLineNum())
+                              : std::string(document.ErrorStr());
+  throw Error(source + ": not XML a robot description can be: " + why, {},
+              "check the file against the URDF specification");
+}
+
 urdf::ModelInterfaceSharedPtr parse_urdf(const std::string& xml, const std::string& source) {
+  check_xml(xml, source);
   static std::mutex console_mutex;  // console_bridge's handler is process-wide
   const std::lock_guard<std::mutex> lock(console_mutex);
   FirstError errors;

@@ -4,11 +4,8 @@
 #include <charconv>
 #include <cmath>
 #include <cstdint>
-#include <cstring>
 #include <fstream>
-#include <map>
 #include <sstream>
-#include <tuple>
 
 #include "antipode/core/error.hpp"
 #include "antipode/core/input_file.hpp"
@@ -61,37 +58,6 @@ TriangleMesh read_obj(const std::string& path) {
     }
   }
   if (mesh.empty()) throw Error(path + ": no faces");
-  return mesh;
-}
-
-TriangleMesh read_binary_stl(const std::string& path) {
-  require_regular_file(path, "an STL mesh file");
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw Error(path + ": cannot open");
-  char header[80];
-  std::uint32_t count = 0;
-  if (!in.read(header, 80) || !in.read(reinterpret_cast<char*>(&count), 4))
-    throw Error(path + ": truncated STL header");
-  TriangleMesh mesh;
-  std::map<std::tuple<float, float, float>, int> welded;
-  for (std::uint32_t i = 0; i < count; ++i) {
-    char record[50];
-    if (!in.read(record, 50)) throw Error(path + ": truncated at triangle " + std::to_string(i));
-    Eigen::Vector3i triangle;
-    for (int k = 0; k < 3; ++k) {
-      float xyz[3];
-      std::memcpy(xyz, record + 12 + 12 * k, 12);
-      if (!(std::max({std::abs(xyz[0]), std::abs(xyz[1]), std::abs(xyz[2])}) <= kMaxCoordinate))
-        throw Error(path + ": triangle " + std::to_string(i) +
-                    " has a vertex beyond 1000 m (or not finite)");
-      const auto key = std::make_tuple(xyz[0], xyz[1], xyz[2]);
-      auto [it, inserted] = welded.emplace(key, int(mesh.vertices.size()));
-      if (inserted) mesh.vertices.emplace_back(xyz[0], xyz[1], xyz[2]);
-      triangle[k] = it->second;
-    }
-    mesh.triangles.push_back(triangle);
-  }
-  if (mesh.empty()) throw Error(path + ": no triangles");
   return mesh;
 }
 

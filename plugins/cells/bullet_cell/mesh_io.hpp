@@ -1,6 +1,6 @@
 #pragma once
-// Reading meshes: Wavefront OBJ (vertices and faces; polygons are fanned) and binary STL
-// (vertices welded where they coincide). Both throw antipode::Error naming the file.
+// Reading meshes: Wavefront OBJ (vertices and faces; polygons are fanned). Throws
+// antipode::Error naming the file.
 
 #include <string>
 
@@ -9,6 +9,5 @@
 namespace antipode::cells {
 
 TriangleMesh read_obj(const std::string& path);
-TriangleMesh read_binary_stl(const std::string& path);
 
 }  // namespace antipode::cells

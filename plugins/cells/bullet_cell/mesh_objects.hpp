@@ -1,7 +1,7 @@
 #pragma once
-// Objects from mesh files: a folder per object holding visual.obj (what the sensor sees) and
-// optionally collision.stl (a convex decomposition, binary STL), or a flat folder of
-// NNN.obj meshes whose convex hull is used for collision (the blob set).
+// Objects from mesh files: a folder per object holding visual.obj (what the sensor sees), or
+// a flat folder of NNN.obj meshes (the blob set). Either collides as the convex
+// decomposition of that mesh (convex_decomposition.hpp); other files are not read.
 
 #include <string>
 #include <vector>

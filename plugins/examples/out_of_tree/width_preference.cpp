@@ -1,7 +1,8 @@
 // A minimal antipode plugin: one classifier and one behaviour-tree node.
 //
 // - classifier `width_preference`: scores each hand by how close the object width between
-//   its fingers is to a preferred width; hands further than `tolerance_m` away are negative.
+//   its fingers is to a preferred width; hands further than `tolerance_m` away are negative,
+//   rejected with a reason of the plugin's own ("width far from the preferred").
 // - node `CountGrasps`: writes how many hands of a set are labelled positive.
 #include <algorithm>
 #include <cmath>
@@ -29,7 +30,8 @@ class WidthPreference final : public Classifier {
       const double distance_m = std::abs(hand.width_m - preferred_m_);
       hand.score = 1.0 - distance_m / tolerance_m_;
       hand.label = distance_m <= tolerance_m_ ? HandLabel::kPositive : HandLabel::kNegative;
-      if (hand.label == HandLabel::kNegative) hand.rejection = Rejection::kLowScore;
+      // A reason of the plugin's own: WriteGrasps and `detect --explain` print it.
+      if (hand.label == HandLabel::kNegative) reject_for(hand, "width far from the preferred");
     }
   }
 

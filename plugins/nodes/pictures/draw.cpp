@@ -4,11 +4,10 @@
 #include <array>
 #include <numeric>
 
-#include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
-#include "antipode/core/atomic_file.hpp"
 #include "antipode/core/error.hpp"
+#include "antipode/io/png_file.hpp"
 
 namespace antipode::pictures {
 namespace {
@@ -117,9 +116,8 @@ OrthoView view_from_sensor(const Cloud& cloud, const Eigen::Vector3d& target,
 }
 
 void write_png(const std::string& file, const cv::Mat& image) {
-  write_file_atomically(file, [&](const std::string& temporary) {
-    if (!cv::imwrite(temporary, image)) throw Error("OpenCV could not write a PNG");
-  });
+  if (image.type() != CV_8UC3) throw Error(file + ": a picture must be 8-bit colour");
+  write_png_bgr(file, image.cols, image.rows, image.data, image.step[0]);
 }
 
 void caption(cv::Mat& image, const std::vector<std::string>& lines) {

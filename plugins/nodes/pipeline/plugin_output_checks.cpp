@@ -85,9 +85,10 @@ std::string screening_problem(const HandSet& given, const HandSet& screened) {
     if (!after.X_FrameHand.matrix().isApprox(before.X_FrameHand.matrix()) ||
         after.score != before.score || after.label != before.label)
       return "changed hand " + std::to_string(i) + " (a screen only sets rejections)";
-    if (before.rejection != Rejection::kNone && after.rejection != before.rejection)
+    if (before.rejection != Rejection::kNone &&
+        (after.rejection != before.rejection || after.rejection_text != before.rejection_text))
       return "changed the rejection of hand " + std::to_string(i) + " from '" +
-             to_string(before.rejection) + "'";
+             rejection_reason(before) + "'";
   }
   return "";
 }

@@ -26,7 +26,7 @@ nlohmann::json hand_json(const Hand& hand) {
       {"sample_index", hand.sample_index},
       {"object", hand.object},
   };
-  if (hand.rejection != Rejection::kNone) json["rejection"] = to_string(hand.rejection);
+  if (hand.rejection != Rejection::kNone) json["rejection"] = rejection_reason(hand);
   return json;
 }
 

@@ -6,16 +6,18 @@
 /// A node type derives from one of the convenience bases (action_node.hpp, control_node.hpp,
 /// decorator_node.hpp), declares its ports in a static `manifest()` and implements tick().
 /// Inside tick() it reads inputs with get_input<T>(), writes outputs with set_output(), and
-/// uses components with component<C>():
+/// uses components with component<C>() (from docs/examples/sample_few_hands.cpp):
 /// @code
 ///   Status tick() override {
-///     const auto cloud = get_input<std::shared_ptr<const Cloud>>("cloud");
-///     HandSet hands = component<Sampler>("sampler").sample(*cloud, random());
-///     if (hands.hands.empty()) {
+///     const auto cloud = get_input<CloudPtr>("cloud");
+///     auto hands = std::make_shared<HandSet>(
+///         component<Sampler>("sampler").sample(*cloud, random(), stop_token()));
+///     if (hands->hands.empty()) {
 ///       set_failure_reason("no hand hypotheses");
 ///       return Status::kFailure;
 ///     }
-///     set_output("hands", std::move(hands));
+///     ...
+///     set_output("hands", HandSetPtr(std::move(hands)));
 ///     return Status::kSuccess;
 ///   }
 /// @endcode
@@ -81,9 +83,11 @@ class Node {
   Node& operator=(const Node&) = delete;
 
   /// Ticks the node: calls tick(), records the status and reports a change to the tree's
-  /// observers. An antipode::Error without a location, or any
-  /// other std::exception, thrown by tick() is rethrown as an Error located at this node, after
-  /// halting what the tick may have left RUNNING (the node is then IDLE).
+  /// observers. An antipode::Error without a location thrown by tick() is rethrown as an
+  /// Error located at this node (an InternalError stays internal), after halting what the
+  /// tick may have left RUNNING (the node is then IDLE). Any other std::exception is a fault
+  /// of plugin code - the node's or a component's it called - and fails the node: the reason
+  /// names the exception and the components the node uses with their plugins.
   Status execute_tick();
 
   /// Calls halt() if the node is RUNNING, then resets it to IDLE.
@@ -208,6 +212,7 @@ class Node {
   void abandon(Status previous) noexcept;
   // Rethrows the current exception as an Error located at this node (unless it has a place).
   [[noreturn]] void rethrow_located() const;
+  std::string plugin_fault(const std::exception& fault) const;
 
   NodeConfig config_;
   Status status_ = Status::kIdle;

@@ -2,15 +2,19 @@
 /// @file
 /// Port declarations: what a node type reads and writes, and how its YAML keys are checked.
 ///
-/// A node type lists its ports in its NodeManifest:
+/// A node type lists its ports in its NodeManifest (from docs/examples/sample_few_hands.cpp):
 /// @code
 ///   static NodeManifest manifest() {
-///     return {"SampleHands", NodeCategory::kAction,
+///     return {"SampleFewHands",
+///             NodeCategory::kAction,
 ///             {component_port<Sampler>("sampler", "the sampler to use"),
-///              input_port<std::shared_ptr<const Cloud>>("cloud", "the cloud to sample"),
+///              input_port<CloudPtr>("cloud", "the cloud to sample"),
 ///              input_port<int>("max_hands", 1000, "upper bound on the result"),
-///              output_port<HandSet>("hands", "the sampled hands")},
-///             0, 0, "Samples hand hypotheses from a cloud."};
+///              output_port<HandSetPtr>("hands", "the sampled hands")},
+///             0,
+///             0,
+///             "Samples at most max_hands hand hypotheses from a cloud.",
+///             {}};
 ///   }
 /// @endcode
 

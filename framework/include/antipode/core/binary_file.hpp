@@ -52,6 +52,12 @@ class BinaryWriter {
   std::vector<char> payload_;
 };
 
+/// Checks that `path` is a whole, uncorrupted file written by BinaryWriter - any antipode
+/// magic, its payload size and checksum - without decoding the payload, so that a command can
+/// refuse a damaged input before the work that precedes reading it. Throws the errors
+/// BinaryReader would, naming the file and `what` it was meant to be ("classifier model").
+void check_binary_file(const std::string& path, const std::string& what);
+
 /// Reads a whole file written by BinaryWriter and checks its header and checksum; get*()
 /// then read the payload in order. Every failure is an antipode::Error naming the file and
 /// `what` it was meant to be ("classifier model", ...).

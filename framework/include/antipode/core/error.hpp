@@ -46,6 +46,13 @@ class InternalError : public Error {
   using Error::Error;
 };
 
+/// A tree names a node or plugin type that no loaded library provides: a misspelling, or the
+/// type of a library the plugin host refused (the CLI then says so).
+class UnknownTypeError : public Error {
+ public:
+  using Error::Error;
+};
+
 /// Called inside a catch block: rethrows the exception being handled with `who` and `where`
 /// added when it has no location yet. Errors stay Errors (InternalErrors stay internal);
 /// any other exception becomes an InternalError.

@@ -36,6 +36,9 @@ enum class Rejection : std::uint8_t {
   kOtherObject,          ///< on another object than the one the selection was asked for
   kFingersOverAnEdge,    ///< the object fills too little of the fingers' height: they clip an edge
   kWidestBeyondTheTips,  ///< the object widens beyond the fingertips: squeezed out past them
+  /// A plugin's own reason, in its words (Hand::rejection_text; set with reject_for()): a
+  /// third-party stage need not squeeze its criterion into one of the codes above.
+  kPluginReason,
 };
 
 const char* to_string(HandLabel label);
@@ -51,6 +54,8 @@ struct Hand {
   double score = 0.0;    ///< higher is better; meaning set by the last stage that scored it
   HandLabel label = HandLabel::kUnknown;
   Rejection rejection = Rejection::kNone;
+  /// With kPluginReason, the plugin's reason ("too tilted"); empty otherwise.
+  std::string rejection_text;
   std::int32_t sample_index = -1;            ///< which surface sample produced this hand
   std::vector<std::int32_t> closing_points;  ///< indices into the cloud, inside the closing region
   /// Selection only: for a hand rejected as kClustered, the index (in the selection's hand
@@ -66,6 +71,14 @@ struct Hand {
   Eigen::Vector3d axis() const { return X_FrameHand.linear().col(2); }
   Eigen::Vector3d position_m() const { return X_FrameHand.translation(); }
 };
+
+/// Rejects `hand` for a reason of the caller's own: kPluginReason with `reason` as its text
+/// ("too tilted": a short phrase, as the codes' names are).
+void reject_for(Hand& hand, std::string reason);
+
+/// Why `hand` was rejected, as printed and written: its rejection_text for kPluginReason
+/// ("a plugin's reason" when that is empty), else to_string(hand.rejection).
+std::string rejection_reason(const Hand& hand);
 
 /// "12 clustered into another grasp, 3 in collision": how many of `hands` each rejection
 /// dropped, most frequent first (ties by name); hands without one are counted as "none"
