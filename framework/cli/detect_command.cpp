@@ -68,8 +68,8 @@ std::string per_object(const HandSet& set, bool grasps_only) {
 }
 
 // What --explain prints: the scene the sampler found, how many hands each stage kept (per
-// object; the screen's reasons, when the tree screens into {screened}) and where the best
-// grasps lie.
+// object; the screen's reasons, when the tree screens into {screened}, and every rejection's
+// once classified) and where the best grasps lie.
 void print_explanation(const HandSet* sampled, const HandSet* screened, const HandSet* classified,
                        std::size_t best) {
   if (sampled == nullptr) {
@@ -96,6 +96,8 @@ void print_explanation(const HandSet* sampled, const HandSet* screened, const Ha
   }
   std::cout << "classified as grasps: " << grasps.size()
             << " (per object: " << per_object(*classified, true) << ")\n";
+  std::cout << "rejected by the screen or the classifier: "
+            << rejection_counts(classified->hands, false) << "\n";
   std::stable_sort(grasps.begin(), grasps.end(),
                    [](const Hand* a, const Hand* b) { return a->score > b->score; });
   grasps.resize(std::min(best, grasps.size()));

@@ -302,13 +302,14 @@ void add_report(CLI::App& app, antipode::cli::ReportOptions& o) {
 
 // The paths a command reads that antipode ships (its trees, the default model and robot):
 // from any folder, a relative path missing there is taken from the shipped data
-// (antipode/core/shipped_data.hpp), so that an installed antipode runs its own trees.
+// (antipode/core/shipped_data.hpp), so that an installed antipode runs its own trees. Scene
+// files are not: the cell resolves them from the tree's folder and its parent, which for a
+// shipped tree holds the shipped scenes.
 void resolve_shipped_paths(Commands& c) {
   for (std::string* path :
-       {&c.run.tree_path, &c.detect.tree_path, &c.scene.scene_path, &c.scene.tree_path,
-        &c.train.tree_path, &c.outcomes.tree_path, &c.eval.tree_path, &c.eval.model_path,
-        &c.isolation.tree_path, &c.reach.robot_path, &c.reach.scene_tree, &c.reach.scene_file,
-        &c.clutter.tree_path, &c.clutter.gripper_path})
+       {&c.run.tree_path, &c.detect.tree_path, &c.scene.tree_path, &c.train.tree_path,
+        &c.outcomes.tree_path, &c.eval.tree_path, &c.eval.model_path, &c.isolation.tree_path,
+        &c.reach.robot_path, &c.reach.scene_tree, &c.clutter.tree_path, &c.clutter.gripper_path})
     *path = antipode::resolve_shipped(*path);
   for (std::string& path : c.validate_paths) path = antipode::resolve_shipped(path);
 }

@@ -55,7 +55,9 @@ ReportSection section_of(const std::string& path, const std::string& name, const
   } catch (const Json::exception& e) {
     throw Error(path + ": an entry the report needs is missing or malformed (" +
                 std::string(e.what()) + ")");
-  } catch (const Error& e) {
+  } catch (const InternalError&) {
+    throw;
+  } catch (const Error& e) {  // a malformed entry found by a section (an empty "variants")
     throw Error(path + ": " + e.what());
   }
   throw Error(path + ": not the report of an isolation or clutter bench or of eval-classifier");

@@ -447,6 +447,10 @@ TEST_F(DetectTest, ExplainNamesTheSupportTheObjectsAndWhereTheBestGraspsLie) {
       "left to classify by the selector's screen: [0-9]+ \\([0-9]+ at the "
       "aperture limits");
   EXPECT_TRUE(std::regex_search(result.out, screen)) << result.out;
+  // The classifier's rejections are added to the screen's.
+  const std::regex rejected(
+      "rejected by the screen or the classifier: [0-9, a-z]*[0-9]+ low score");
+  EXPECT_TRUE(std::regex_search(result.out, rejected)) << result.out;
   EXPECT_NE(result.out.find("the 12 best grasps: 12 on objects"), std::string::npos) << result.out;
   std::ifstream in(dir_ / "g.json");
   const auto document = nlohmann::json::parse(in);

@@ -67,6 +67,11 @@ TEST(HandTest, APluginsOwnRejectionReasonIsPrintedAndCounted) {
   EXPECT_EQ(rejection_counts(hands), "2 too tilted, 1 low score, 1 none");
   hands[3].rejection = Rejection::kPluginReason;  // no text given
   EXPECT_EQ(rejection_reason(hands[3]), "a plugin's reason");
+  // A reason stays one line and is never taken for a code or for a kept hand.
+  reject_for(hands[3], "none");
+  EXPECT_EQ(rejection_reason(hands[3]), "none (a plugin's)");
+  reject_for(hands[3], "too\ntilted");
+  EXPECT_EQ(rejection_reason(hands[3]), "too tilted");
 }
 
 }  // namespace

@@ -1,4 +1,5 @@
 #include <algorithm>
+#include <cctype>
 #include <map>
 #include <string>
 #include <utility>
@@ -9,6 +10,12 @@
 namespace antipode {
 
 void reject_for(Hand& hand, std::string reason) {
+  for (char& c : reason)
+    if (std::iscntrl(static_cast<unsigned char>(c))) c = ' ';  // reasons are one line
+  // A code's name ("none", "low score") would be counted as that code: it is marked as the
+  // plugin's.
+  for (int code = 0; code <= static_cast<int>(Rejection::kPluginReason); ++code)
+    if (reason == to_string(static_cast<Rejection>(code))) reason += " (a plugin's)";
   hand.rejection = Rejection::kPluginReason;
   hand.rejection_text = std::move(reason);
 }

@@ -73,7 +73,9 @@ struct Hand {
 };
 
 /// Rejects `hand` for a reason of the caller's own: kPluginReason with `reason` as its text
-/// ("too tilted": a short phrase, as the codes' names are).
+/// ("too tilted": a short phrase, as the codes' names are). Control characters become
+/// spaces, and a reason spelt as a code's name ("low score", "none") gets " (a plugin's)"
+/// added, so that it is never counted as that code.
 void reject_for(Hand& hand, std::string reason);
 
 /// Why `hand` was rejected, as printed and written: its rejection_text for kPluginReason
