@@ -193,12 +193,12 @@ TEST(MalformedCloudTest, EmptyAndNonFiniteClouds) {
 TEST(MalformedCloudTest, AListAmongTheVertexPropertiesIsAnError) {
   TempDir dir;
   for (const char* format : {"ascii", "binary_little_endian"}) {
-    write_bytes(dir.file("list.ply"),
-                std::string("ply\nformat ") + format +
-                    " 1.0\nelement vertex 1\nproperty float x\nproperty float y\n"
-                    "property float z\nproperty list uchar int ids\nend_header\n" +
-                    (std::string(format) == "ascii" ? std::string("0 0 1 1 7\n")
-                                                   : std::string(17, '\1')));
+    write_bytes(
+        dir.file("list.ply"),
+        std::string("ply\nformat ") + format +
+            " 1.0\nelement vertex 1\nproperty float x\nproperty float y\n"
+            "property float z\nproperty list uchar int ids\nend_header\n" +
+            (std::string(format) == "ascii" ? std::string("0 0 1 1 7\n") : std::string(17, '\1')));
     expect_error(dir.file("list.ply"), "the PLY vertices have a list property ('ids')");
   }
 }
@@ -233,6 +233,49 @@ TEST(MalformedCloudTest, BinaryPlyListsMustFitTheFile) {
   bad[header.size() + 24] = char(200);  // the first list claims 200 ints
   write_bytes(dir.file("bad.ply"), bad);
   expect_error(dir.file("bad.ply"), "the list 'extra' of element 'face' record 0 declares 200");
+}
+
+// The PLY layouts a reader must handle, written by hand: elements with lists before the
+// vertices, coordinates in double precision and big-endian order among other properties.
+TEST(MalformedCloudTest, PlyLayoutsAreReadAndBadValuesAreLocated) {
+  TempDir dir;
+  write_bytes(dir.file("a.ply"),
+              "ply\nformat ascii 1.0\nelement face 2\nproperty list uchar int ids\n"
+              "element vertex 2\nproperty uchar red\nproperty double z\nproperty float y\n"
+              "property float x\nend_header\n3 0 1 2\n0\n7 3.5 2 1\n8 -1e-2 nan 4\n");
+  const Cloud ascii = load_cloud(dir.file("a.ply"));
+  ASSERT_EQ(ascii.size(), 1u);  // the second point's y is NaN
+  EXPECT_EQ(ascii.points_m[0], Eigen::Vector3f(1.0f, 2.0f, 3.5f));
+
+  std::string binary =
+      "ply\nformat binary_big_endian 1.0\nelement vertex 1\nproperty double x\n"
+      "property short label\nproperty float y\nproperty double z\nend_header\n";
+  const auto big_endian = [&binary](const auto value) {
+    char raw[sizeof value];
+    std::memcpy(raw, &value, sizeof value);
+    for (std::size_t k = sizeof value; k > 0; --k) binary += raw[k - 1];
+  };
+  big_endian(0.25);
+  big_endian(std::int16_t{-3});
+  big_endian(-0.5f);
+  big_endian(1.125);
+  write_bytes(dir.file("b.ply"), binary);
+  const Cloud big = load_cloud(dir.file("b.ply"));
+  ASSERT_EQ(big.size(), 1u);
+  EXPECT_EQ(big.points_m[0], Eigen::Vector3f(0.25f, -0.5f, 1.125f));
+
+  write_bytes(dir.file("int.ply"),
+              "ply\nformat ascii 1.0\nelement vertex 1\nproperty int x\nproperty float y\n"
+              "property float z\nend_header\n1 2 3\n");
+  expect_error(dir.file("int.ply"), "field 'x' is not floating point");
+  write_bytes(dir.file("word.ply"),
+              "ply\nformat ascii 1.0\nelement vertex 2\nproperty float x\nproperty float y\n"
+              "property float z\nend_header\n1 2 3\n1 two 3\n");
+  expect_error(dir.file("word.ply"), ":9: not a number: 'two'");
+  write_bytes(dir.file("short.ply"),
+              "ply\nformat ascii 1.0\nelement vertex 2\nproperty float x\nproperty float y\n"
+              "property float z\nend_header\n1 2 3 1 2\n");
+  expect_error(dir.file("short.ply"), "truncated PLY file: element 'vertex' record 1");
 }
 
 }  // namespace

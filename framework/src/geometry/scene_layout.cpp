@@ -195,7 +195,8 @@ std::vector<SceneObject> objects_on(const Points& points, const Candidate& c,
     }
     const bool standing = low <= o.max_gap_m;
     const bool cut = object.height_m > o.max_object_height_m - 0.01f;
-    if (!standing || cut || (hi - lo).maxCoeff() > o.max_object_size_m) continue;
+    const bool flat = object.height_m < o.min_object_height_m;
+    if (!standing || cut || flat || (hi - lo).maxCoeff() > o.max_object_size_m) continue;
     object.centroid_m = (sum / static_cast<double>(cluster.size())).cast<float>();
     object.id = static_cast<std::int32_t>(objects.size());
     object.points = std::move(cluster);
@@ -226,6 +227,8 @@ void SceneOptions::validate() const {
           "max_object_height_m must be above plane_distance_m + 0.01 and at most 5");
   require(max_object_size_m > 0.0f && max_object_size_m <= 10.0f,
           "max_object_size_m must be in (0, 10]");
+  require(min_object_height_m >= plane_distance_m && min_object_height_m < max_object_height_m,
+          "min_object_height_m must be in [plane_distance_m, max_object_height_m)");
   require(max_gap_m >= 0.0f && max_gap_m < max_object_height_m,
           "max_gap_m must be in [0, max_object_height_m)");
   require(cluster_tolerance_m > 0.0f && cluster_tolerance_m < 0.1f,

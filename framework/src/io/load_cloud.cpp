@@ -5,9 +5,6 @@
 #include <cerrno>
 #include <cstring>
 #include <fstream>
-#include <mutex>
-
-#include <pcl/console/print.h>
 
 #include "antipode/core/error.hpp"
 #include "antipode/core/input_file.hpp"
@@ -28,11 +25,6 @@ std::string read_file_bytes(const std::string& path) {
   file.seekg(0, std::ios::beg);
   if (size > 0 && !file.read(bytes.data(), size)) throw Error("cannot read cloud file", {path});
   return bytes;
-}
-
-void silence_pcl_console() {
-  static std::once_flag once;
-  std::call_once(once, [] { pcl::console::setVerbosityLevel(pcl::console::L_ALWAYS); });
 }
 
 }  // namespace io

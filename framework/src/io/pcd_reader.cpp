@@ -1,12 +1,12 @@
 // PCD files: the header is parsed and checked here, and the data decoded here in every
 // encoding, once its size matches the header. PCL's reader is not used: it parses the header
 // again, its own way, and a header that this parser accepts can make PCL's allocate
-// terabytes or crash (found by fuzzing: tests/fuzz/corpus/cloud). Only PCL's LZF decoder is
-// used, on a buffer whose sizes are checked first.
-#include <pcl/io/lzf.h>
-
+// terabytes or crash (found by fuzzing: tests/fuzz/corpus/cloud). Compressed data is
+// decoded by liblzf (the LZF format PCL writes), on a buffer whose sizes are checked first.
 #include <cstdint>
 #include <cstring>
+
+#include <lzf.h>
 
 #include "antipode/core/error.hpp"
 #include "pcd_ascii.hpp"
@@ -30,17 +30,25 @@ float value_at(const char* at, const PcdField& field) {
       return field.size == 8 ? load_as_float<double>(at) : load_as_float<float>(at);
     case 'I':
       switch (field.size) {
-        case 1: return load_as_float<std::int8_t>(at);
-        case 2: return load_as_float<std::int16_t>(at);
-        case 4: return load_as_float<std::int32_t>(at);
-        default: return load_as_float<std::int64_t>(at);
+        case 1:
+          return load_as_float<std::int8_t>(at);
+        case 2:
+          return load_as_float<std::int16_t>(at);
+        case 4:
+          return load_as_float<std::int32_t>(at);
+        default:
+          return load_as_float<std::int64_t>(at);
       }
     default:
       switch (field.size) {
-        case 1: return load_as_float<std::uint8_t>(at);
-        case 2: return load_as_float<std::uint16_t>(at);
-        case 4: return load_as_float<std::uint32_t>(at);
-        default: return load_as_float<std::uint64_t>(at);
+        case 1:
+          return load_as_float<std::uint8_t>(at);
+        case 2:
+          return load_as_float<std::uint16_t>(at);
+        case 4:
+          return load_as_float<std::uint32_t>(at);
+        default:
+          return load_as_float<std::uint64_t>(at);
       }
   }
 }
@@ -67,9 +75,9 @@ std::vector<Eigen::Vector3f> read_compressed(const std::string& path, const std:
   std::uint32_t compressed = 0;
   std::memcpy(&compressed, bytes.data() + header.data_offset, 4);
   std::vector<char> unpacked(header.points * header.point_step);
-  const unsigned int size = pcl::lzfDecompress(bytes.data() + header.data_offset + 8, compressed,
-                                               unpacked.data(),
-                                               static_cast<unsigned int>(unpacked.size()));
+  const unsigned int size =
+      lzf_decompress(bytes.data() + header.data_offset + 8, compressed, unpacked.data(),
+                     static_cast<unsigned int>(unpacked.size()));
   if (size != unpacked.size()) {
     throw Error("corrupt PCD file: its compressed data cannot be decoded", {path});
   }

@@ -1,12 +1,15 @@
-// PLY files: the header is checked here (magic, format, element sizes against the file
-// size) before PCL's PLYReader parses the file, so that a short or garbled file is an
-// Error rather than a giant allocation.
+// PLY files, read here rather than by PCL's PLYReader: linking PCL's io library (and through
+// it VTK, OpenNI and libusb, 40 shared libraries) added 20 ms to the start of every antipode
+// process, 20.0 ms against 0.7 ms for a bare process (`perf stat -r 21` of a program that
+// only dlopens libpcl_io.so), while the header parser below was needed anyway: PCL's reader
+// aborted the process on some inputs (tests/fuzz/corpus/cloud). No other PLY library is
+// packaged for Debian short of VTK or Assimp. The header is checked (magic, format, element
+// sizes against the file size) before any record is read, so a short or garbled file is an
+// Error rather than a giant allocation; only the vertices' x, y and z are kept.
+#include <cstring>
 #include <limits>
 
-#include <pcl/io/ply_io.h>
-
 #include "antipode/core/error.hpp"
-#include "pcl_blob.hpp"
 #include "raw_points.hpp"
 #include "text_scan.hpp"
 
@@ -14,7 +17,7 @@ namespace antipode::io {
 namespace {
 
 constexpr std::uint64_t kMaxPoints = std::numeric_limits<std::int32_t>::max();
-constexpr std::size_t kMaxHeaderBytes = 64 * 1024;
+constexpr std::size_t kMaxHeaderBytes = std::size_t{64} * 1024;
 
 // One property of an element: a scalar of `size` bytes, or a list whose length is a
 // `size`-byte unsigned count followed by that many `item_size`-byte items.
@@ -22,6 +25,7 @@ struct PlyProperty {
   std::string name;
   std::uint64_t size = 0;
   std::uint64_t item_size = 0;  // 0: not a list
+  bool floating = false;        // a scalar float or double
 };
 
 struct PlyElement {
@@ -37,6 +41,7 @@ struct PlyHeader {
   bool big_endian = false;
   std::vector<PlyElement> elements;
   std::size_t data_offset = 0;
+  int data_line = 0;  // the line end_header is on
 };
 
 std::uint64_t scalar_size(std::string_view type) {
@@ -46,6 +51,10 @@ std::uint64_t scalar_size(std::string_view type) {
   if (type == "float" || type == "float32") return 4;
   if (type == "double" || type == "float64") return 8;
   return 0;
+}
+
+bool is_floating(std::string_view type) {
+  return type == "float" || type == "float32" || type == "double" || type == "float64";
 }
 
 class PlyHeaderParser {
@@ -60,6 +69,7 @@ class PlyHeaderParser {
       if (words.empty() || words[0] == "comment" || words[0] == "obj_info") continue;
       if (words[0] == "end_header") {
         header_.data_offset = offset;
+        header_.data_line = line_;
         return header_;
       }
       handle(words);
@@ -116,8 +126,8 @@ class PlyHeaderParser {
     if (list && size > 4) fail("a list's count must be an integer of at most 4 bytes");
     element.min_record_bytes += size;
     element.values += 1;
-    element.properties.push_back(
-        {std::string(words.back()), size, list ? scalar_size(words[3]) : 0});
+    element.properties.push_back({std::string(words.back()), size, list ? scalar_size(words[3]) : 0,
+                                  !list && is_floating(words[1])});
   }
 
   const std::string& path_;
@@ -134,8 +144,7 @@ void check_ply(const std::string& path, const std::string& bytes, const PlyHeade
     needed += element.count * (header.ascii ? element.values : element.min_record_bytes);
   }
   if (vertex == nullptr) throw Error("the PLY file has no vertex element", {path});
-  // PCL's reader aborts the process on a list among the vertex properties (found by
-  // fuzzing: tests/fuzz/corpus/cloud/ply-vertex-list); a vertex is a point here.
+  // A vertex is a point here: a record of numbers, of a size fixed by the header.
   for (const auto& property : vertex->properties) {
     if (property.item_size != 0)
       throw Error("the PLY vertices have a list property ('" + property.name +
@@ -143,10 +152,13 @@ void check_ply(const std::string& path, const std::string& bytes, const PlyHeade
                   {path});
   }
   for (const char* name : {"x", "y", "z"}) {
-    bool found = false;
-    for (const auto& property : vertex->properties) found = found || property.name == name;
-    if (!found)
+    const PlyProperty* found = nullptr;
+    for (const auto& property : vertex->properties)
+      if (property.name == name && found == nullptr) found = &property;
+    if (found == nullptr)
       throw Error(std::string("the PLY vertices have no '") + name + "' property", {path});
+    if (!found->floating)
+      throw Error(std::string("field '") + name + "' is not floating point", {path});
   }
   const std::uint64_t available = bytes.size() - header.data_offset;
   if (available < needed) {
@@ -154,15 +166,6 @@ void check_ply(const std::string& path, const std::string& bytes, const PlyHeade
                     " bytes of data but the file holds " + std::to_string(available),
                 {path});
   }
-}
-
-// True when some element has a list property: only then can records vary in length (without
-// lists check_ply's size test is exact).
-bool has_lists(const PlyHeader& header) {
-  for (const auto& element : header.elements)
-    for (const auto& property : element.properties)
-      if (property.item_size != 0) return true;
-  return false;
 }
 
 // The unsigned `size`-byte count at `at` in the file's byte order.
@@ -176,30 +179,157 @@ std::uint64_t list_count(const std::string& bytes, std::size_t at, std::uint64_t
   return value;
 }
 
-// Walks a binary file's records, list lengths included, and throws unless they all lie in
-// the file (PCL's reader aborts the process on a list that runs past the end).
-void check_binary_records(const std::string& path, const std::string& bytes,
-                          const PlyHeader& header) {
-  std::uint64_t at = header.data_offset;
+// Skips the records of `element` from `at`, list lengths included, and throws unless they
+// all lie in the file.
+void skip_binary_element(const std::string& path, const std::string& bytes, const PlyHeader& header,
+                         const PlyElement& element, std::uint64_t& at) {
   const std::uint64_t end = bytes.size();
-  for (const auto& element : header.elements)
-    for (std::uint64_t record = 0; record < element.count; ++record)
-      for (const auto& property : element.properties) {
-        if (at + property.size > end) {
-          throw Error("truncated PLY file: element '" + element.name + "' record " +
-                          std::to_string(record) + " runs past the end of the file",
-                      {path});
+  for (std::uint64_t record = 0; record < element.count; ++record)
+    for (const auto& property : element.properties) {
+      if (at + property.size > end) {
+        throw Error("truncated PLY file: element '" + element.name + "' record " +
+                        std::to_string(record) + " runs past the end of the file",
+                    {path});
+      }
+      const std::uint64_t items =
+          property.item_size == 0 ? 0 : list_count(bytes, at, property.size, header.big_endian);
+      at += property.size + items * property.item_size;
+      if (at > end) {
+        throw Error("truncated PLY file: the list '" + property.name + "' of element '" +
+                        element.name + "' record " + std::to_string(record) + " declares " +
+                        std::to_string(items) + " items, past the end of the file",
+                    {path});
+      }
+    }
+}
+
+// Where a coordinate lies in a vertex record, and how it is stored.
+struct Coordinate {
+  std::uint64_t offset = 0;  // binary: bytes from the record's start
+  std::size_t index = 0;     // ascii: values from the record's start
+  bool is_double = false;
+};
+
+Coordinate find_coordinate(const PlyElement& vertex, const char* name) {
+  Coordinate c;
+  for (const auto& property : vertex.properties) {
+    if (property.name == name) {
+      c.is_double = property.size == 8;
+      return c;
+    }
+    c.offset += property.size;
+    ++c.index;
+  }
+  return c;  // not reached: check_ply found every coordinate
+}
+
+// The float or double at `at`, in the file's byte order, as a float.
+float binary_value(const char* at, bool is_double, bool big_endian) {
+  char raw[8];
+  const std::size_t size = is_double ? 8 : 4;
+  for (std::size_t k = 0; k < size; ++k) raw[k] = at[big_endian ? size - 1 - k : k];
+  if (is_double) {
+    double value = 0.0;
+    std::memcpy(&value, raw, sizeof value);
+    return static_cast<float>(value);
+  }
+  float value = 0.0f;
+  std::memcpy(&value, raw, sizeof value);
+  return value;
+}
+
+// The vertices of a binary file; every other element's records are walked too, so that a
+// list running past the end is an error wherever it lies.
+std::vector<Eigen::Vector3f> binary_vertices(const std::string& path, const std::string& bytes,
+                                             const PlyHeader& header) {
+  std::uint64_t at = header.data_offset;
+  std::vector<Eigen::Vector3f> points;
+  for (const auto& element : header.elements) {
+    if (element.name != "vertex") {
+      skip_binary_element(path, bytes, header, element, at);
+      continue;
+    }
+    const std::uint64_t step = element.min_record_bytes;  // no lists among vertex properties
+    if (element.count * step > bytes.size() - std::min<std::uint64_t>(at, bytes.size())) {
+      throw Error("truncated PLY file: its vertices run past the end of the file", {path});
+    }
+    const Coordinate c[3] = {find_coordinate(element, "x"), find_coordinate(element, "y"),
+                             find_coordinate(element, "z")};
+    points.resize(element.count);
+    for (std::uint64_t i = 0; i < element.count; ++i, at += step) {
+      for (int axis = 0; axis < 3; ++axis) {
+        points[i][axis] =
+            binary_value(bytes.data() + at + c[axis].offset, c[axis].is_double, header.big_endian);
+      }
+    }
+  }
+  return points;
+}
+
+// An ascii file's values, word by word, with the line each came from.
+class AsciiWords {
+ public:
+  AsciiWords(const std::string& path, const std::string& bytes, const PlyHeader& header)
+      : path_(path), bytes_(bytes), next_(header.data_offset), line_(header.data_line) {}
+
+  std::string_view next(const PlyElement& element, std::uint64_t record) {
+    while (word_ == words_.size()) {
+      if (next_ >= bytes_.size()) {
+        throw Error("truncated PLY file: element '" + element.name + "' record " +
+                        std::to_string(record) + " runs past the end of the file",
+                    {path_});
+      }
+      words_ = split_words(line_at(bytes_, next_, next_));
+      word_ = 0;
+      ++line_;
+    }
+    return words_[word_++];
+  }
+
+  [[noreturn]] void fail(const std::string& message) const {
+    throw Error(message, {path_, line_, 0});
+  }
+
+ private:
+  const std::string& path_;
+  const std::string& bytes_;
+  std::size_t next_;
+  std::vector<std::string_view> words_;
+  std::size_t word_ = 0;
+  int line_;  // of the words being read
+};
+
+// The vertices of an ascii file, whose every element's values are read (records may span
+// lines, as the words are read one after the other).
+std::vector<Eigen::Vector3f> ascii_vertices(const std::string& path, const std::string& bytes,
+                                            const PlyHeader& header) {
+  AsciiWords words(path, bytes, header);
+  std::vector<Eigen::Vector3f> points;
+  for (const auto& element : header.elements) {
+    const bool vertex = element.name == "vertex";
+    const Coordinate c[3] = {find_coordinate(element, "x"), find_coordinate(element, "y"),
+                             find_coordinate(element, "z")};
+    if (vertex) points.resize(element.count);
+    for (std::uint64_t record = 0; record < element.count; ++record) {
+      for (std::size_t p = 0; p < element.properties.size(); ++p) {
+        const std::string_view word = words.next(element, record);
+        std::uint64_t items = 0;
+        if (element.properties[p].item_size != 0) {
+          const auto count = parse_unsigned(word);
+          if (!count) words.fail("a list's count is not a number: " + quote_for_message(word));
+          items = *count;
         }
-        const std::uint64_t items =
-            property.item_size == 0 ? 0 : list_count(bytes, at, property.size, header.big_endian);
-        at += property.size + items * property.item_size;
-        if (at > end) {
-          throw Error("truncated PLY file: the list '" + property.name + "' of element '" +
-                          element.name + "' record " + std::to_string(record) + " declares " +
-                          std::to_string(items) + " items, past the end of the file",
-                      {path});
+        for (std::uint64_t i = 0; i < items; ++i) words.next(element, record);
+        for (int axis = 0; vertex && axis < 3; ++axis) {
+          if (c[axis].index != p) continue;
+          const auto value = parse_float(word);
+          if (!value) words.fail("not a number: " + quote_for_message(word));
+          points[record][axis] = *value;
         }
       }
+    }
+  }
+  return points;
 }
 
 }  // namespace
@@ -207,21 +337,9 @@ void check_binary_records(const std::string& path, const std::string& bytes,
 RawPoints read_ply(const std::string& path, const std::string& bytes) {
   const PlyHeader header = PlyHeaderParser(path, bytes).parse();
   check_ply(path, bytes, header);
-  if (!header.ascii && has_lists(header)) check_binary_records(path, bytes, header);
   RawPoints raw;
-  for (const auto& element : header.elements) {
-    if (element.name == "vertex" && element.count == 0) return raw;
-  }
-  silence_pcl_console();
-  pcl::PCLPointCloud2 blob;
-  Eigen::Vector4f origin;
-  Eigen::Quaternionf orientation;
-  int version = 0;
-  pcl::PLYReader reader;
-  if (reader.read(path, blob, origin, orientation, version, 0) < 0) {
-    throw Error("corrupt PLY file: PCL cannot parse its data", {path});
-  }
-  raw.points_m = coordinates_of(path, blob);
+  raw.points_m =
+      header.ascii ? ascii_vertices(path, bytes, header) : binary_vertices(path, bytes, header);
   return raw;
 }
 

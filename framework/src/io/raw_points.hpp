@@ -25,7 +25,4 @@ RawPoints read_pcd(const std::string& path, const std::string& bytes);
 /// Parses a PLY file whose content is `bytes`. Throws Error naming `path`.
 RawPoints read_ply(const std::string& path, const std::string& bytes);
 
-/// Makes PCL's console output silent (once per process); antipode reports through Error.
-void silence_pcl_console();
-
 }  // namespace antipode::io

@@ -15,4 +15,9 @@ namespace antipode::detail {
 void multiply_transposed(const double* a, std::size_t rows, std::size_t depth, const double* b,
                          std::size_t cols, double* out);
 
+/// Makes OpenBLAS run every product on the calling thread and stops its worker threads
+/// (the first call; later calls do nothing). multiply_transposed() calls it; a model's
+/// loader calls it too, as soon as the library is loaded. Thread-safe.
+void use_calling_threads_only();
+
 }  // namespace antipode::detail

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <sstream>
 
 #include <tbb/blocked_range.h>
@@ -40,19 +41,24 @@ std::string number(double value) {
   return out.str();
 }
 
+// Without an early exit, so that the compiler vectorises it: a model's 4 million numbers
+// are all read on every load (|v| <= max is false for NaN and the infinities).
 template <typename T>
 bool all_finite(const std::vector<T>& values) {
-  return std::all_of(values.begin(), values.end(), [](T v) { return std::isfinite(v); });
+  bool finite = true;
+  for (const T v : values) finite &= std::abs(v) <= std::numeric_limits<T>::max();
+  return finite;
 }
 
 // Whether a support vector number stored at half precision (svm_model.hpp) is too large.
 bool half_precision_overflow(const SvmModel& m) {
   const std::size_t k = m.components();
   const std::size_t h = std::min(SvmModel::kHalfPrecisionComponents, k);
-  for (std::size_t i = 0; i < m.support_vectors.size(); ++i) {
-    if (i % k < h && std::abs(m.support_vectors[i]) > kHalfMax) return true;
+  bool over = false;
+  for (std::size_t i = 0; k > 0 && i + k <= m.support_vectors.size(); i += k) {
+    for (std::size_t j = 0; j < h; ++j) over |= std::abs(m.support_vectors[i + j]) > kHalfMax;
   }
-  return false;
+  return over;
 }
 
 std::string sizes_problem(const SvmModel& m) {
@@ -268,13 +274,22 @@ struct DoubleSupport {
   RowMatrixD vectors;          ///< support vectors x components
   Eigen::RowVectorXd squared;  ///< empty for the polynomial kernel
 
-  static DoubleSupport of(const SvmModel& m) {
+  // Converted by `threads` workers, block by block: the first call's 35 MB (for the shipped
+  // model) are written, and their pages faulted in, by every worker at once.
+  static DoubleSupport of(const SvmModel& m, int threads) {
+    const auto n = Eigen::Index(m.support_vector_count());
+    const auto k = Eigen::Index(m.components());
+    const bool gaussian = m.kernel.type == SvmKernelType::kRbf;
     DoubleSupport out;
-    out.vectors = ConstRowMapF(m.support_vectors.data(), Eigen::Index(m.support_vector_count()),
-                               Eigen::Index(m.components()))
-                      .cast<double>();
-    if (m.kernel.type == SvmKernelType::kRbf)
-      out.squared = out.vectors.rowwise().squaredNorm().transpose();
+    out.vectors.resize(n, k);
+    if (gaussian) out.squared.resize(n);
+    for_each_block(std::size_t(n), threads, [&](std::size_t b) {
+      const auto first = Eigen::Index(b * SvmModel::kBlockRows);
+      const Eigen::Index rows = std::min(Eigen::Index(SvmModel::kBlockRows), n - first);
+      auto block = out.vectors.middleRows(first, rows);
+      block = ConstRowMapF(m.support_vectors.data() + first * k, rows, k).cast<double>();
+      if (gaussian) out.squared.segment(first, rows) = block.rowwise().squaredNorm().transpose();
+    });
     return out;
   }
 };
@@ -432,7 +447,7 @@ std::vector<double> SvmModel::decision_values(const float* rows, std::size_t n, 
   check_threads(threads);
   if (n == 0) return values;
   const RowMatrixD basis = double_basis(*this);
-  const DoubleSupport support = DoubleSupport::of(*this);
+  const DoubleSupport support = DoubleSupport::of(*this, threads);
   for_each_block(n, threads, [&](std::size_t b) {
     const std::size_t first = b * kBlockRows;
     const std::size_t count = block_rows(n, b);
@@ -458,7 +473,7 @@ std::vector<double> SvmModel::decision_values_reduced(const float* reduced, std:
   std::vector<double> values(n);
   check_threads(threads);
   if (n == 0) return values;
-  const DoubleSupport support = DoubleSupport::of(*this);
+  const DoubleSupport support = DoubleSupport::of(*this, threads);
   for_each_block(n, threads, [&](std::size_t b) {
     const std::size_t first = b * kBlockRows;
     const std::size_t count = block_rows(n, b);
@@ -536,6 +551,7 @@ void SvmModel::save(const std::string& path) const {
 }
 
 SvmModel SvmModel::load(const std::string& path) {
+  detail::use_calling_threads_only();  // before OpenBLAS's idle workers take CPU from others
   BinaryReader r(path, kMagic, kVersion, "classifier model");
   if (r.version() < 4) {
     r.fail("format version " + std::to_string(r.version()) +

@@ -135,6 +135,8 @@ SceneOptions scene_options(const Parameters& params) {
   o.max_planes = integer(p, "max_planes", o.max_planes, 1);
   o.max_object_height_m =
       float(number(p, "max_object_height_m", o.max_object_height_m, 0.0, false));
+  o.min_object_height_m =
+      float(number(p, "min_object_height_m", o.min_object_height_m, 0.0, false));
   o.max_object_size_m = float(number(p, "max_object_size_m", o.max_object_size_m, 0.0, false));
   o.max_gap_m = float(number(p, "max_gap_m", o.max_gap_m, 0.0, true));
   o.cluster_tolerance_m =

@@ -15,9 +15,12 @@
 ///     `max_object_height_m`) whose foot lies within the convex hull of its inliers are
 ///     split into Euclidean clusters (`cluster_tolerance_m`).
 ///  3. A cluster is an object standing on the candidate when it has at least
-///     `min_object_points` points, reaches down to within `max_gap_m` of the plane, stops
-///     below the height limit (a wall or a shelf running through the slab does not) and is
-///     at most `max_object_size_m` across along the plane.
+///     `min_object_points` points, reaches down to within `max_gap_m` of the plane, rises
+///     at least `min_object_height_m` above it, stops below the height limit (a wall or a
+///     shelf running through the slab does not) and is at most `max_object_size_m` across
+///     along the plane. A cluster lower than `min_object_height_m` is taken for a stretch
+///     of the support itself: a far, noisy or bent part of a table yields flat patches a
+///     little beyond the inlier distance.
 ///  4. The support is the candidate with the most object points (ties: more inliers). With
 ///     `up` given (the direction against gravity in the cloud's frame), only candidates whose
 ///     normal lies within `max_tilt_deg` of it count; without, "up" is each plane's normal
@@ -48,6 +51,9 @@ struct SceneOptions {
   float plane_distance_m = 0.01f;  ///< inlier distance of a plane (noise plus voxel size)
   int plane_iterations = 300;      ///< RANSAC hypotheses per candidate plane
   float max_object_height_m = 0.35f;
+  /// The least height of an object's top above the plane: a marker pen lying down (1.9 cm)
+  /// is an object, a 1.2 cm rise of the table's far end is not.
+  float min_object_height_m = 0.015f;
   float max_object_size_m = 0.5f;
   float max_gap_m = 0.03f;             ///< how far above the plane an object's lowest point may be
   float cluster_tolerance_m = 0.006f;  ///< neighbours on a 3 mm voxel grid, and a little noise

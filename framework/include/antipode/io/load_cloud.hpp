@@ -33,9 +33,8 @@ struct LoadCloudOptions {
 /// unreadable file, an unknown extension (neither .pcd nor .ply), a malformed header (with
 /// its line), data shorter than the header declares (truncated file), corrupt data, a file
 /// without x, y, z fields, a cloud that declares no point, and a cloud without a finite
-/// point. The file is checked against its header before any of it is handed to PCL, so no
-/// input makes the process crash or allocate more than the file's size suggests; PCL's own
-/// console messages are silenced.
+/// point. The file is checked against its header before its data is read, so no input makes
+/// the process crash or allocate more than the file's size suggests.
 ///
 /// Thread-safe: concurrent calls may read different (or the same) files.
 Cloud load_cloud(const std::string& path, const LoadCloudOptions& options = {});
