@@ -42,8 +42,7 @@ int check_plugin_command(const std::string& library) {
             << "  " << record.name << " " << record.version << ", plugin ABI " << record.abi
             << " (this antipode: " << kAbiMajor << "." << kAbiMinor << ")\n";
   for (const auto& offer : record.offers) std::cout << "  provides " << offer << "\n";
-  const std::filesystem::path path(library);
-  if (path.filename().string().rfind("libantipode_", 0) != 0 || path.extension() != ".so")
+  if (!is_plugin_file_name(library))
     std::cout << "  note: a plugin directory loads only files named libantipode_NAME.so; "
                  "this one would be skipped there: rename it to libantipode_"
               << record.name << ".so\n";

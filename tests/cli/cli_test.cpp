@@ -81,6 +81,32 @@ TEST_F(CliTest, ValidateAcceptsAGoodTree) {
   EXPECT_EQ(result.out, tree + ": valid\n");
 }
 
+// validate checks a component's parameters as loading it would, through the plugin's
+// parameter check, without building it.
+TEST_F(CliTest, ValidateChecksComponentParameters) {
+  const std::string tree =
+      write("c.yaml",
+            "components:\n"
+            "  classifier: { plugin: antipodal_classifier, max_angle_degs: 20 }\n"
+            "main: t\ntrees:\n  t:\n    AlwaysSuccess: {}\n");
+  Result result = run("validate " + tree);
+  EXPECT_EQ(result.exit_code, 2) << result.out;
+  EXPECT_NE(result.out.find("unknown parameter 'max_angle_degs' of component 'classifier' "
+                            "(did you mean 'max_angle_deg'?)"),
+            std::string::npos)
+      << result.out;
+  EXPECT_NE(result.out.find(tree + ":2:"), std::string::npos) << result.out;
+  result = run("validate " + tree + " --set classifier.max_angle_degs=20");
+  EXPECT_EQ(result.exit_code, 2) << result.out;
+  const std::string fixed =
+      write("f.yaml",
+            "components:\n"
+            "  classifier: { plugin: antipodal_classifier, max_angle_deg: 20 }\n"
+            "main: t\ntrees:\n  t:\n    AlwaysSuccess: {}\n");
+  result = run("validate " + fixed);
+  EXPECT_EQ(result.exit_code, 0) << result.out;
+}
+
 TEST_F(CliTest, RunUsesAPluginNodeAndReportsSuccess) {
   const std::string tree = write("count.yaml",
                                  "main: t\n"

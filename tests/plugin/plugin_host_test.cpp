@@ -178,6 +178,35 @@ TEST(PluginHostTest, WrongAbiMajorIsRefusedNamingBothVersions) {
   EXPECT_EQ(host.kind_of("future_sampler"), std::nullopt);
 }
 
+// ABI 10.1's parameter checks: run without making the component, errors located as the
+// factory's; a type without a check says so; a check of a type the library does not make
+// refuses the library; a library built for 10.0 (no checks) still loads.
+TEST(PluginHostTest, ParameterChecksRunWithoutMakingTheComponent) {
+  PluginHost host(std::vector<std::string>{});
+  host.load_library(kGood);
+  EXPECT_TRUE(host.check("point_sampler", params("width_m: 0.04")));
+  try {
+    host.check("point_sampler", params("width_m: -1"));
+    ADD_FAILURE() << "a negative width passed the check";
+  } catch (const Error& e) {
+    EXPECT_TRUE(contains(e.what(), "'width_m' must be positive")) << e.what();
+    EXPECT_TRUE(contains(e.what(), "t.yaml:")) << e.what();
+  }
+  EXPECT_THROW(host.check("point_sampler", params("widht_m: 0.04")), Error);  // unknown key
+  EXPECT_FALSE(host.check("height_classifier", params("")));
+  EXPECT_THROW(host.check("no_such_type", params("")), Error);
+
+  const PluginRecord& other = host.load_library(bad("check_of_another_type"));
+  EXPECT_EQ(other.state, PluginRecord::State::kRefused);
+  EXPECT_EQ(other.reason,
+            "parameter check 0: 'someone_elses_sampler' is no component type of this plugin");
+  const PluginRecord& older = host.load_library(bad("older_minor"));
+  EXPECT_EQ(older.state, PluginRecord::State::kLoaded) << older.reason;
+  EXPECT_EQ(older.abi, std::to_string(kAbiMajor) + ".0");
+  EXPECT_FALSE(host.check("older_sampler", params("")));
+  EXPECT_NE(host.create("older_sampler", params("")), nullptr);
+}
+
 TEST(PluginHostTest, DuplicateTypeIsRefusedNamingTheFirstLibrary) {
   PluginHost host(std::vector<std::string>{});
   host.load_library(kGood);

@@ -78,7 +78,8 @@ std::unique_ptr<Node> TreeBuilder::make_node(const NodeSpec& node, const std::st
   std::map<std::string, int> seen;
   for (const NodeSpec& child : node.children) {
     const std::string& base = child.name.empty() ? child.type : child.name;
-    const std::string child_path = path + "/" + base + "#" + std::to_string(seen[base]++);
+    std::string child_path = path;
+    child_path.append("/").append(base).append("#").append(std::to_string(seen[base]++));
     NodeAccess::add_child(*made, make_node(child, child_path, blackboard));
   }
   return made;

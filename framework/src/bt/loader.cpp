@@ -50,6 +50,21 @@ CheckedFile check_file(const std::string& yaml, const std::string& file_name,
   return checked;
 }
 
+// Each declared component's parameters, as its plugin checks them without making it.
+void check_component_parameters(const detail::FileSpec& spec, const ComponentSource* source) {
+  if (source == nullptr) return;
+  for (const auto& declared : spec.components) {
+    const std::string owner = "component '" + declared.name + "'";
+    Parameters params(declared.params, owner, spec.file);
+    params.require<std::string>("plugin");  // known to the loader, not to the plugin
+    try {
+      source->check(declared.plugin, params);
+    } catch (...) {
+      rethrow_with_context(owner, declared.where);
+    }
+  }
+}
+
 }  // namespace
 
 Tree load_tree_string(const std::string& yaml, const std::string& file_name,
@@ -68,7 +83,8 @@ Tree load_tree_file(const std::string& path, const LoadOptions& options) {
 
 void validate_tree_string(const std::string& yaml, const std::string& file_name,
                           const LoadOptions& options) {
-  check_file(yaml, file_name, options);
+  const CheckedFile checked = check_file(yaml, file_name, options);
+  check_component_parameters(checked.spec, options.components);
 }
 
 void validate_tree_file(const std::string& path, const LoadOptions& options) {

@@ -58,7 +58,7 @@ void bind_missing_ports(NodeSpec& spec, const ParseContext& context) {
 
 [[noreturn]] void unknown_port(const NodeSpec& spec, const YAML::Node& key,
                                const ParseContext& context) {
-  const std::string name = key.Scalar();
+  const std::string& name = key.Scalar();
   std::string hint;
   if (context.registry->has(name)) {
     if (spec.manifest->category == NodeCategory::kControl) {
@@ -160,7 +160,7 @@ NodeSpec parse_node(const YAML::Node& item, const ParseContext& context) {
 
 NodeSpec parse_node_entry(const YAML::Node& key, const YAML::Node& value,
                           const ParseContext& context) {
-  const std::string type = key.Scalar();
+  const std::string& type = key.Scalar();
   if (!context.registry->has(type)) {
     throw UnknownTypeError(
         "unknown node '" + type + "'" + did_you_mean(type, context.registry->types()),

@@ -11,6 +11,7 @@
 #include <optional>
 #include <set>
 #include <sstream>
+#include <utility>
 
 #include "../core/library_dir.hpp"
 #include "antipode/config.hpp"
@@ -59,6 +60,38 @@ std::vector<std::string> split_path_list(const char* text) {
 constexpr std::size_t kDescriptorBytesRead =
     offsetof(PluginDescriptor, factories) +
     sizeof(PluginDescriptor::factories);  // NOLINT(bugprone-sizeof-expression): the field's size
+
+// ABI 10.1 added the parameter checks after the factories.
+constexpr std::size_t kDescriptorBytesWithChecks =
+    offsetof(PluginDescriptor, checks) +
+    sizeof(PluginDescriptor::checks);  // NOLINT(bugprone-sizeof-expression): the field's size
+
+// The parameter checks of a descriptor (none before ABI 10.1).
+std::pair<const PluginParameterCheck*, std::uint32_t> checks_of(const PluginDescriptor& d) {
+  if (d.abi_minor < 1 || d.descriptor_size < kDescriptorBytesWithChecks) return {nullptr, 0};
+  return {d.checks, d.check_count};
+}
+
+// Why a descriptor's parameter checks cannot be used, or "".
+std::string checks_problem(const PluginDescriptor& d) {
+  const auto [checks, count] = checks_of(d);
+  if (count > 0 && checks == nullptr) return "parameter checks: a null table";
+  for (std::uint32_t i = 0; i < count; ++i) {
+    const PluginParameterCheck& c = checks[i];
+    if (c.type == nullptr || c.check == nullptr)
+      return "parameter check " + std::to_string(i) + ": a null type or function";
+    bool offered = false;
+    for (std::uint32_t f = 0; f < d.factory_count; ++f) {
+      offered = offered ||
+                (d.factories[f].create != nullptr && std::string(d.factories[f].type) == c.type);
+    }
+    if (!offered) {
+      return "parameter check " + std::to_string(i) + ": '" + c.type +
+             "' is no component type of this plugin";
+    }
+  }
+  return "";
+}
 
 using detail::library_dir;
 
@@ -221,7 +254,7 @@ std::string PluginHost::refuse_reason(const PluginDescriptor& descriptor) const 
       return "type '" + std::string(factory.type) + "' is offered twice";
     }
   }
-  return {};
+  return checks_problem(descriptor);
 }
 
 const PluginRecord& PluginHost::load_library(const std::string& path) {
@@ -272,6 +305,8 @@ const PluginRecord& PluginHost::load_library(const std::string& path) {
     offers_[factory.type] = Offer{library, &factory};
     record.offers.push_back(std::string(factory.kind) + " " + factory.type);
   }
+  const auto [checks, check_count] = checks_of(*descriptor);
+  for (std::uint32_t i = 0; i < check_count; ++i) offers_[checks[i].type].check = checks[i].check;
   records_.push_back(std::move(record));
   return records_.back();
 }
@@ -306,14 +341,30 @@ std::optional<ComponentKind> PluginHost::kind_of(const std::string& type) const 
   return parse_component_kind(it->second.factory->kind);
 }
 
-std::shared_ptr<Component> PluginHost::create(const std::string& type,
-                                              const Parameters& params) const {
+const PluginHost::Offer& PluginHost::component_offer(const std::string& type,
+                                                     const Parameters& params) const {
   const auto it = offers_.find(type);
   if (it == offers_.end() || it->second.factory->create == nullptr) {
     throw Error("unknown component type '" + type + "'" + did_you_mean(type, component_types()),
                 params.location("plugin"), "run 'antipode plugins' to list what is available");
   }
-  const Offer& offer = it->second;
+  return it->second;
+}
+
+bool PluginHost::check(const std::string& type, const Parameters& params) const {
+  const Offer& offer = component_offer(type, params);
+  if (offer.check == nullptr) return false;
+  try {
+    offer.check(params);
+  } catch (...) {
+    rethrow_with_context(type, params.location("plugin"));
+  }
+  return true;
+}
+
+std::shared_ptr<Component> PluginHost::create(const std::string& type,
+                                              const Parameters& params) const {
+  const Offer& offer = component_offer(type, params);
   Component* raw = nullptr;
   try {
     raw = offer.factory->create(params);

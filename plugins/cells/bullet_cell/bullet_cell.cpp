@@ -130,17 +130,33 @@ CellOptions read_cell_options(const Parameters& p, const SceneSpec& scene) {
   return o;
 }
 
-BulletCell::BulletCell(const Parameters& params) : scene_(scene_of(params)) {
-  options_ = read_cell_options(params, scene_);
-  params.reject_unknown();
+namespace {
+
+// The arm of `options` (none without one), its errors located at the keys that name them.
+std::shared_ptr<const CellArm> arm_of(const Parameters& params, const CellOptions& options) {
   try {
-    if (options_.arm) arm_ = std::make_shared<const CellArm>(*options_.arm);
+    if (options.arm) return std::make_shared<const CellArm>(*options.arm);
   } catch (const CellArm::HomeError& e) {
     params.fail("home_rad", e.what());
   } catch (const Error& e) {
     params.fail("robot", std::string("robot: ") + e.what());
   }
+  return nullptr;
+}
+
+}  // namespace
+
+BulletCell::BulletCell(const Parameters& params) : scene_(scene_of(params)) {
+  options_ = read_cell_options(params, scene_);
+  params.reject_unknown();
+  arm_ = arm_of(params, options_);
   reset(options_.seed);
+}
+
+void BulletCell::check_parameters(const Parameters& params) {
+  const CellOptions options = read_cell_options(params, scene_of(params));
+  params.reject_unknown();
+  (void)arm_of(params, options);
 }
 
 BulletCell::BulletCell(SceneSpec scene, const CellOptions& options)

@@ -31,6 +31,10 @@ class BulletCell final : public Cell {
   explicit BulletCell(const Parameters& params);
   BulletCell(SceneSpec scene, const CellOptions& options);
 
+  /// Checks `params` as the first constructor does - the scene file, the options, the arm's
+  /// robot file and home pose - without building the world. Throws antipode::Error.
+  static void check_parameters(const Parameters& params);
+
   std::vector<std::string> view_names() const override;
   Cloud capture(const std::vector<std::string>& views) override;
   JointState arm_state() const override;

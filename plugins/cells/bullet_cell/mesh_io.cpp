@@ -13,6 +13,12 @@
 namespace antipode::cells {
 namespace {
 
+// Throws "PATH: BEFORE LINE AFTER" for a vertex line that cannot be used.
+[[noreturn]] void fail_vertex(const std::string& path, const std::string& line, const char* before,
+                              const char* after) {
+  throw Error(path + ": " + before + line + after);
+}
+
 // The vertex index of an OBJ face token "v", "v/vt", "v//vn" or "v/vt/vn" (1-based or
 // negative = relative to the end), as a 0-based index.
 int face_index(const std::string& token, int vertex_count, const std::string& path) {
@@ -44,10 +50,9 @@ TriangleMesh read_obj(const std::string& path) {
     fields >> tag;
     if (tag == "v") {
       Eigen::Vector3f v;
-      if (!(fields >> v.x() >> v.y() >> v.z()))
-        throw Error(path + ": bad vertex line '" + line + "'");
+      if (!(fields >> v.x() >> v.y() >> v.z())) fail_vertex(path, line, "bad vertex line '", "'");
       if (!(v.cwiseAbs().maxCoeff() <= kMaxCoordinate))
-        throw Error(path + ": vertex '" + line + "' lies beyond 1000 m (or is not finite)");
+        fail_vertex(path, line, "vertex '", "' lies beyond 1000 m (or is not finite)");
       mesh.vertices.push_back(v);
     } else if (tag == "f") {
       std::vector<int> face;

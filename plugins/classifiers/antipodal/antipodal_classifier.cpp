@@ -84,12 +84,16 @@ class AntipodalClassifier final : public Classifier {
 
 Component* create_antipodal(const Parameters& params) { return new AntipodalClassifier(params); }
 
+void check_antipodal(const Parameters& params) { const AntipodalClassifier checked(params); }
+
 const PluginFactory kFactories[] = {
     {"classifier", "antipodal_classifier",
      "labels hands by the near-antipodal check on the cloud (the paper's Definition 3, A)",
      &create_antipodal, nullptr},
 };
 
+const PluginParameterCheck kChecks[] = {{"antipodal_classifier", &check_antipodal}};
+
 }  // namespace
 
-ANTIPODE_PLUGIN("antipodal_classifier", "1.0.0", kFactories)
+ANTIPODE_PLUGIN_WITH_CHECKS("antipodal_classifier", "1.0.0", kFactories, kChecks)

@@ -99,12 +99,17 @@ class HogSvmClassifier final : public Classifier {
 
 Component* create_hog_svm(const Parameters& params) { return new HogSvmClassifier(params); }
 
+// Reading the model is the check: its checksum, its sizes, its calibration for `score`.
+void check_hog_svm(const Parameters& params) { const HogSvmClassifier checked(params); }
+
 const PluginFactory kFactories[] = {
     {"classifier", "hog_svm_classifier",
      "labels hands by a trained SVM on HOG descriptors of their grasp images (the paper's SVM)",
      &create_hog_svm, nullptr},
 };
 
+const PluginParameterCheck kChecks[] = {{"hog_svm_classifier", &check_hog_svm}};
+
 }  // namespace
 
-ANTIPODE_PLUGIN("hog_svm_classifier", "1.0.0", kFactories)
+ANTIPODE_PLUGIN_WITH_CHECKS("hog_svm_classifier", "1.0.0", kFactories, kChecks)

@@ -22,12 +22,16 @@ Component* create_passthrough(const Parameters& params) {
   return new PassthroughClassifier(params);
 }
 
+void check_passthrough(const Parameters& params) { const PassthroughClassifier checked(params); }
+
 const PluginFactory kFactories[] = {
     {"classifier", "passthrough_classifier",
      "labels every hypothesis a grasp, score unchanged (the paper's NC)", &create_passthrough,
      nullptr},
 };
 
+const PluginParameterCheck kChecks[] = {{"passthrough_classifier", &check_passthrough}};
+
 }  // namespace
 
-ANTIPODE_PLUGIN("passthrough_classifier", "1.0.0", kFactories)
+ANTIPODE_PLUGIN_WITH_CHECKS("passthrough_classifier", "1.0.0", kFactories, kChecks)

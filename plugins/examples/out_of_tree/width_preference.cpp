@@ -66,6 +66,8 @@ class CountGrasps final : public bt::SyncActionNode {
 
 Component* create_width_preference(const Parameters& params) { return new WidthPreference(params); }
 void register_count_grasps(bt::NodeRegistry& registry) { registry.register_node<CountGrasps>(); }
+// `antipode validate` checks the parameters with this, without running the tree.
+void check_width_preference(const Parameters& params) { const WidthPreference checked(params); }
 
 const PluginFactory kFactories[] = {
     {"classifier", "width_preference", "scores hands by closeness to a preferred width",
@@ -73,6 +75,8 @@ const PluginFactory kFactories[] = {
     {"node", "CountGrasps", "counts positive hands", nullptr, &register_count_grasps},
 };
 
+const PluginParameterCheck kChecks[] = {{"width_preference", &check_width_preference}};
+
 }  // namespace
 
-ANTIPODE_PLUGIN("width_preference", "1.0.0", kFactories)
+ANTIPODE_PLUGIN_WITH_CHECKS("width_preference", "1.0.0", kFactories, kChecks)

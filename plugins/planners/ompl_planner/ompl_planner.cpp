@@ -89,6 +89,8 @@ Trajectory timed_trajectory(const KinematicChain& arm, const std::vector<Eigen::
 
 OmplPlanner::OmplPlanner(const Parameters& params) : OmplPlanner(read_options(params)) {}
 
+void OmplPlanner::check_parameters(const Parameters& params) { (void)read_options(params); }
+
 OmplPlanner::OmplPlanner(const OmplPlannerOptions& options)
     : options_(options),
       robot_(RobotModel::load(options.robot_file)),

@@ -38,6 +38,10 @@ class OmplPlanner final : public MotionPlanner {
   explicit OmplPlanner(const Parameters& params);
   explicit OmplPlanner(const OmplPlannerOptions& options);
 
+  /// Checks `params` as the first constructor does (the robot file, its tip and links
+  /// included) without building the planner. Throws antipode::Error.
+  static void check_parameters(const Parameters& params);
+
   PlanningResult plan(const PlanningProblem& problem) const override;
 
   const KinematicChain& arm() const { return arm_; }

@@ -8,6 +8,10 @@ antipode::Component* create_ompl_planner(const antipode::Parameters& params) {
   return new antipode::planning::OmplPlanner(params);
 }
 
+void check_ompl_planner(const antipode::Parameters& params) {
+  antipode::planning::OmplPlanner::check_parameters(params);
+}
+
 const antipode::PluginFactory kFactories[] = {
     {"planner", "ompl_planner",
      "plans an arm's motion to a grasp: collision-free IK, an OMPL path to the pre-grasp, the "
@@ -15,6 +19,8 @@ const antipode::PluginFactory kFactories[] = {
      &create_ompl_planner, nullptr},
 };
 
+const antipode::PluginParameterCheck kChecks[] = {{"ompl_planner", &check_ompl_planner}};
+
 }  // namespace
 
-ANTIPODE_PLUGIN("ompl_planner", "1.0.0", kFactories)
+ANTIPODE_PLUGIN_WITH_CHECKS("ompl_planner", "1.0.0", kFactories, kChecks)

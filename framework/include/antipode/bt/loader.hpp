@@ -41,8 +41,10 @@ Tree load_tree_file(const std::string& path, const LoadOptions& options);
 Tree load_tree_string(const std::string& yaml, const std::string& file_name,
                       const LoadOptions& options);
 
-/// Validates the file as load_tree_file() does but creates nothing: components are only
-/// checked for a known plugin type and their kind, so parameter errors surface at load.
+/// Validates the file as load_tree_file() does but creates nothing: components are checked
+/// for a known plugin type and their kind, and their parameters by their plugin's parameter
+/// check (PluginParameterCheck, ComponentSource::check) where it has one; a plugin without
+/// one has its parameters checked only at load.
 void validate_tree_file(const std::string& path, const LoadOptions& options);
 
 /// Same for YAML text.

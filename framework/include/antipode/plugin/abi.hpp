@@ -24,7 +24,7 @@ class NodeRegistry;
 }
 
 constexpr std::uint32_t kAbiMajor = 10;
-constexpr std::uint32_t kAbiMinor = 0;
+constexpr std::uint32_t kAbiMinor = 1;
 
 /// One thing a plugin can make. For a component kind ("sampler", "classifier", "selector",
 /// "planner", "cell") `create` is set and `register_node` is null; for kind "node" it is the
@@ -41,6 +41,17 @@ struct PluginFactory {
   void (*register_node)(bt::NodeRegistry& registry);
 };
 
+/// A check of one component type's parameters, without making the component (ABI 10.1,
+/// optional): it reads every parameter `create` reads and throws the antipode::Error
+/// `create` would throw for a bad one - an unknown key, a value out of range, a file that
+/// cannot be read - but builds nothing heavy (no world, no planner, no index over a
+/// model). `antipode validate` calls it for every component a tree declares; a type
+/// without one is checked only when the tree loads.
+struct PluginParameterCheck {
+  const char* type;  ///< a component type among this plugin's factories
+  void (*check)(const Parameters& params);
+};
+
 struct PluginDescriptor {
   std::uint32_t abi_major;
   std::uint32_t abi_minor;
@@ -49,6 +60,9 @@ struct PluginDescriptor {
   const char* version;            ///< the plugin's own version, e.g. "1.2.0"
   std::uint32_t factory_count;
   const PluginFactory* factories;
+  // ABI 10.1; the host reads them only when `descriptor_size` covers them.
+  std::uint32_t check_count;
+  const PluginParameterCheck* checks;  ///< null when check_count is 0
 };
 
 }  // namespace antipode
@@ -63,7 +77,20 @@ typedef const antipode::PluginDescriptor* (*antipode_plugin_entry_fn)();
 /// PluginFactory array FACTORIES (a static array in the plugin):
 ///   static const antipode::PluginFactory kFactories[] = {{...}, {...}};
 ///   ANTIPODE_PLUGIN("my_plugin", "1.0.0", kFactories)
-#define ANTIPODE_PLUGIN(NAME, VERSION, FACTORIES)                                     \
+#define ANTIPODE_PLUGIN(NAME, VERSION, FACTORIES) \
+  ANTIPODE_PLUGIN_DESCRIPTOR_(NAME, VERSION, FACTORIES, 0, nullptr)
+
+/// As ANTIPODE_PLUGIN, with the PluginParameterCheck array CHECKS (a static array in the
+/// plugin) for some or all of its component types:
+///   static const antipode::PluginParameterCheck kChecks[] = {{"my_sampler", &check}};
+///   ANTIPODE_PLUGIN_WITH_CHECKS("my_plugin", "1.0.0", kFactories, kChecks)
+#define ANTIPODE_PLUGIN_WITH_CHECKS(NAME, VERSION, FACTORIES, CHECKS)                           \
+  ANTIPODE_PLUGIN_DESCRIPTOR_(NAME, VERSION, FACTORIES,                                         \
+                              static_cast<std::uint32_t>(sizeof(CHECKS) / sizeof((CHECKS)[0])), \
+                              CHECKS)
+
+/// The entry symbol both macros define (not for direct use).
+#define ANTIPODE_PLUGIN_DESCRIPTOR_(NAME, VERSION, FACTORIES, CHECK_COUNT, CHECKS)    \
   extern "C" __attribute__((visibility("default"))) const antipode::PluginDescriptor* \
   antipode_plugin_descriptor() {                                                      \
     static const antipode::PluginDescriptor descriptor = {                            \
@@ -73,6 +100,8 @@ typedef const antipode::PluginDescriptor* (*antipode_plugin_entry_fn)();
         NAME,                                                                         \
         VERSION,                                                                      \
         static_cast<std::uint32_t>(sizeof(FACTORIES) / sizeof((FACTORIES)[0])),       \
-        FACTORIES};                                                                   \
+        FACTORIES,                                                                    \
+        CHECK_COUNT,                                                                  \
+        CHECKS};                                                                      \
     return &descriptor;                                                               \
   }

@@ -28,6 +28,15 @@ class ComponentSource {
   /// keeps whatever it was loaded from alive for as long as it lives.
   virtual std::shared_ptr<Component> create(const std::string& type,
                                             const Parameters& params) const = 0;
+
+  /// Checks the parameters of a component of `type` without making it, as `create` would
+  /// (PluginParameterCheck). Returns false when `type` has no such check (the parameters are
+  /// then checked only by `create`). Throws antipode::Error for an unknown type or bad
+  /// parameters.
+  virtual bool check(const std::string& type, const Parameters& params) const {
+    (void)type, (void)params;
+    return false;
+  }
 };
 
 }  // namespace antipode

@@ -82,15 +82,19 @@ class PluginHost : public ComponentSource {
   std::optional<ComponentKind> kind_of(const std::string& type) const override;
   std::shared_ptr<Component> create(const std::string& type,
                                     const Parameters& params) const override;
+  bool check(const std::string& type, const Parameters& params) const override;
 
  private:
   struct Library;
   struct Offer {
     std::shared_ptr<Library> library;
     const PluginFactory* factory;
+    void (*check)(const Parameters& params) = nullptr;  // the plugin's, if it has one
   };
 
   std::string refuse_reason(const PluginDescriptor& descriptor) const;
+  /// The offer making components of `type`; throws the unknown-type error otherwise.
+  const Offer& component_offer(const std::string& type, const Parameters& params) const;
 
   std::vector<std::string> search_path_;
   std::vector<PluginRecord> records_;
@@ -99,5 +103,8 @@ class PluginHost : public ComponentSource {
 
 /// "libantipode_<name>.so" for a plugin name.
 std::string plugin_file_name(const std::string& plugin_name);
+
+/// Whether a plugin directory loads the file `path`: its name is "libantipode_<name>.so".
+bool is_plugin_file_name(const std::string& path);
 
 }  // namespace antipode
