@@ -15,12 +15,13 @@ struct TreeRunSettings {
   std::vector<std::string> set;  ///< "key=value" overrides, applied after the command's own
   std::uint64_t seed = 0;        ///< seed of every random stream
   bool verbose = false;          ///< per-node console trace
+  std::string main_tree;         ///< the tree to run instead of the file's `main` ("": main)
 };
 
 struct RunOptions {
   std::string tree_path;
-  TreeRunSettings settings{{}, 0, true};  ///< `run` traces every node unless --quiet
-  std::string trace_path;                 ///< JSON-lines trace file; "" for none
+  TreeRunSettings settings{{}, 0, true, ""};  ///< `run` traces every node unless --quiet
+  std::string trace_path;                     ///< JSON-lines trace file; "" for none
 };
 
 struct DetectOptions {
@@ -33,6 +34,11 @@ struct DetectOptions {
   /// Also print the scene found (support, objects), the hands per stage and per object, and
   /// how many of the 12 best grasps lie on objects.
   bool explain = false;
+  std::string camera_pose;  ///< "x y z qw qx qy qz" or an extrinsics file; "" = none
+  std::string frame;        ///< the output frame's name ("": base with a camera pose, else sensor)
+  int top = 0;              ///< select at most this many grasps (0: no selection unless per_object)
+  int per_object = 0;       ///< select at most this many grasps per object (0: no limit)
+  std::vector<double> workspace;  ///< xmin ymin zmin xmax ymax zmax, in the output frame
 };
 
 /// `antipode train` (trees/train.yaml) and `antipode eval-classifier`
@@ -42,6 +48,7 @@ struct TrainOptions {
   std::string model_path = "models/hog_svm.model";  ///< entry model_file
   std::string dataset_path;  ///< entry dataset_file: keep the examples ("" = don't)
   TreeRunSettings settings;
+  bool overwrite = false;  ///< replace a shipped model (models/) at model_path
 };
 
 struct EvalOptions {

@@ -2,6 +2,8 @@
 #include <cstdio>
 #include <iostream>
 #include <map>
+#include <optional>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -11,6 +13,7 @@
 #include "antipode/geometry/scene_layout.hpp"
 #include "antipode/interfaces/grasp_selector.hpp"
 #include "antipode/interfaces/hand_set.hpp"
+#include "camera_pose.hpp"
 #include "commands.hpp"
 #include "exit_codes.hpp"
 #include "session.hpp"
@@ -19,21 +22,69 @@ namespace antipode::cli {
 namespace {
 
 // The detect tree reads these entries, which `antipode detect` fills from its arguments.
-std::vector<std::string> detect_entries(const DetectOptions& options) {
-  return {"cloud_file=" + options.cloud_path, "grasps_file=" + options.out_path,
-          "image_file=" + options.image_path};
+std::vector<std::string> detect_entries(const DetectOptions& options,
+                                        const std::optional<CameraPose>& pose) {
+  std::vector<std::string> entries = {"cloud_file=" + options.cloud_path,
+                                      "grasps_file=" + options.out_path,
+                                      "image_file=" + options.image_path};
+  std::string frame = options.frame;
+  if (frame.empty()) frame = pose ? (pose->frame.empty() ? "base" : pose->frame) : "sensor";
+  entries.push_back("frame=" + frame);
+  if (pose) entries.push_back("camera_pose=" + pose->port_text());
+  return entries;
 }
 
-void print_summary(const HandSet& set, std::size_t count) {
+std::string numbers_text(const double* v, std::size_t n) {
+  std::ostringstream out;
+  out.precision(17);
+  out << "[";
+  for (std::size_t i = 0; i < n; ++i) out << (i ? ", " : "") << v[i];
+  out << "]";
+  return out.str();
+}
+
+// The command's options as the tree's settings, before the user's own --set entries (which
+// may override them): a camera pose makes the frame's z axis the support's up; --top and
+// --per-object run the tree detect_top with the selector's limits; --workspace crops the cloud.
+TreeRunSettings detect_settings(const DetectOptions& options, bool has_pose) {
+  TreeRunSettings settings = options.settings;
+  std::vector<std::string> ours;
+  if (has_pose) ours.push_back("sampler.scene.up=[0, 0, 1]");
+  if (options.top > 0 || options.per_object > 0) {
+    if (settings.main_tree.empty()) settings.main_tree = "detect_top";
+    ours.push_back("selector.max_grasps=" +
+                   std::to_string(options.top > 0 ? options.top : 1000000));  // no --top: all
+    ours.push_back("selector.grasps_per_object=" + std::to_string(options.per_object));
+  }
+  if (options.workspace.size() == 6) {
+    const double* w = options.workspace.data();
+    for (int axis = 0; axis < 3; ++axis) {
+      if (!(w[axis] < w[axis + 3]))
+        throw Error("--workspace: the minimum " + std::string(1, "xyz"[axis]) +
+                    " must be below the maximum (XMIN YMIN ZMIN XMAX YMAX ZMAX)");
+    }
+    ours.push_back("sampler.workspace.min=" + numbers_text(w, 3));
+    ours.push_back("sampler.workspace.max=" + numbers_text(w + 3, 3));
+  }
+  settings.set.insert(settings.set.begin(), ours.begin(), ours.end());
+  return settings;
+}
+
+// The grasps of `set`: a selection's in their rank (`ranked`), others best score first.
+void print_summary(const HandSet& set, std::size_t count, bool ranked) {
   std::vector<const Hand*> hands;
   for (const Hand& hand : set.hands) {
     if (hand.rejection == Rejection::kNone) hands.push_back(&hand);
   }
-  std::stable_sort(hands.begin(), hands.end(),
-                   [](const Hand* a, const Hand* b) { return a->score > b->score; });
+  if (!ranked) {
+    std::stable_sort(hands.begin(), hands.end(),
+                     [](const Hand* a, const Hand* b) { return a->score > b->score; });
+  }
   std::cout << hands.size() << " grasps";
   if (set.cloud) std::cout << " in frame '" << set.cloud->frame << "'";
-  std::cout << (hands.empty() ? "\n" : "; the first by score:\n");
+  std::cout << (hands.empty() ? "\n"
+                : ranked      ? "; the first by rank:\n"
+                              : "; the first by score:\n");
   for (std::size_t i = 0; i < std::min(count, hands.size()); ++i) {
     const Hand& hand = *hands[i];
     const Eigen::Vector3d p = hand.position_m(), a = hand.approach();
@@ -111,15 +162,21 @@ void print_explanation(const HandSet* sampled, const HandSet* screened, const Ha
 int detect_command(const DetectOptions& options) {
   for (const std::string* path : {&options.out_path, &options.image_path})
     if (!path->empty()) check_output_path(*path);  // before the work, and before either is written
-  const std::vector<std::string> entries = detect_entries(options);
-  Session session = open_session_for(options.tree_path, entries, options.settings);
-  bt::Tree tree = load_tree_for(session, options.tree_path, entries, options.settings);
-  const Tracing tracing = attach_tracers(tree, options.settings.verbose, "");
+  std::optional<CameraPose> pose;
+  if (!options.camera_pose.empty()) pose = read_camera_pose(options.camera_pose);
+  const std::vector<std::string> entries = detect_entries(options, pose);
+  const TreeRunSettings settings = detect_settings(options, pose.has_value());
+  Session session = open_session_for(options.tree_path, entries, settings);
+  bt::Tree tree = load_tree_for(session, options.tree_path, entries, settings);
+  const Tracing tracing = attach_tracers(tree, settings.verbose, "");
   const bt::Status status = tree.tick_while_running();
-  if (const HandSet* set = hand_set(tree, options.hands_entry)) print_summary(*set, 5);
-  if (options.explain)
+  const bool ranked = settings.main_tree == "detect_top";
+  if (const HandSet* set = hand_set(tree, options.hands_entry)) print_summary(*set, 5, ranked);
+  if (options.explain) {
+    const HandSet* classified = hand_set(tree, "classified");  // detect_top's, before selection
     print_explanation(hand_set(tree, "hands"), hand_set(tree, "screened"),
-                      hand_set(tree, options.hands_entry), 12);
+                      classified != nullptr ? classified : hand_set(tree, options.hands_entry), 12);
+  }
   std::cout << result_line(options.tree_path, status, tracing) << "\n";
   return status == bt::Status::kSuccess ? kExitSuccess : kExitTreeFailed;
 }

@@ -134,6 +134,25 @@ void add_detect(CLI::App& app, Commands& commands) {
   detect->add_option("--tree", options.tree_path, "Detection tree")->capture_default_str();
   detect->add_option("--out", options.out_path, "Write the grasps as JSON");
   detect->add_option("--image", options.image_path, "Draw the cloud and grasps into a PNG");
+  detect
+      ->add_option("--camera-pose", options.camera_pose,
+                   "The camera's pose in the robot's frame: 'x y z qw qx qy qz' or an extrinsics "
+                   "YAML file; grasps are then given in that frame")
+      ->type_name("POSE|FILE");
+  detect->add_option(
+      "--frame", options.frame,
+      "The name of the output frame (default: base with --camera-pose, else sensor)");
+  detect
+      ->add_option("--top", options.top, "Select and rank at most N grasps, as a robot tries them")
+      ->check(CLI::Range(1, 1000000));
+  detect
+      ->add_option("--per-object", options.per_object,
+                   "Select at most N grasps per object (with or without --top)")
+      ->check(CLI::Range(1, 1000000));
+  detect
+      ->add_option("--workspace", options.workspace,
+                   "Only points in this box: XMIN YMIN ZMIN XMAX YMAX ZMAX (m, output frame)")
+      ->expected(6);
   detect->add_flag("--explain", options.explain,
                    "Print the support and objects found, the hands each stage kept per object "
                    "and how many of the 12 best grasps lie on objects");
@@ -156,6 +175,8 @@ void add_train(CLI::App& app, Commands& commands) {
       "train", "Train the HOG + SVM grasp classifier in the simulated cell (trees/train.yaml)");
   train->add_option("--out", options.model_path, "Model file to write")->capture_default_str();
   train->add_option("--dataset", options.dataset_path, "Also keep the examples in this file");
+  train->add_flag("--overwrite", options.overwrite,
+                  "Replace a shipped model (models/); without it train refuses to");
   train->add_option("--tree", options.tree_path, "Training tree")->capture_default_str();
   add_tree_run_options(*train, options.settings);
 }

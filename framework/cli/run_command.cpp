@@ -21,6 +21,7 @@ bt::LoadOptions load_options(const Session& session, const std::vector<std::stri
   load.components = session.host.get();
   load.seed = settings.seed;
   load.overrides = parse_overrides(overrides);
+  load.main_tree = settings.main_tree;
   return load;
 }
 
@@ -31,9 +32,12 @@ bt::Tree load_tree_for(Session& session, const std::string& tree_path,
   check_entries_are_read(tree_path, settings.set);
   if (!session.every_plugin) {
     // Checked first (which builds no component): a tree the opened plugins cannot load is
-    // loaded with all of them, so its errors are those of a full session.
+    // loaded with all of them, so its errors are those of a full session. The parameters are
+    // left to the load, which makes the components (a model is then read once).
     try {
-      bt::validate_tree_file(tree_path, load_options(session, entries, settings));
+      bt::LoadOptions names_only = load_options(session, entries, settings);
+      names_only.check_component_parameters = false;
+      bt::validate_tree_file(tree_path, names_only);
     } catch (const Error&) {
       replace_with_full_session(session);
     }

@@ -1,5 +1,6 @@
 // `antipode train` and `antipode eval-classifier`: the training and evaluation trees run with
 // their file entries filled from the command line, with a progress bar on a terminal.
+#include <filesystem>
 #include <fstream>
 #include <iostream>
 
@@ -9,6 +10,7 @@
 #include "antipode/core/atomic_file.hpp"
 #include "antipode/core/binary_file.hpp"
 #include "antipode/core/error.hpp"
+#include "antipode/core/shipped_data.hpp"
 #include "bench_report.hpp"
 #include "commands.hpp"
 #include "exit_codes.hpp"
@@ -35,8 +37,27 @@ int run_tree(const std::string& tree_path, const std::vector<std::string>& entri
 
 }  // namespace
 
+namespace {
+
+// A shipped model (one of the shipped models/ folder's files) is replaced only when asked:
+// the default --out would otherwise overwrite models/hog_svm.model with a model for whatever
+// hand the tree samples.
+void check_not_shipped(const std::string& path, bool overwrite) {
+  namespace fs = std::filesystem;
+  std::error_code error;
+  if (overwrite || !fs::exists(path, error) || shipped_data_dir().empty()) return;
+  const fs::path models = fs::weakly_canonical(fs::path(shipped_data_dir()) / "models", error);
+  if (fs::weakly_canonical(path, error).parent_path() != models) return;
+  throw Error(path +
+              " is a shipped model: write the new one elsewhere (--out my.model, then "
+              "the classifier's model: my.model), or give --overwrite to replace it");
+}
+
+}  // namespace
+
 int train_command(const TrainOptions& options) {
   // Before the half hour of training, not after it.
+  check_not_shipped(options.model_path, options.overwrite);
   for (const std::string* path : {&options.model_path, &options.dataset_path})
     if (!path->empty()) check_output_path(*path);
   return run_tree(options.tree_path,

@@ -458,6 +458,30 @@ TEST_F(DetectTest, WritesGraspsAndPicture) {
   EXPECT_EQ(std::string(magic + 1, 3), "PNG");
 }
 
+// Bad camera poses and workspaces are one error line and exit 2, before any work.
+TEST_F(DetectTest, BadCameraPosesAndWorkspacesAreOneLineErrors) {
+  if (!fs::exists(krylon_)) GTEST_SKIP() << "no " << krylon_ << " (../shared/data is absent)";
+  const std::string unknown_key = write(
+      "bad.yaml", "translation_m: [0, 0, 1]\nquaternion_wxyz: [1, 0, 0, 0]\nrpy: [0, 0, 0]\n");
+  const std::string short_list =
+      write("short.yaml", "translation_m: [0, 1]\nquaternion_wxyz: [1, 0, 0, 0]\n");
+  const std::vector<std::pair<std::string, std::string>> cases = {
+      {"--camera-pose '0 0 1 2 0 0 0'", "has norm 2.000000; it must be 1"},
+      {"--camera-pose '0 0 1 1 0 0'", "--camera-pose takes 'x y z qw qx qy qz'"},
+      {"--camera-pose nowhere.yaml", "--camera-pose: no such extrinsics file: nowhere.yaml"},
+      {"--camera-pose " + unknown_key, "unknown key 'rpy'"},
+      {"--camera-pose " + short_list, "'translation_m' must have 3 numbers, got 2"},
+      {"--workspace 0 0 0 1 -1 1", "--workspace: the minimum y must be below the maximum"},
+  };
+  for (const auto& [options, message] : cases) {
+    const Result result = run(detect(krylon_, options));
+    EXPECT_EQ(result.exit_code, 2) << options << "\n" << result.out;
+    EXPECT_NE(result.out.find(message), std::string::npos) << options << "\n" << result.out;
+    EXPECT_EQ(std::count(result.out.begin(), result.out.end(), '\n'), 1) << result.out;
+    EXPECT_FALSE(fs::exists(dir_ / "g.json")) << options;
+  }
+}
+
 // --explain on the table-top cloud: the table is the support, the mug the one object, and
 // the best grasps are on it.
 TEST_F(DetectTest, ExplainNamesTheSupportTheObjectsAndWhereTheBestGraspsLie) {

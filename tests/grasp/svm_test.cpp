@@ -464,7 +464,9 @@ TEST(SvmTest, IncompatibleDescriptorsOrHandsAreRefusedNamingBoth) {
             std::string::npos)
       << hand_error;
   EXPECT_NE(hand_error.find("this hand set has a 0.08 m deep, 0.072 m wide"), std::string::npos);
-  EXPECT_NE(hand_error.find("antipode train"), std::string::npos);
+  EXPECT_NE(hand_error.find("antipode train --out my.model --set sampler.hand=GRIPPER.yaml"),
+            std::string::npos)
+      << hand_error;
   HandImageOptions coarse;
   coarse.cell_px = 4;
   const std::string image_error = error_of([&] { model.check_compatible(coarse, HandGeometry{}); });

@@ -159,5 +159,38 @@ TEST(LoadCloudTest, SharedCloudsLoadCompletely) {
   EXPECT_EQ(krylon.size(), 4467u);
 }
 
+// A cloud moved into a robot's frame: every point and the view origin by the same pose; a
+// VIEWPOINT rotation is reported, not applied.
+TEST(LoadCloudTest, IntoAFrameMovesPointsAndOriginByThePose) {
+  TempDir dir;
+  auto written = small_cloud();
+  written.sensor_orientation_ = Eigen::Quaternionf(0.0f, 1.0f, 0.0f, 0.0f);
+  pcl::io::savePCDFileBinary(dir.file("c.pcd"), written);
+  const Cloud in_file = load_cloud(dir.file("c.pcd"));
+  const Eigen::Isometry3d X_BaseFile =
+      Eigen::Translation3d(0.3, -0.6, 0.9) *
+      Eigen::AngleAxisd(2.1, Eigen::Vector3d(1.0, -2.0, 0.5).normalized());
+  LoadCloudOptions options;
+  options.frame = "base";
+  std::string note;
+  const Cloud in_base = load_cloud_into(dir.file("c.pcd"), X_BaseFile, options, &note);
+  EXPECT_EQ(in_base.frame, "base");
+  ASSERT_EQ(in_base.size(), in_file.size());
+  for (std::size_t i = 0; i < in_file.size(); ++i) {
+    EXPECT_LT((in_base.points_m[i] - X_BaseFile.cast<float>() * in_file.points_m[i]).norm(), 1e-5f);
+  }
+  EXPECT_LT(
+      (in_base.view_origins_m[0] - X_BaseFile.cast<float>() * in_file.view_origins_m[0]).norm(),
+      1e-5f);
+  EXPECT_NE(note.find("VIEWPOINT rotation (qw qx qy qz 0.000000 1.000000 0.000000 0.000000) is "
+                      "not applied"),
+            std::string::npos)
+      << note;
+  written.sensor_orientation_ = Eigen::Quaternionf::Identity();
+  pcl::io::savePCDFileBinary(dir.file("d.pcd"), written);
+  load_cloud_into(dir.file("d.pcd"), X_BaseFile, options, &note);
+  EXPECT_EQ(note, "");
+}
+
 }  // namespace
 }  // namespace antipode

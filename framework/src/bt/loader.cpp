@@ -84,7 +84,8 @@ Tree load_tree_file(const std::string& path, const LoadOptions& options) {
 void validate_tree_string(const std::string& yaml, const std::string& file_name,
                           const LoadOptions& options) {
   const CheckedFile checked = check_file(yaml, file_name, options);
-  check_component_parameters(checked.spec, options.components);
+  if (options.check_component_parameters)
+    check_component_parameters(checked.spec, options.components);
 }
 
 void validate_tree_file(const std::string& path, const LoadOptions& options) {

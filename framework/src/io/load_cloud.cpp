@@ -54,8 +54,11 @@ io::RawPoints read_any(const std::string& path) {
 
 }  // namespace
 
-Cloud load_cloud(const std::string& path, const LoadCloudOptions& options) {
-  io::RawPoints raw = read_any(path);
+namespace {
+
+// The finite points of `raw`, one view at `origin` (in the file's frame), moved by X_ToFile.
+Cloud cloud_of(const std::string& path, io::RawPoints raw, const Eigen::Vector3f& origin,
+               const Eigen::Isometry3f& X_ToFile, const std::string& frame) {
   if (raw.points_m.empty()) throw Error("the cloud has no points", {path});
   const std::size_t declared = raw.points_m.size();
   auto& points = raw.points_m;
@@ -68,12 +71,41 @@ Cloud load_cloud(const std::string& path, const LoadCloudOptions& options) {
         {path});
   }
   Cloud cloud;
-  cloud.frame = options.frame;
+  cloud.frame = frame;
   cloud.points_m = std::move(points);
+  if (!X_ToFile.matrix().isIdentity()) {
+    for (Eigen::Vector3f& p : cloud.points_m) p = X_ToFile * p;
+  }
   cloud.view_masks.assign(cloud.points_m.size(), 1u);
-  cloud.view_origins_m.push_back(
-      options.view_origin_m.value_or(raw.origin_m.value_or(Eigen::Vector3f::Zero())));
+  cloud.view_origins_m.push_back(X_ToFile * origin);
   return cloud;
+}
+
+}  // namespace
+
+Cloud load_cloud(const std::string& path, const LoadCloudOptions& options) {
+  io::RawPoints raw = read_any(path);
+  const Eigen::Vector3f origin =
+      options.view_origin_m.value_or(raw.origin_m.value_or(Eigen::Vector3f::Zero()));
+  return cloud_of(path, std::move(raw), origin, Eigen::Isometry3f::Identity(), options.frame);
+}
+
+Cloud load_cloud_into(const std::string& path, const Eigen::Isometry3d& X_FrameFile,
+                      const LoadCloudOptions& options, std::string* note) {
+  if (!X_FrameFile.matrix().allFinite()) throw Error("the cloud's pose is not finite", {path});
+  io::RawPoints raw = read_any(path);
+  if (note != nullptr) {
+    note->clear();
+    const Eigen::Quaternionf& q = raw.rotation;
+    if (!q.toRotationMatrix().isIdentity(1e-6f)) {
+      *note = path + ": its VIEWPOINT rotation (qw qx qy qz " + std::to_string(q.w()) + " " +
+              std::to_string(q.x()) + " " + std::to_string(q.y()) + " " + std::to_string(q.z()) +
+              ") is not applied: the camera pose given is that of the frame its points are in";
+    }
+  }
+  const Eigen::Vector3f origin =
+      options.view_origin_m.value_or(raw.origin_m.value_or(Eigen::Vector3f::Zero()));
+  return cloud_of(path, std::move(raw), origin, X_FrameFile.cast<float>(), options.frame);
 }
 
 }  // namespace antipode

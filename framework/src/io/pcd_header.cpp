@@ -11,7 +11,7 @@ namespace {
 // Indices are 32-bit signed integers throughout antipode.
 constexpr std::uint64_t kMaxPoints = std::numeric_limits<std::int32_t>::max();
 // A real header is a few hundred bytes; anything longer without DATA is not a PCD file.
-constexpr std::size_t kMaxHeaderBytes = 64 * 1024;
+constexpr std::size_t kMaxHeaderBytes = std::size_t{64} * 1024;
 
 using Words = std::vector<std::string_view>;
 
@@ -109,7 +109,7 @@ class HeaderParser {
     expect_per_field(words);
     for (std::size_t i = 1; i < words.size(); ++i) {
       const auto count = parse_unsigned(words[i]);
-      if (!count || *count == 0 || *count > 1024 * 1024) {
+      if (!count || *count == 0 || *count > std::uint64_t{1024} * 1024) {
         fail("COUNT " + quote_for_message(words[i]) + " is not a positive integer");
       }
       header_.fields[i - 1].count = *count;
@@ -118,14 +118,19 @@ class HeaderParser {
 
   void set_viewpoint(const Words& words) {
     if (words.size() != 8) fail("VIEWPOINT must have 7 numbers (tx ty tz qw qx qy qz)");
-    Eigen::Vector3f origin;
-    for (int i = 0; i < 3; ++i) {
+    float v[7];
+    for (int i = 0; i < 7; ++i) {
       const auto value = parse_float(words[i + 1]);
       if (!value) fail("VIEWPOINT " + quote_for_message(words[i + 1]) + " is not a number");
-      origin[i] = *value;
+      v[i] = *value;
     }
+    const Eigen::Vector3f origin(v[0], v[1], v[2]);
     if (!origin.allFinite()) fail("VIEWPOINT origin is not finite");
+    Eigen::Quaternionf rotation(v[3], v[4], v[5], v[6]);
+    if (!rotation.coeffs().allFinite() || rotation.norm() < 1e-6f)
+      fail("VIEWPOINT rotation (qw qx qy qz) is not a rotation: zero or not finite");
     header_.viewpoint_m = origin;
+    header_.viewpoint_rotation = rotation.normalized();
   }
 
   void set_data(const Words& words) {

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include <Eigen/Core>
+#include <Eigen/Geometry>
 
 namespace antipode::io {
 
@@ -27,7 +28,9 @@ struct PcdHeader {
   std::uint64_t width = 0;
   std::uint64_t height = 1;
   std::uint64_t points = 0;
+  /// VIEWPOINT: the sensor's pose in the cloud's frame, as PCL defines it.
   std::optional<Eigen::Vector3f> viewpoint_m;
+  Eigen::Quaternionf viewpoint_rotation = Eigen::Quaternionf::Identity();
   PcdData data = PcdData::kAscii;
   std::size_t data_offset = 0;  ///< byte offset of the first data byte in the file
   int data_line = 0;            ///< 1-based line number of the first data line

@@ -91,6 +91,7 @@ RawPoints read_pcd(const std::string& path, const std::string& bytes) {
   check_pcd_data_size(path, bytes, header);
   RawPoints raw;
   raw.origin_m = header.viewpoint_m;
+  raw.rotation = header.viewpoint_rotation;
   if (header.points == 0) return raw;
   switch (header.data) {
     case PcdData::kAscii:

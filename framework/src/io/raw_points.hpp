@@ -7,13 +7,16 @@
 #include <vector>
 
 #include <Eigen/Core>
+#include <Eigen/Geometry>
 
 namespace antipode::io {
 
-/// Every point a file declares, finite or not, and the view origin it records (if any).
+/// Every point a file declares, finite or not, and the sensor pose it records (if any): its
+/// origin and rotation in the file's frame (a PCD's VIEWPOINT).
 struct RawPoints {
   std::vector<Eigen::Vector3f> points_m;
   std::optional<Eigen::Vector3f> origin_m;
+  Eigen::Quaternionf rotation = Eigen::Quaternionf::Identity();
 };
 
 /// The whole content of `path`; throws Error when the file cannot be opened or read.

@@ -517,7 +517,10 @@ void SvmModel::check_compatible(const HandImageOptions& image, const HandGeometr
   const SvmDescriptorSpec wanted = SvmDescriptorSpec::of(image, geometry);
   if (descriptor.matches(wanted)) return;
   throw Error(model_name + " was trained for " + descriptor.describe() + "; this hand set has " +
-              wanted.describe() + " (retrain with `antipode train`)");
+              wanted.describe() +
+              " (train a model for this hand: antipode train --out my.model --set "
+              "sampler.hand=GRIPPER.yaml, then give the classifier model: my.model; "
+              "docs/your-own-data.md)");
 }
 
 void SvmModel::save(const std::string& path) const {

@@ -1,9 +1,26 @@
 #include "antipode/io/load_cloud.hpp"
+
+#include <cmath>
+#include <optional>
+
 #include "antipode/bt/action_node.hpp"
 #include "nodes.hpp"
 
 namespace antipode::pipeline {
 namespace {
+
+/// [x, y, z, qw, qx, qy, qz] as a pose, or nothing unless the numbers are finite and the
+/// quaternion a unit one (within 1e-3).
+std::optional<Eigen::Isometry3d> pose_of(const std::vector<double>& v) {
+  const Eigen::Quaterniond q(v[3], v[4], v[5], v[6]);
+  if (!Eigen::Vector3d(v[0], v[1], v[2]).allFinite() || !q.coeffs().allFinite() ||
+      std::abs(q.norm() - 1.0) > 1e-3)
+    return std::nullopt;
+  Eigen::Isometry3d X = Eigen::Isometry3d::Identity();
+  X.linear() = q.normalized().toRotationMatrix();
+  X.translation() = Eigen::Vector3d(v[0], v[1], v[2]);
+  return X;
+}
 
 /// Reads a cloud from a PCD or PLY file (the "camera" of an offline run).
 class LoadCloud final : public bt::SyncActionNode {
@@ -19,6 +36,11 @@ class LoadCloud final : public bt::SyncActionNode {
                  "view_origin_m", std::vector<double>{},
                  "sensor origin [x, y, z]; empty = the file's VIEWPOINT, else the origin"),
              bt::input_port<std::string>("frame", std::string("sensor"), "the cloud's frame"),
+             bt::input_port<std::vector<double>>(
+                 "camera_pose", std::vector<double>{},
+                 "the pose of the file's frame (a depth camera's: the camera's) in `frame`, "
+                 "[x, y, z, qw, qx, qy, qz] (m, a unit quaternion): the cloud is moved into "
+                 "`frame`; empty = the cloud stays in the file's frame"),
              bt::output_port<CloudPtr>("cloud", "the finite points of the file, one view")},
             0,
             0,
@@ -37,8 +59,23 @@ class LoadCloud final : public bt::SyncActionNode {
       fail("view_origin_m",
            "view_origin_m must have 3 numbers, got " + std::to_string(origin.size()));
     }
-    auto cloud = std::make_shared<Cloud>(load_cloud(get_input<std::string>("file"), options));
-    log(std::to_string(cloud->size()) + " points loaded");
+    const auto numbers = get_input<std::vector<double>>("camera_pose");
+    std::optional<Eigen::Isometry3d> pose;
+    if (!numbers.empty()) {
+      if (numbers.size() == 7) pose = pose_of(numbers);
+      if (!pose)
+        fail("camera_pose",
+             "camera_pose must be 7 finite numbers [x, y, z, qw, qx, qy, qz] with a unit "
+             "quaternion, got " +
+                 std::to_string(numbers.size()) + " numbers");
+    }
+    const std::string file = get_input<std::string>("file");
+    std::string note;
+    auto cloud = std::make_shared<Cloud>(pose ? load_cloud_into(file, *pose, options, &note)
+                                              : load_cloud(file, options));
+    if (!note.empty()) log("note: " + note);
+    log(std::to_string(cloud->size()) + " points loaded" +
+        (pose ? " into frame '" + options.frame + "'" : ""));
     set_output("cloud", CloudPtr(std::move(cloud)));
     return bt::Status::kSuccess;
   }

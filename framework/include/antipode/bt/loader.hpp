@@ -31,6 +31,9 @@ struct LoadOptions {
   /// The tree to run instead of the file's `main` ("" = `main`); its blackboard is then the
   /// main blackboard (where `--set key=value` entries go). An unknown name is an error.
   std::string main_tree;
+  /// validate_tree_*() only: whether to run the plugins' parameter checks (a caller that
+  /// validates a file just before loading it, which makes the components, may skip them).
+  bool check_component_parameters = true;
 };
 
 /// Reads, validates and builds the tree file at `path`: creates its components (through
