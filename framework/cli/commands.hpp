@@ -20,7 +20,7 @@ struct TreeRunSettings {
 
 struct RunOptions {
   std::string tree_path;
-  TreeRunSettings settings{{}, 0, true, ""};  ///< `run` traces every node unless --quiet
+  TreeRunSettings settings;  ///< `run` traces every node with -v, as the other commands
   std::string trace_path;                     ///< JSON-lines trace file; "" for none
 };
 

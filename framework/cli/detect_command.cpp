@@ -130,6 +130,8 @@ void print_explanation(const HandSet* sampled, const HandSet* screened, const Ha
   std::cout << "scene: "
             << (sampled->objects.empty() && sampled->support
                     ? "a support plane, no segmentation (objects: all)"
+                : sampled->cloud
+                    ? describe_scene(sampled->support, sampled->objects, sampled->cloud->points_m)
                     : describe_scene(sampled->support, sampled->objects))
             << "\n";
   std::cout << "hypotheses: " << sampled->hands.size()

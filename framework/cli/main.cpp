@@ -123,7 +123,7 @@ void add_run(CLI::App& app, Commands& commands) {
   run->add_option("--trace", options.trace_path, "Write every status change as JSON lines");
   run->add_flag_callback(
          "-q,--quiet", [&options] { options.settings.verbose = false; },
-         "No per-node trace on the console (run prints it by default)")
+         "No per-node trace on the console (the default; -v prints it)")
       ->excludes("--verbose");
 }
 

@@ -215,7 +215,7 @@ TEST_F(CliTest, TreeCommandsShareSetSeedAndVerbose) {
   const std::string tree = write("log.yaml",
                                  "main: t\ntrees:\n  t:\n    Sequence:\n"
                                  "      - Log: { message: \"entry is {e}\" }\n");
-  // run traces every node unless --quiet; --set fills a blackboard entry as for the others.
+  // run traces every node with -v only; --set fills a blackboard entry as for the others.
   const Result traced = run("run " + tree + " --set e=one --seed 4 -v");
   EXPECT_EQ(traced.exit_code, 0) << traced.out;
   EXPECT_NE(traced.out.find("entry is one"), std::string::npos) << traced.out;
@@ -224,6 +224,9 @@ TEST_F(CliTest, TreeCommandsShareSetSeedAndVerbose) {
   EXPECT_EQ(quiet.exit_code, 0) << quiet.out;
   EXPECT_NE(quiet.out.find("entry is two"), std::string::npos) << quiet.out;
   EXPECT_EQ(quiet.out.find("Sequence"), std::string::npos) << quiet.out;
+  const Result plain = run("run " + tree + " --set e=three");
+  EXPECT_NE(plain.out.find("entry is three"), std::string::npos) << plain.out;
+  EXPECT_EQ(plain.out.find("Sequence"), std::string::npos) << plain.out;
 }
 
 // `antipode nodes` lists built-in and plugin node types; with a type, its ports.

@@ -2,6 +2,8 @@
 // is the plane objects stand on, not the largest one, and the objects are its segments.
 #include "antipode/geometry/scene_layout.hpp"
 
+#include <cstdio>
+
 #include <gtest/gtest.h>
 
 #include "antipode/core/error.hpp"
@@ -79,6 +81,31 @@ TEST(SceneLayoutTest, ObjectsAFewMillimetresApartAreSeparateSegments) {
   const SceneLayout layout =
       find_scene_layout(prepared(raw), Eigen::Vector3f::Zero(), SceneOptions{}, RandomStream(1));
   EXPECT_EQ(layout.objects.size(), 2u) << layout.summary();
+}
+
+// --explain's sizes: along the support, whatever the cloud's axes - a 5 x 4 cm box, 6 cm
+// tall, turned on a table seen at 45 degrees.
+TEST(SceneLayoutTest, ObjectsAreSizedAlongTheSupport) {
+  Cloud raw = testing::plane_cloud(kOnTable, kUp, 0.4, sparse());
+  Eigen::Matrix3d rotation;
+  rotation << kAcross, kAway, kUp;
+  rotation = Eigen::AngleAxisd(0.5, kUp) * rotation;
+  testing::append(raw, testing::box_cloud(kOnTable + 0.03 * kUp, rotation, {0.05, 0.04, 0.06}));
+  const Cloud cloud = prepared(raw);
+  const SceneLayout layout =
+      find_scene_layout(cloud, Eigen::Vector3f::Zero(), SceneOptions{}, RandomStream(1));
+  ASSERT_EQ(layout.objects.size(), 1u) << layout.summary();
+  const std::string text = describe_scene(layout.support, layout.objects, cloud.points_m);
+  double a = 0.0, b = 0.0, h = 0.0;
+  const auto at = text.find("#0: ");
+  ASSERT_NE(at, std::string::npos) << text;
+  ASSERT_EQ(std::sscanf(text.c_str() + at,
+                        "#0: %*d points, %lf x %lf cm on the support, %lf cm tall", &a, &b, &h),
+            3)
+      << text;
+  EXPECT_NEAR(a, 5.0, 0.5) << text;
+  EXPECT_NEAR(b, 4.0, 0.5) << text;
+  EXPECT_NEAR(h, 6.0, 0.5) << text;
 }
 
 TEST(SceneLayoutTest, WithoutASupportTheWholeCloudIsLeftAlone) {

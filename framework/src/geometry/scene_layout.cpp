@@ -240,30 +240,6 @@ void SceneOptions::validate() const {
   for (const AxisBox& box : fixtures) box.validate("scene fixture");
 }
 
-std::string SceneLayout::summary() const { return describe_scene(support, objects); }
-
-std::string describe_scene(const std::optional<SupportPlane>& support,
-                           const std::vector<SceneObject>& objects) {
-  if (!support) return "no support surface: the whole cloud is used";
-  char line[200];
-  std::snprintf(line, sizeof line,
-                "support plane %.3f x + %.3f y + %.3f z + %.3f = 0 (%zu points), %zu object%s",
-                double(support->normal.x()), double(support->normal.y()),
-                double(support->normal.z()), double(support->offset), support->inliers,
-                objects.size(), objects.size() == 1 ? "" : "s");
-  std::string text = line;
-  for (const SceneObject& o : objects) {
-    const Eigen::Vector3f size = (o.max_m - o.min_m) * 100.0f;
-    std::snprintf(line, sizeof line,
-                  "%s #%d: %zu points, %.1f x %.1f x %.1f cm at (%.3f, %.3f, %.3f)",
-                  o.id == 0 ? ":" : ";", o.id, o.points.size(), double(size.x()), double(size.y()),
-                  double(size.z()), double(o.centroid_m.x()), double(o.centroid_m.y()),
-                  double(o.centroid_m.z()));
-    text += line;
-  }
-  return text;
-}
-
 SceneLayout find_scene_layout(const Cloud& cloud, const Eigen::Vector3f& toward_sensor,
                               const SceneOptions& options, RandomStream random) {
   options.validate();

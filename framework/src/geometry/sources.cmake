@@ -21,6 +21,7 @@ list(APPEND ANTIPODE_SOURCES
   ${CMAKE_CURRENT_LIST_DIR}/quadric.cpp
   ${CMAKE_CURRENT_LIST_DIR}/sample_choice.cpp
   ${CMAKE_CURRENT_LIST_DIR}/sample_hands.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/scene_description.cpp
   ${CMAKE_CURRENT_LIST_DIR}/scene_layout.cpp
   ${CMAKE_CURRENT_LIST_DIR}/slab_grid.cpp
   ${CMAKE_CURRENT_LIST_DIR}/support_plane.cpp

@@ -93,6 +93,14 @@ struct SceneLayout {
 std::string describe_scene(const std::optional<SupportPlane>& support,
                            const std::vector<SceneObject>& objects);
 
+/// The same line with each object's size measured along the support, whatever the cloud's
+/// axes: "#0: 2088 points, 11.8 x 8.6 cm on the support, 10.7 cm tall at (...)" - the
+/// sides of the smallest rectangle around its footprint, then its height.
+/// `points` is the cloud the objects' indices refer to.
+std::string describe_scene(const std::optional<SupportPlane>& support,
+                           const std::vector<SceneObject>& objects,
+                           const std::vector<Eigen::Vector3f>& points);
+
 /// Finds the support and the objects on it in `cloud` (preprocessed: finite points, voxels),
 /// seen from `toward_sensor` (a point on the sensors' side). Throws antipode::Error for
 /// invalid options.
