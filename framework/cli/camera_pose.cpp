@@ -79,14 +79,16 @@ CameraPose from_file(const std::string& path) {
 
 }  // namespace
 
-std::string CameraPose::port_text() const {
+std::string yaml_list(const double* values, std::size_t count) {
   std::ostringstream out;
   out.precision(17);
   out << "[";
-  for (std::size_t i = 0; i < xyz_wxyz.size(); ++i) out << (i ? ", " : "") << xyz_wxyz[i];
+  for (std::size_t i = 0; i < count; ++i) out << (i ? ", " : "") << values[i];
   out << "]";
   return out.str();
 }
+
+std::string CameraPose::port_text() const { return yaml_list(xyz_wxyz.data(), xyz_wxyz.size()); }
 
 CameraPose read_camera_pose(const std::string& text) {
   const auto numbers = numbers_in(text);

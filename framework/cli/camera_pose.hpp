@@ -3,6 +3,7 @@
 // extrinsics file (docs/your-own-data.md).
 
 #include <array>
+#include <cstddef>
 #include <string>
 
 namespace antipode::cli {
@@ -15,6 +16,10 @@ struct CameraPose {
   /// "[x, y, z, qw, qx, qy, qz]": the LoadCloud port's text.
   std::string port_text() const;
 };
+
+/// "[a, b, ...]" for `count` numbers at `values`, with every digit a double holds: a YAML
+/// list for a port or a `--set` value.
+std::string yaml_list(const double* values, std::size_t count);
 
 /// `text` is seven numbers separated by spaces or commas (x y z qw qx qy qz), or the path of
 /// a YAML file with `translation_m: [x, y, z]`, `quaternion_wxyz: [qw, qx, qy, qz]` and,

@@ -3,7 +3,6 @@
 #include <iostream>
 #include <map>
 #include <optional>
-#include <sstream>
 #include <string>
 #include <vector>
 
@@ -34,15 +33,6 @@ std::vector<std::string> detect_entries(const DetectOptions& options,
   return entries;
 }
 
-std::string numbers_text(const double* v, std::size_t n) {
-  std::ostringstream out;
-  out.precision(17);
-  out << "[";
-  for (std::size_t i = 0; i < n; ++i) out << (i ? ", " : "") << v[i];
-  out << "]";
-  return out.str();
-}
-
 // The command's options as the tree's settings, before the user's own --set entries (which
 // may override them): a camera pose makes the frame's z axis the support's up; --top and
 // --per-object run the tree detect_top with the selector's limits; --workspace crops the cloud.
@@ -63,8 +53,8 @@ TreeRunSettings detect_settings(const DetectOptions& options, bool has_pose) {
         throw Error("--workspace: the minimum " + std::string(1, "xyz"[axis]) +
                     " must be below the maximum (XMIN YMIN ZMIN XMAX YMAX ZMAX)");
     }
-    ours.push_back("sampler.workspace.min=" + numbers_text(w, 3));
-    ours.push_back("sampler.workspace.max=" + numbers_text(w + 3, 3));
+    ours.push_back("sampler.workspace.min=" + yaml_list(w, 3));
+    ours.push_back("sampler.workspace.max=" + yaml_list(w + 3, 3));
   }
   settings.set.insert(settings.set.begin(), ours.begin(), ours.end());
   return settings;

@@ -235,6 +235,21 @@ TEST(MalformedCloudTest, BinaryPlyListsMustFitTheFile) {
   expect_error(dir.file("bad.ply"), "the list 'extra' of element 'face' record 0 declares 200");
 }
 
+// A VIEWPOINT whose rotation is no rotation (a zero or non-finite quaternion) is refused.
+TEST(MalformedCloudTest, AViewpointRotationMustBeARotation) {
+  TempDir dir;
+  const std::string header =
+      "VERSION 0.7\nFIELDS x y z\nSIZE 4 4 4\nTYPE F F F\nCOUNT 1 1 1\nWIDTH 1\nHEIGHT 1\n";
+  for (const char* rotation : {"0 0 0 0", "1 nan 0 0"}) {
+    write_bytes(dir.file("v.pcd"),
+                header + "VIEWPOINT 0 0 0 " + rotation + "\nPOINTS 1\nDATA ascii\n0.1 0.2 0.3\n");
+    expect_error(dir.file("v.pcd"), "VIEWPOINT rotation (qw qx qy qz) is not a rotation");
+  }
+  write_bytes(dir.file("ok.pcd"),
+              header + "VIEWPOINT 0 0 0 0 1 0 0\nPOINTS 1\nDATA ascii\n0.1 0.2 0.3\n");
+  EXPECT_EQ(load_cloud(dir.file("ok.pcd")).size(), 1u);
+}
+
 // The PLY layouts a reader must handle, written by hand: elements with lists before the
 // vertices, coordinates in double precision and big-endian order among other properties.
 TEST(MalformedCloudTest, PlyLayoutsAreReadAndBadValuesAreLocated) {

@@ -56,9 +56,12 @@ io::RawPoints read_any(const std::string& path) {
 
 namespace {
 
-// The finite points of `raw`, one view at `origin` (in the file's frame), moved by X_ToFile.
-Cloud cloud_of(const std::string& path, io::RawPoints raw, const Eigen::Vector3f& origin,
-               const Eigen::Isometry3f& X_ToFile, const std::string& frame) {
+// The finite points of `raw`, one view at the options' origin (else the file's), moved by
+// X_ToFile.
+Cloud cloud_of(const std::string& path, io::RawPoints raw, const LoadCloudOptions& options,
+               const Eigen::Isometry3f& X_ToFile) {
+  const Eigen::Vector3f origin =
+      options.view_origin_m.value_or(raw.origin_m.value_or(Eigen::Vector3f::Zero()));
   if (raw.points_m.empty()) throw Error("the cloud has no points", {path});
   const std::size_t declared = raw.points_m.size();
   auto& points = raw.points_m;
@@ -71,7 +74,7 @@ Cloud cloud_of(const std::string& path, io::RawPoints raw, const Eigen::Vector3f
         {path});
   }
   Cloud cloud;
-  cloud.frame = frame;
+  cloud.frame = options.frame;
   cloud.points_m = std::move(points);
   if (!X_ToFile.matrix().isIdentity()) {
     for (Eigen::Vector3f& p : cloud.points_m) p = X_ToFile * p;
@@ -84,10 +87,7 @@ Cloud cloud_of(const std::string& path, io::RawPoints raw, const Eigen::Vector3f
 }  // namespace
 
 Cloud load_cloud(const std::string& path, const LoadCloudOptions& options) {
-  io::RawPoints raw = read_any(path);
-  const Eigen::Vector3f origin =
-      options.view_origin_m.value_or(raw.origin_m.value_or(Eigen::Vector3f::Zero()));
-  return cloud_of(path, std::move(raw), origin, Eigen::Isometry3f::Identity(), options.frame);
+  return cloud_of(path, read_any(path), options, Eigen::Isometry3f::Identity());
 }
 
 Cloud load_cloud_into(const std::string& path, const Eigen::Isometry3d& X_FrameFile,
@@ -103,9 +103,7 @@ Cloud load_cloud_into(const std::string& path, const Eigen::Isometry3d& X_FrameF
               ") is not applied: the camera pose given is that of the frame its points are in";
     }
   }
-  const Eigen::Vector3f origin =
-      options.view_origin_m.value_or(raw.origin_m.value_or(Eigen::Vector3f::Zero()));
-  return cloud_of(path, std::move(raw), origin, X_FrameFile.cast<float>(), options.frame);
+  return cloud_of(path, std::move(raw), options, X_FrameFile.cast<float>());
 }
 
 }  // namespace antipode

@@ -307,9 +307,12 @@ std::vector<Eigen::Vector3f> ascii_vertices(const std::string& path, const std::
   std::vector<Eigen::Vector3f> points;
   for (const auto& element : header.elements) {
     const bool vertex = element.name == "vertex";
-    const Coordinate c[3] = {find_coordinate(element, "x"), find_coordinate(element, "y"),
-                             find_coordinate(element, "z")};
-    if (vertex) points.resize(element.count);
+    Coordinate c[3];
+    if (vertex) {
+      c[0] = find_coordinate(element, "x"), c[1] = find_coordinate(element, "y");
+      c[2] = find_coordinate(element, "z");
+      points.resize(element.count);
+    }
     for (std::uint64_t record = 0; record < element.count; ++record) {
       for (std::size_t p = 0; p < element.properties.size(); ++p) {
         const std::string_view word = words.next(element, record);
