@@ -203,7 +203,9 @@ Json run_one(const Session& session, const RunSettings& settings, std::size_t in
       out["left"] = run.objects_left();
       out["lost"] = run.objects_lost();
       // Objects that did not come to rest in the workspace (bounced out of the box).
-      if (run.objects_at_start >= 0)
+      if (run.missed_at_filling() >= 0)
+        out["missed_at_filling"] = run.missed_at_filling();
+      else if (run.objects_at_start >= 0)
         out["missed_at_filling"] = std::max(0, settings.objects_dropped - run.objects_at_start);
       out["stop"] = to_string(run.stop);
       out["summary"] = run.summary();

@@ -21,7 +21,7 @@ struct TreeRunSettings {
 struct RunOptions {
   std::string tree_path;
   TreeRunSettings settings;  ///< `run` traces every node with -v, as the other commands
-  std::string trace_path;                     ///< JSON-lines trace file; "" for none
+  std::string trace_path;    ///< JSON-lines trace file; "" for none
 };
 
 struct DetectOptions {
@@ -32,7 +32,8 @@ struct DetectOptions {
   TreeRunSettings settings;
   std::string hands_entry = "grasps";  ///< the entry whose hands are summarised
   /// Also print the scene found (support, objects), the hands per stage and per object, and
-  /// how many of the 12 best grasps lie on objects.
+  /// how many of the grasps lie on objects: the selected ones with --top or --per-object, else
+  /// the 12 best.
   bool explain = false;
   std::string camera_pose;  ///< "x y z qw qx qy qz" or an extrinsics file; "" = none
   std::string frame;        ///< the output frame's name ("": base with a camera pose, else sensor)

@@ -110,9 +110,10 @@ std::string per_object(const HandSet& set, bool grasps_only) {
 
 // What --explain prints: the scene the sampler found, how many hands each stage kept (per
 // object; the screen's reasons, when the tree screens into {screened}, and every rejection's
-// once classified) and where the best grasps lie.
+// once classified) and where the best grasps lie: the selection's grasps when the tree
+// selected (`selection`), else the `best` best scores among the grasps classified.
 void print_explanation(const HandSet* sampled, const HandSet* screened, const HandSet* classified,
-                       std::size_t best) {
+                       const HandSet* selection, std::size_t best) {
   if (sampled == nullptr) {
     std::cout << "explain: no hand hypotheses (the tree failed at or before sampling)\n";
     return;
@@ -141,12 +142,19 @@ void print_explanation(const HandSet* sampled, const HandSet* screened, const Ha
             << " (per object: " << per_object(*classified, true) << ")\n";
   std::cout << "rejected by the screen or the classifier: "
             << rejection_counts(classified->hands, false) << "\n";
-  std::stable_sort(grasps.begin(), grasps.end(),
-                   [](const Hand* a, const Hand* b) { return a->score > b->score; });
-  grasps.resize(std::min(best, grasps.size()));
+  if (selection != nullptr) {
+    grasps.clear();
+    for (const Hand& hand : selection->hands)
+      if (hand.rejection == Rejection::kNone) grasps.push_back(&hand);
+  } else {
+    std::stable_sort(grasps.begin(), grasps.end(),
+                     [](const Hand* a, const Hand* b) { return a->score > b->score; });
+    grasps.resize(std::min(best, grasps.size()));
+  }
   const auto on_objects = std::count_if(grasps.begin(), grasps.end(),
                                         [](const Hand* hand) { return hand->object >= 0; });
-  std::cout << "the " << grasps.size() << " best grasps: " << on_objects << " on objects\n";
+  std::cout << "the " << grasps.size() << (selection != nullptr ? " selected" : " best")
+            << " grasps: " << on_objects << " on objects\n";
 }
 
 }  // namespace
@@ -166,8 +174,9 @@ int detect_command(const DetectOptions& options) {
   if (const HandSet* set = hand_set(tree, options.hands_entry)) print_summary(*set, 5, ranked);
   if (options.explain) {
     const HandSet* classified = hand_set(tree, "classified");  // detect_top's, before selection
+    const HandSet* written = hand_set(tree, options.hands_entry);
     print_explanation(hand_set(tree, "hands"), hand_set(tree, "screened"),
-                      classified != nullptr ? classified : hand_set(tree, options.hands_entry), 12);
+                      classified != nullptr ? classified : written, ranked ? written : nullptr, 12);
   }
   std::cout << result_line(options.tree_path, status, tracing) << "\n";
   return status == bt::Status::kSuccess ? kExitSuccess : kExitTreeFailed;

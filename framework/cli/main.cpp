@@ -155,7 +155,8 @@ void add_detect(CLI::App& app, Commands& commands) {
       ->expected(6);
   detect->add_flag("--explain", options.explain,
                    "Print the support and objects found, the hands each stage kept per object "
-                   "and how many of the 12 best grasps lie on objects");
+                   "and how many of the grasps lie on objects (the selected ones with --top or "
+                   "--per-object, else the 12 best)");
   add_tree_run_options(*detect, options.settings);
 }
 

@@ -510,6 +510,53 @@ TEST_F(DetectTest, ExplainNamesTheSupportTheObjectsAndWhereTheBestGraspsLie) {
   for (const auto& hand : document["hands"]) EXPECT_EQ(hand["object"], 0);
 }
 
+// With a selection (--top), every count printed agrees: the log's classified hands with
+// --explain's, and the selected grasps of the log, --explain, the file and the picture.
+TEST_F(DetectTest, EveryCountOfASelectionAgrees) {
+  const std::string mug = std::string(ANTIPODE_TEST_DATA_DIR) + "/clouds/table_mug.pcd";
+  if (!fs::exists(mug)) GTEST_SKIP() << "no " << mug << " (../shared/data is absent)";
+  const Result result = run(detect(mug, "--explain --top 3 --set sampler.samples=1000"));
+  ASSERT_EQ(result.exit_code, 0) << result.out;
+  std::smatch m;
+  ASSERT_TRUE(std::regex_search(result.out, m, std::regex("([0-9]+) of [0-9]+ hands classified")))
+      << result.out;
+  const std::string classified = m[1];
+  EXPECT_NE(result.out.find("classified as grasps: " + classified + " "), std::string::npos)
+      << result.out;
+  ASSERT_TRUE(std::regex_search(result.out, m, std::regex("([0-9]+) grasps selected")))
+      << result.out;
+  const int selected = std::stoi(m[1]);
+  ASSERT_GT(selected, 0);
+  EXPECT_LE(selected, 3);
+  const std::string n = std::to_string(selected);
+  EXPECT_NE(result.out.find("the " + n + " selected grasps: " + n + " on objects"),
+            std::string::npos)
+      << result.out;
+  EXPECT_NE(result.out.find("picture of " + n + " hands written"), std::string::npos) << result.out;
+  std::ifstream in(dir_ / "g.json");
+  EXPECT_EQ(nlohmann::json::parse(in)["count"].get<int>(), selected);
+}
+
+// A model trained for another gripper is a load error (exit 2) before any sampling, naming
+// both components and the command that trains a model for the gripper; nothing is written.
+TEST_F(DetectTest, AModelForAnotherGripperIsALoadErrorThatNamesTheFix) {
+  if (!fs::exists(krylon_)) GTEST_SKIP() << "no " << krylon_ << " (../shared/data is absent)";
+  const std::string gripper =
+      std::string(ANTIPODE_TEST_SOURCE_DIR) + "/robots/grippers/parallel_8cm.yaml";
+  const Result result = run(detect(krylon_, "--set sampler.hand=" + gripper));
+  EXPECT_EQ(result.exit_code, 2) << result.out;
+  EXPECT_NE(result.out.find("component 'classifier' (hog_svm_classifier) cannot score the hands "
+                            "of component 'sampler' (antipodal_sampler): model "),
+            std::string::npos)
+      << result.out;
+  EXPECT_NE(result.out.find("antipode train --out my.model --set sampler.hand=GRIPPER.yaml"),
+            std::string::npos)
+      << result.out;
+  EXPECT_EQ(result.out.find("hand hypotheses"), std::string::npos) << "it sampled:\n" << result.out;
+  EXPECT_EQ(std::count(result.out.begin(), result.out.end(), '\n'), 1) << result.out;
+  EXPECT_TRUE(wrote_nothing());
+}
+
 // OpenBLAS picks its matrix kernel for the CPU it runs on; the SVM's decision values, and so
 // the grasps, must not depend on which (OPENBLAS_CORETYPE forces a kernel: the SSE one of
 // 2008 and, where the CPU has them, the AVX2 and FMA one).

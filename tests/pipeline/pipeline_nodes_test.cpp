@@ -272,20 +272,20 @@ trees:
 }
 
 TEST_F(PipelineNodesTest, LoopOverScenesCountsSeedsAndOutcomes) {
-  bt::Tree tree = load(std::string(kComponents) + R"(
+  bt::Tree tree = load(std::string(kComponents) + R"yaml(
 trees:
   pick:
     Repeat:
       num_cycles: 3
       child:
         Sequence:
-          - ResetScene: { cell: cell, first_seed: 5, seed: "{seed}" }
+          - ResetScene: { cell: cell, first_seed: 5, seed: "{seed}", objects: "{objects}" }
           - CaptureCloud: { cell: cell, cloud: "{cloud}" }
           - SampleHands: { sampler: sampler, cloud: "{cloud}", hands: "{hands}" }
           - SelectGrasps: { selector: selector, hands: "{hands}", grasps: "{grasps}" }
           - ExecuteGrasp: { cell: cell, grasps: "{grasps}", outcome: "{outcome}" }
-          - RecordOutcome: { outcome: "{outcome}", label: "scene {seed}", successes: "{ok}", attempts: "{n}" }
-)");
+          - RecordOutcome: { outcome: "{outcome}", label: "scene {seed} ({objects})", successes: "{ok}", attempts: "{n}" }
+)yaml");
   std::vector<std::string> lines;
   tree.set_log_sink([&](const bt::Node& node, const std::string& line) {
     if (node.type() == "RecordOutcome") lines.push_back(line);
@@ -295,8 +295,9 @@ trees:
   EXPECT_EQ(tree.blackboard().get<int>("n"), 3);
   EXPECT_EQ(tree.blackboard().get<int>("ok"), 3);
   ASSERT_EQ(lines.size(), 3u);
-  EXPECT_EQ(lines[0], "scene 5: success - 1 of 1 succeeded (100%)");
-  EXPECT_EQ(lines[2], "scene 7: success - 3 of 3 succeeded (100%)");
+  // The line cell knows no ground truth: its objects go unnamed.
+  EXPECT_EQ(lines[0], "scene 5 (objects unknown): success - 1 of 1 succeeded (100%)");
+  EXPECT_EQ(lines[2], "scene 7 (objects unknown): success - 3 of 3 succeeded (100%)");
 }
 
 // A clear-the-box tree over a line cell with parameters `cell`: ClearBox with the port
@@ -371,6 +372,29 @@ TEST_F(PipelineNodesTest, ClearBoxStopsAfterConsecutiveCyclesWithoutAGrasp) {
   EXPECT_EQ(run.attempts(), 0);
   EXPECT_EQ(run.objects_left(), 4);
   EXPECT_EQ(run.summary(), "cleared 0 of 4 objects; 0 of 0 attempts succeeded");
+}
+
+// Objects the cell placed outside the workspace (fell out while the box was filled) are
+// reported when the run starts and in its summary, apart from the objects it had to clear.
+TEST_F(PipelineNodesTest, ClearBoxSaysHowManyObjectsFellOutWhileTheBoxWasFilled) {
+  bt::Tree tree =
+      load(clearing_tree("{ plugin: line_cell, objects: 3, placed: 5 }", "max_misses: 1",
+                         R"(SetBlackboard: { key: outcome, value: "no grasp found" })"));
+  std::vector<std::string> lines;
+  tree.set_log_sink([&](const bt::Node& node, const std::string& line) {
+    if (node.type() == "ClearBox") lines.push_back(line);
+  });
+  ASSERT_EQ(tree.tick_while_running(), bt::Status::kSuccess);
+  const auto& run = tree.blackboard().get_ref<ClearingRun>("run");
+  EXPECT_EQ(run.objects_placed, 5);
+  EXPECT_EQ(run.missed_at_filling(), 2);
+  ASSERT_FALSE(lines.empty());
+  EXPECT_EQ(lines.front(),
+            "clearing 3 objects (2 of the 5 placed fell out while the box was filled), at most 6 "
+            "cycles");
+  EXPECT_EQ(lines.back(),
+            "cleared 0 of 3 objects (2 more fell out while the box was filled); 0 of 0 attempts "
+            "succeeded");
 }
 
 // A cycle whose classifier predicted nothing to hold ends the run at once, with that reason.

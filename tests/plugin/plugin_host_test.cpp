@@ -178,7 +178,7 @@ TEST(PluginHostTest, WrongAbiMajorIsRefusedNamingBothVersions) {
   EXPECT_EQ(host.kind_of("future_sampler"), std::nullopt);
 }
 
-// ABI 10.1's parameter checks: run without making the component, errors located as the
+// The parameter checks: run without making the component, errors located as the
 // factory's; a type without a check says so; a check of a type the library does not make
 // refuses the library; a library built for 10.0 (no checks) still loads.
 TEST(PluginHostTest, ParameterChecksRunWithoutMakingTheComponent) {

@@ -72,6 +72,27 @@ TEST_F(AntipodalSamplerTest, SameResultAsTheFrameworkFunctionForAnyThreadCount) 
   }
 }
 
+// The bites follow the hand's fingers unless set: half their depth, and half that where the
+// support stopped the hand - the framework's search with those bites gives the same hands.
+TEST_F(AntipodalSamplerTest, TheBitesFollowTheFingerDepthUnlessSet) {
+  const Cloud raw = cylinder();
+  HandSamplingOptions options;
+  options.search.samples = 200;
+  options.search.threads = 1;
+  options.search.hand.depth_m = 0.04;
+  options.search.min_bite_m = 0.02;
+  options.search.min_bite_at_support_m = 0.01;
+  const HandSet direct = sample_hands(raw, options, RandomStream(9));
+  const std::string shorter = "samples: 200\nthreads: 1\nhand: {depth_m: 0.04}\n";
+  const HandSet followed = create(shorter)->sample(raw, RandomStream(9), {});
+  ASSERT_EQ(followed.hands.size(), direct.hands.size());
+  for (std::size_t i = 0; i < direct.hands.size(); ++i)
+    EXPECT_EQ(followed.hands[i].X_FrameHand.matrix(), direct.hands[i].X_FrameHand.matrix());
+  // Baxter's 3 cm asked of 4 cm fingers: a 10 cm cylinder's shoulders stop more of them.
+  const HandSet fixed = create(shorter + "min_bite_m: 0.03")->sample(raw, RandomStream(9), {});
+  EXPECT_LT(fixed.hands.size(), followed.hands.size());
+}
+
 TEST_F(AntipodalSamplerTest, ReadsEveryDocumentedParameter) {
   const std::string yaml = R"(
 samples: 100

@@ -2,6 +2,7 @@
 
 #include "build_tree.hpp"
 
+#include "checks.hpp"
 #include "tree_context.hpp"
 
 namespace antipode::bt::detail {
@@ -89,6 +90,7 @@ Tree TreeBuilder::build(const Overrides& entries) {
   context = std::make_shared<TreeContext>();
   context->seed = seed;
   create_components();
+  check_classifiers_fit_samplers(spec, *context);
   auto blackboard = std::make_shared<Blackboard>(converters);
   for (const auto& [key, text] : entries) blackboard->set<std::string>(key, text);
   const TreeSpec& main = *spec.tree(spec.main);

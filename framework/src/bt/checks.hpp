@@ -1,5 +1,6 @@
 #pragma once
-// Whole-file checks that run after parsing: subtree cycles and blackboard entry types.
+// Whole-file checks that run after parsing (subtree cycles and blackboard entry types) and one
+// that runs once the components exist (classifiers against samplers' hands).
 
 #include <cstddef>
 #include <string>
@@ -7,6 +8,7 @@
 #include <vector>
 
 #include "antipode/bt/converters.hpp"
+#include "tree_context.hpp"
 #include "tree_spec.hpp"
 
 namespace antipode::bt::detail {
@@ -24,5 +26,9 @@ void check_subtree_cycles(const FileSpec& spec);
 // RemapSpec) and checks that `--set` text entries of the main tree parse as their type.
 void check_entry_types(FileSpec& spec, const LiteralConverters& converters,
                        const std::vector<std::pair<std::string, std::string>>& entry_overrides);
+
+// Throws, located at the classifier's declaration, when a classifier of the tree refuses the
+// hand of one of its samplers (Classifier::hand_problem of Sampler::hand).
+void check_classifiers_fit_samplers(const FileSpec& spec, const TreeContext& context);
 
 }  // namespace antipode::bt::detail

@@ -4,6 +4,7 @@ list(APPEND ANTIPODE_SOURCES
   ${CMAKE_CURRENT_LIST_DIR}/build_tree.cpp
   ${CMAKE_CURRENT_LIST_DIR}/builtin_nodes.cpp
   ${CMAKE_CURRENT_LIST_DIR}/check_cycles.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/check_hand_fit.cpp
   ${CMAKE_CURRENT_LIST_DIR}/check_types.cpp
   ${CMAKE_CURRENT_LIST_DIR}/console_tracer.cpp
   ${CMAKE_CURRENT_LIST_DIR}/control_nodes.cpp

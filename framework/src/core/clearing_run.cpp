@@ -42,6 +42,11 @@ int ClearingRun::objects_lost() const {
   return objects_at_start - successes() - objects_left();
 }
 
+int ClearingRun::missed_at_filling() const {
+  if (objects_at_start < 0 || objects_placed < 0) return -1;
+  return std::max(0, objects_placed - objects_at_start);
+}
+
 int ClearingRun::trailing_misses() const {
   int misses = 0;
   for (auto c = cycles.rbegin(); c != cycles.rend() && !c->chose_grasp(); ++c) ++misses;
@@ -57,7 +62,10 @@ int ClearingRun::trailing_failures() const {
 
 std::string ClearingRun::summary() const {
   const std::string objects = objects_at_start >= 0 ? std::to_string(objects_at_start) : "?";
-  return "cleared " + std::to_string(successes()) + " of " + objects + " objects; " +
+  const int missed = missed_at_filling();
+  const std::string fell =
+      missed > 0 ? " (" + std::to_string(missed) + " more fell out while the box was filled)" : "";
+  return "cleared " + std::to_string(successes()) + " of " + objects + " objects" + fell + "; " +
          std::to_string(successes()) + " of " + std::to_string(attempts()) + " attempts succeeded";
 }
 

@@ -61,14 +61,15 @@ constexpr std::size_t kDescriptorBytesRead =
     offsetof(PluginDescriptor, factories) +
     sizeof(PluginDescriptor::factories);  // NOLINT(bugprone-sizeof-expression): the field's size
 
-// ABI 10.1 added the parameter checks after the factories.
+// The parameter checks follow the factories (since ABI 10.1).
 constexpr std::size_t kDescriptorBytesWithChecks =
     offsetof(PluginDescriptor, checks) +
     sizeof(PluginDescriptor::checks);  // NOLINT(bugprone-sizeof-expression): the field's size
 
-// The parameter checks of a descriptor (none before ABI 10.1).
+// The parameter checks of a descriptor (none in one too short to hold them: a descriptor
+// written without them, as a plugin compiled for ABI 10.0 wrote it).
 std::pair<const PluginParameterCheck*, std::uint32_t> checks_of(const PluginDescriptor& d) {
-  if (d.abi_minor < 1 || d.descriptor_size < kDescriptorBytesWithChecks) return {nullptr, 0};
+  if (d.descriptor_size < kDescriptorBytesWithChecks) return {nullptr, 0};
   return {d.checks, d.check_count};
 }
 

@@ -17,6 +17,7 @@ struct BulletCellState final : CellState {
   std::uint64_t seed = 0;
   int captures = 0;
   int attempts = 0;
+  int placed = 0;
 };
 
 bool is_rotation(const Eigen::Matrix3d& r) {
@@ -316,7 +317,7 @@ void BulletCell::reset(std::uint64_t seed) {
   captures_ = 0;
   attempts_ = 0;
   world_ = std::make_unique<PhysicsWorld>(options_.physics);
-  build_scene(scene_, seed, meshes_, *world_);
+  placed_ = int(build_scene(scene_, seed, meshes_, *world_).size());
 }
 
 std::shared_ptr<const CellState> BulletCell::save() const {
@@ -326,6 +327,7 @@ std::shared_ptr<const CellState> BulletCell::save() const {
   state->seed = seed_;
   state->captures = captures_;
   state->attempts = attempts_;
+  state->placed = placed_;
   return state;
 }
 
@@ -337,6 +339,7 @@ void BulletCell::restore(const CellState& state) {
   seed_ = saved->seed;
   captures_ = saved->captures;
   attempts_ = saved->attempts;
+  placed_ = saved->placed;
 }
 
 }  // namespace antipode::cells

@@ -44,6 +44,8 @@ class BulletCell final : public Cell {
   /// Each object in the workspace: its name, pose and narrowest horizontal extent (from its
   /// rendered mesh).
   std::vector<ObjectTruth> object_truth() const override;
+  /// The objects the scene's recipe placed at the last reset (its count, after any refills).
+  std::optional<int> objects_placed() const override { return placed_; }
   GraspAttempt execute(const GraspRequest& request) override;
   void reset(std::uint64_t seed) override;
   /// The objects' recipes, poses and motion, the fixtures and the clock (PhysicsSnapshot).
@@ -79,6 +81,7 @@ class BulletCell final : public Cell {
   std::uint64_t seed_ = 0;
   int captures_ = 0;
   int attempts_ = 0;
+  int placed_ = 0;  ///< objects the last reset placed
 };
 
 }  // namespace antipode::cells

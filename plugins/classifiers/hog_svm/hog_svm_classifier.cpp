@@ -69,6 +69,17 @@ class HogSvmClassifier final : public Classifier {
     params.reject_unknown();
   }
 
+  // The model's own check, as one sentence: it names the command that trains a model for
+  // `hand`.
+  std::string hand_problem(const HandGeometry& hand) const override {
+    try {
+      model_.check_compatible(model_.descriptor.image, hand, "model " + path_);
+    } catch (const Error& e) {
+      return e.what();
+    }
+    return {};
+  }
+
   void classify(HandSet& set, const StopToken& stop) const override {
     if (set.hands.empty()) return;
     model_.check_compatible(model_.descriptor.image, set.geometry, "model " + path_);

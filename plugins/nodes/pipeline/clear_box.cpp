@@ -95,6 +95,7 @@ class ClearBox final : public bt::DecoratorNode {
   void start_run() {
     run_ = ClearingRun{};
     run_.objects_at_start = objects_now();
+    run_.objects_placed = component<Cell>("cell").objects_placed().value_or(-1);
     cycle_started_ = false;
     const int given = get_input<int>("max_cycles");
     const int misses = get_input<int>("max_misses");
@@ -106,8 +107,14 @@ class ClearBox final : public bt::DecoratorNode {
     max_cycles_ = given > 0 ? given : run_.objects_at_start >= 0 ? 2 * run_.objects_at_start : 20;
     max_misses_ = misses;
     max_failures_ = failures;
+    const int missed = run_.missed_at_filling();
     log("clearing " + (run_.objects_at_start >= 0 ? std::to_string(run_.objects_at_start) : "?") +
-        " objects, at most " + std::to_string(max_cycles_) + " cycles");
+        " objects" +
+        (missed > 0
+             ? " (" + std::to_string(missed) + " of the " + std::to_string(run_.objects_placed) +
+                   " placed fell out while the box was filled)"
+             : "") +
+        ", at most " + std::to_string(max_cycles_) + " cycles");
     set_output("run", run_);
   }
 

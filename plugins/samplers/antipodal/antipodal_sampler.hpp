@@ -18,6 +18,9 @@ class AntipodalSampler final : public Sampler {
   HandSet sample(const Cloud& cloud, const RandomStream& random,
                  const StopToken& stop) const override;
 
+  /// The `hand` parameter's gripper (Baxter's by default).
+  std::optional<HandGeometry> hand() const override { return options_.search.hand; }
+
   const HandSamplingOptions& options() const { return options_; }
 
  private:

@@ -82,11 +82,12 @@ HandSearchParameters search_parameters(const Parameters& params) {
   s.approach_tilts_deg = params.get<std::vector<double>>("approach_tilts_deg", {});
   s.tilted_orientation_range_deg =
       number(params, "tilted_orientation_range_deg", s.tilted_orientation_range_deg, 0.0, true);
-  s.min_bite_m = number(params, "min_bite_m", s.min_bite_m, 0.0, true);
+  // The bites follow the fingers unless set: half their depth, and at the support half that
+  // (Baxter's 6 cm fingers: 3 and 1.5 cm).
+  s.min_bite_m = number(params, "min_bite_m", 0.5 * s.hand.depth_m, 0.0, true);
   s.clearance_m = number(params, "clearance_m", s.clearance_m, 0.0, true);
   s.support_clearance_m = number(params, "support_clearance_m", s.support_clearance_m, 0.0, true);
-  s.min_bite_at_support_m =
-      number(params, "min_bite_at_support_m", s.min_bite_at_support_m, 0.0, true);
+  s.min_bite_at_support_m = number(params, "min_bite_at_support_m", 0.5 * s.min_bite_m, 0.0, true);
   s.max_view_angle_deg = number(params, "max_view_angle_deg", s.max_view_angle_deg, 0.0, false);
   s.reject_hidden_fingers = params.get<bool>("reject_hidden_fingers", s.reject_hidden_fingers);
   s.occlusion_margin_m = number(params, "occlusion_margin_m", s.occlusion_margin_m, 0.0, true);

@@ -60,8 +60,10 @@ struct HandSearchParameters {
   int positions = 20;
   /// How far the object must reach between the fingers (from the fingertips towards the
   /// palm) once the hand has been pushed forward until contact. An object wider than the
-  /// aperture stops the fingertips early and reaches less far in: with the default, half
-  /// the finger depth, cylinders wider than about 7.3 cm give no hand for a 7.2 cm aperture.
+  /// aperture stops the fingertips early and reaches less far in: with half the finger
+  /// depth, cylinders wider than about 7.3 cm give no hand for a 7.2 cm aperture. The default
+  /// is half Baxter's finger depth; the `antipodal_sampler` plugin takes half the depth of
+  /// its own `hand` unless told otherwise.
   double min_bite_m = 0.03;
   /// How far the hand backs off from the contact that stopped it.
   double clearance_m = 0.001;
@@ -72,7 +74,8 @@ struct HandSearchParameters {
   double support_clearance_m = 0.005;
   /// How far the object must reach between the fingers in a hand the support stopped (in
   /// place of `min_bite_m`): the fingers then hold a low object down to where they may go,
-  /// so a 2.5 cm-high object lying on the table can still be taken from above.
+  /// so a 2.5 cm-high object lying on the table can still be taken from above. The default is
+  /// half `min_bite_m` (the plugin's: half its own `min_bite_m`).
   double min_bite_at_support_m = 0.015;
   /// A hand must approach from within this angle of the direction towards a sensor that saw
   /// its sample (the side of the surface that was observed). 180 disables the check.

@@ -72,6 +72,12 @@ class Cell : public Component {
   /// cell has none (a real cell).
   virtual std::vector<ObjectTruth> object_truth() const { return {}; }
 
+  /// How many objects the last reset() put into the scene, counting those that came to rest
+  /// outside the workspace while it was filled (bounced out of the box); nullopt when the
+  /// cell cannot tell (a real cell). With objects_left() at the start of a run, it tells how
+  /// many were missed while filling.
+  virtual std::optional<int> objects_placed() const { return std::nullopt; }
+
   /// Restores the cell's initial state for `seed`.
   virtual void reset(std::uint64_t seed) = 0;
 

@@ -65,6 +65,9 @@ const char* to_string(ClearingStop stop);
 /// A whole run: its cycles in order and why it ended.
 struct ClearingRun {
   int objects_at_start = -1;
+  /// Objects the cell placed (Cell::objects_placed; -1: unknown): those beyond
+  /// objects_at_start came to rest outside the workspace while the box was filled.
+  int objects_placed = -1;
   std::vector<ClearingCycle> cycles;
   ClearingStop stop = ClearingStop::kRunning;
 
@@ -74,11 +77,14 @@ struct ClearingRun {
   /// Objects that left the cell's workspace without being picked (knocked off the table or
   /// out of the box; -1: unknown).
   int objects_lost() const;
+  /// Objects placed that were not in the workspace when the run began (-1: unknown).
+  int missed_at_filling() const;
   /// Consecutive cycles at the end of the run that found no grasp.
   int trailing_misses() const;
   /// Consecutive attempts (cycles that chose a grasp) at the end of the run that failed.
   int trailing_failures() const;
-  /// "cleared X of Y objects; Z of W attempts succeeded" (Y "?" when unknown).
+  /// "cleared X of Y objects; Z of W attempts succeeded" (Y "?" when unknown), with "(N more
+  /// fell out while the box was filled)" after Y when objects were missed at filling.
   std::string summary() const;
 };
 

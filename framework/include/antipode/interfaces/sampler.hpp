@@ -2,6 +2,9 @@
 /// @file
 /// Sampler: cloud in, hand hypotheses out (paper section 3).
 
+#include <optional>
+
+#include "antipode/core/hand_geometry.hpp"
 #include "antipode/core/random.hpp"
 #include "antipode/core/stop_token.hpp"
 #include "antipode/interfaces/component.hpp"
@@ -23,6 +26,11 @@ class Sampler : public Component {
   /// concurrently from several trees.
   virtual HandSet sample(const Cloud& cloud, const RandomStream& random,
                          const StopToken& stop) const = 0;
+
+  /// The gripper this sampler finds hands for (the `geometry` of every HandSet it returns),
+  /// or nothing when it cannot say before sampling. A tree checks its classifiers against it
+  /// when it loads (Classifier::hand_problem). Const and thread-safe.
+  virtual std::optional<HandGeometry> hand() const { return std::nullopt; }
 };
 
 }  // namespace antipode

@@ -23,8 +23,8 @@ namespace bt {
 class NodeRegistry;
 }
 
-constexpr std::uint32_t kAbiMajor = 10;
-constexpr std::uint32_t kAbiMinor = 1;
+constexpr std::uint32_t kAbiMajor = 11;
+constexpr std::uint32_t kAbiMinor = 0;
 
 /// One thing a plugin can make. For a component kind ("sampler", "classifier", "selector",
 /// "planner", "cell") `create` is set and `register_node` is null; for kind "node" it is the
@@ -41,12 +41,11 @@ struct PluginFactory {
   void (*register_node)(bt::NodeRegistry& registry);
 };
 
-/// A check of one component type's parameters, without making the component (ABI 10.1,
-/// optional): it reads every parameter `create` reads and throws the antipode::Error
-/// `create` would throw for a bad one - an unknown key, a value out of range, a file that
-/// cannot be read - but builds nothing heavy (no world, no planner, no index over a
-/// model). `antipode validate` calls it for every component a tree declares; a type
-/// without one is checked only when the tree loads.
+/// A check of one component type's parameters, without making the component (optional): it reads
+/// every parameter `create` reads and throws the antipode::Error `create` would throw for a bad one
+/// - an unknown key, a value out of range, a file that cannot be read - but builds nothing heavy
+/// (no world, no planner, no index over a model). `antipode validate` calls it for every component
+/// a tree declares; a type without one is checked only when the tree loads.
 struct PluginParameterCheck {
   const char* type;  ///< a component type among this plugin's factories
   void (*check)(const Parameters& params);
@@ -60,7 +59,7 @@ struct PluginDescriptor {
   const char* version;            ///< the plugin's own version, e.g. "1.2.0"
   std::uint32_t factory_count;
   const PluginFactory* factories;
-  // ABI 10.1; the host reads them only when `descriptor_size` covers them.
+  // Since ABI 10.1; the host reads them only when `descriptor_size` covers them.
   std::uint32_t check_count;
   const PluginParameterCheck* checks;  ///< null when check_count is 0
 };
