@@ -192,7 +192,9 @@ void add_outcomes(CLI::App& app, Commands& commands) {
   outcomes->add_option("--scenes", o.scenes, "Scenes to run")->capture_default_str();
   outcomes->add_option("--first-seed", o.first_seed, "Seed of the first scene")
       ->capture_default_str();
-  outcomes->add_option("--shard", o.shard, "i/n: run every n-th scene from the i-th");
+  outcomes->add_option("--shard", o.shard,
+                       "i/n: run every n-th scene from the i-th; auto: the scheduler's (a Slurm "
+                       "array task, a Kubernetes Indexed Job pod)");
   outcomes->add_option("--jobs", o.jobs, "Processes")->capture_default_str();
   outcomes->add_option("--tree", o.tree_path, "Outcome tree")->capture_default_str();
   outcomes->add_option("--set", o.set, "key=value or component.key=value (repeatable)");
@@ -263,7 +265,8 @@ void add_bench_clutter(CLI::App& bench, antipode::cli::ClutterBenchOptions& o) {
                       "Write every cycle's selection into this folder (seed-S-cycle-NN.json): "
                       "the grasps kept in rank order, then the hands dropped with their reasons");
   clutter->add_option("--shard", o.shard,
-                      "i/n: run every n-th run from the i-th (then bench merge)");
+                      "i/n: run every n-th run from the i-th (then bench merge); auto: the "
+                      "scheduler's (a Slurm array task, a Kubernetes Indexed Job pod)");
   clutter->add_option("--gripper", o.gripper_path,
                       "A gripper file (robots/grippers/) for the sampler; its apertures set which "
                       "objects left count as holdable (default: the tree's, Baxter's)");
@@ -303,7 +306,8 @@ void add_bench(CLI::App& app, Commands& commands) {
       ->delimiter(',');
   isolation->add_option("--set", o.set, "Override a tree entry or component parameter");
   isolation->add_option("--shard", o.shard,
-                        "i/n: run every n-th attempt from the i-th (then bench merge)");
+                        "i/n: run every n-th attempt from the i-th (then bench merge); auto: the "
+                        "scheduler's (a Slurm array task, a Kubernetes Indexed Job pod)");
   add_bench_reach(*bench, commands.reach);
   add_bench_clutter(*bench, commands.clutter);
   CLI::App* merge = bench->add_subcommand(

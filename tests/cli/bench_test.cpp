@@ -1,8 +1,11 @@
 // `antipode bench isolation` as a user runs it: seeded runs with a floor on success, the same
 // results for any number of processes, and one-line errors for bad options.
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <utility>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -10,6 +13,7 @@
 
 namespace {
 namespace fs = std::filesystem;
+using antipode::testing::run_command;
 using antipode::testing::without_seconds;
 
 class BenchTest : public antipode::testing::BenchCommandTest {
@@ -92,6 +96,55 @@ TEST_F(BenchTest, ShardsMergedGiveTheWholeBenchsReport) {
             std::string::npos)
       << markdown;
   EXPECT_TRUE(fs::exists(file("images/merged-objects.png")));
+}
+
+// `--shard auto` takes the shard from the scheduler's environment: a Slurm array task's place
+// in a stepped range, or a Kubernetes Indexed Job pod's index; a missing, ambiguous or
+// unmappable environment is one error line.
+TEST_F(BenchTest, ShardAutoTakesTheSchedulersShard) {
+  const std::string args = "--objects procedural --variants a_2v --attempts 2 --poses 2";
+  const auto in_environment = [&](const std::string& variables, const std::string& more) {
+    return run_command("cd '" + std::string(ANTIPODE_TEST_SOURCE_DIR) +
+                       "' && env -u SLURM_ARRAY_TASK_ID -u JOB_COMPLETION_INDEX " + variables +
+                       " " + std::string(ANTIPODE_CLI) + " bench isolation " + args + " " + more);
+  };
+  const auto second = report(args + " --shard 2/2", "2.json");
+  // Task 5 of the array 3-5:2 is its second of two.
+  const std::string slurm =
+      "SLURM_ARRAY_TASK_ID=5 SLURM_ARRAY_TASK_MIN=3 SLURM_ARRAY_TASK_MAX=5 "
+      "SLURM_ARRAY_TASK_COUNT=2 SLURM_ARRAY_TASK_STEP=2";
+  ASSERT_EQ(in_environment(slurm, "--shard auto --report " + file("slurm.json")).exit_code, 0);
+  std::ifstream slurm_in(file("slurm.json"));
+  const auto from_slurm = nlohmann::json::parse(slurm_in);
+  EXPECT_EQ(from_slurm["shard"], second["shard"]);
+  EXPECT_EQ(without_seconds(from_slurm["attempts"]), without_seconds(second["attempts"]));
+  // Pod 0 of an Indexed Job of 2 completions is shard 1/2.
+  ASSERT_EQ(in_environment("JOB_COMPLETION_INDEX=0 ANTIPODE_SHARD_COUNT=2",
+                           "--shard auto --report " + file("pod.json"))
+                .exit_code,
+            0);
+  std::ifstream pod_in(file("pod.json"));
+  EXPECT_EQ(nlohmann::json::parse(pod_in)["shard"]["index"], 1);
+
+  for (const auto& [variables, words] : std::vector<std::pair<std::string, std::string>>{
+           {"", "no scheduler's shard in the environment"},
+           {"SLURM_ARRAY_TASK_ID=4 SLURM_ARRAY_TASK_MIN=1 SLURM_ARRAY_TASK_MAX=9 "
+            "SLURM_ARRAY_TASK_COUNT=3",
+            "are no range in steps of 1"},
+           {"SLURM_ARRAY_TASK_ID=4 SLURM_ARRAY_TASK_COUNT=3", "SLURM_ARRAY_TASK_MIN is not set"},
+           {"SLURM_ARRAY_TASK_ID=x SLURM_ARRAY_TASK_MIN=0 SLURM_ARRAY_TASK_COUNT=3",
+            "SLURM_ARRAY_TASK_ID='x' is not a whole number"},
+           {"JOB_COMPLETION_INDEX=2 ANTIPODE_SHARD_COUNT=2", "is not below ANTIPODE_SHARD_COUNT=2"},
+           {"JOB_COMPLETION_INDEX=0", "ANTIPODE_SHARD_COUNT is not set"},
+           {"JOB_COMPLETION_INDEX=0 ANTIPODE_SHARD_COUNT=2 SLURM_ARRAY_TASK_ID=1",
+            "the scheduler is unclear"}}) {
+    const auto result = in_environment(variables, "--shard auto --report " + file("x.json"));
+    EXPECT_EQ(result.exit_code, 2) << variables << ": " << result.out;
+    EXPECT_NE(result.out.find("antipode: error: --shard auto: "), std::string::npos) << result.out;
+    EXPECT_NE(result.out.find(words), std::string::npos) << variables << ": " << result.out;
+    EXPECT_EQ(std::count(result.out.begin(), result.out.end(), '\n'), 1) << result.out;
+    EXPECT_FALSE(fs::exists(file("x.json")));
+  }
 }
 
 TEST_F(BenchTest, BadOptionsAreOneLineErrors) {
