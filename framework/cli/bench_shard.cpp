@@ -8,14 +8,6 @@
 namespace antipode::cli {
 namespace {
 
-// The whole of `text` as a number in [1, 10000], or 0.
-int shard_number(const std::string& text) {
-  int value = 0;
-  const char* end = text.data() + text.size();
-  const auto [stop, error] = std::from_chars(text.data(), end, value);
-  return error == std::errc() && stop == end && value >= 1 && value <= 10000 ? value : 0;
-}
-
 // The whole of `text` as a number in [0, 2^31), or nothing.
 std::optional<long> whole_number(const std::string& text) {
   long value = 0;
@@ -23,6 +15,12 @@ std::optional<long> whole_number(const std::string& text) {
   const auto [stop, error] = std::from_chars(text.data(), end, value);
   if (error != std::errc() || stop != end || value < 0 || value > 0x7fffffffL) return std::nullopt;
   return value;
+}
+
+// The whole of `text` as a number in [1, 10000], or 0.
+int shard_number(const std::string& text) {
+  const std::optional<long> value = whole_number(text);
+  return value && *value >= 1 && *value <= 10000 ? int(*value) : 0;
 }
 
 // Reads the environment's numbers for --shard auto, each naming its variable when it is bad.

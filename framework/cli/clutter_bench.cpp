@@ -46,7 +46,6 @@ struct RunSettings {
   std::string pictures_dir;    ///< failed attempts drawn here as seed-S-cycle-NN.png ("" = none)
   std::string selections_dir;  ///< each cycle's selection as seed-S-cycle-NN.json ("" = none)
   int threads = 2;
-  int objects_dropped = 0;  ///< objects the cell drops into each run's scene
   std::vector<std::pair<std::string, std::string>> entries;  ///< the same for every run
   /// Objects left whose narrowest horizontal extent lies in [min, max] count as holdable.
   std::pair<double, double> graspable_m{kMinGraspableWidthM, kMaxGraspableWidthM};
@@ -202,11 +201,9 @@ Json run_one(const Session& session, const RunSettings& settings, std::size_t in
       out["removed"] = run.successes();
       out["left"] = run.objects_left();
       out["lost"] = run.objects_lost();
-      // Objects that did not come to rest in the workspace (bounced out of the box).
-      if (run.missed_at_filling() >= 0)
-        out["missed_at_filling"] = run.missed_at_filling();
-      else if (run.objects_at_start >= 0)
-        out["missed_at_filling"] = std::max(0, settings.objects_dropped - run.objects_at_start);
+      // Objects that did not come to rest in the workspace (bounced out of the box), when the
+      // cell can tell (Cell::objects_placed).
+      if (run.missed_at_filling() >= 0) out["missed_at_filling"] = run.missed_at_filling();
       out["stop"] = to_string(run.stop);
       out["summary"] = run.summary();
       record_what_was_left(tree, settings.graspable_m, out);
@@ -436,7 +433,6 @@ int bench_clutter_command(const ClutterBenchOptions& options) {
   settings.tree_path = o.tree_path;
   settings.pictures_dir = o.pictures_dir;
   settings.selections_dir = o.selections_dir;
-  settings.objects_dropped = o.objects_per_run;
   std::ifstream tree_file(o.tree_path);
   settings.tree_yaml.assign(std::istreambuf_iterator<char>(tree_file), {});
   // The pictures and selections are the tree's: it writes them from the `picture_prefix` and

@@ -38,8 +38,8 @@ class SlurmTest : public antipode::testing::BenchCommandTest {
     running_ = true;
   }
 
-  // Stops the cluster, and checks that none of its daemons is left and that the test's
-  // folder is gone.
+  // Stops the cluster, and checks that none of its daemons is left and that neither its
+  // folder of sockets nor the test's folder is.
   void TearDown() override {
     std::vector<int> daemons;
     for (const char* pid_file :
@@ -48,8 +48,13 @@ class SlurmTest : public antipode::testing::BenchCommandTest {
       int pid = 0;
       if (in >> pid) daemons.push_back(pid);
     }
+    std::string runtime;  // the cluster's short folder of sockets, outside the test's
+    std::ifstream(file("cluster/runtime")) >> runtime;
     if (running_) script("local-cluster stop " + file("cluster"));
     for (const int pid : daemons) EXPECT_NE(::kill(pid, 0), 0) << "daemon " << pid << " is left";
+    if (!runtime.empty()) {
+      EXPECT_FALSE(std::filesystem::exists(runtime)) << runtime << " is left";
+    }
     BenchCommandTest::TearDown();
     EXPECT_FALSE(std::filesystem::exists(file(""))) << "the test's folder is left";
   }
