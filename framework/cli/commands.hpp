@@ -2,21 +2,28 @@
 // The `antipode` subcommands. Each returns the process exit code (see exit_codes.hpp) and
 // throws antipode::Error for bad input, which main() prints as one line.
 
-#include <cstdint>
 #include <string>
-#include <utility>
 #include <vector>
+
+#include "antipode/evaluation/exit_codes.hpp"
+#include "antipode/evaluation/session.hpp"
+#include "antipode/evaluation/tree_run_settings.hpp"
 
 namespace antipode::cli {
 
-/// What every command that runs a tree takes from --set, --seed and -v (or run's -q); main.cpp
-/// declares these options once, for all of them.
-struct TreeRunSettings {
-  std::vector<std::string> set;  ///< "key=value" overrides, applied after the command's own
-  std::uint64_t seed = 0;        ///< seed of every random stream
-  bool verbose = false;          ///< per-node console trace
-  std::string main_tree;         ///< the tree to run instead of the file's `main` ("": main)
-};
+// The commands run trees in the evaluation library's sessions, and exit with its codes.
+using evaluation::attach_tracers;
+using evaluation::kExitInternalError;
+using evaluation::kExitInvalidInput;
+using evaluation::kExitSuccess;
+using evaluation::kExitTreeFailed;
+using evaluation::load_tree_for;
+using evaluation::open_session;
+using evaluation::open_session_for;
+using evaluation::result_line;
+using evaluation::Session;
+using evaluation::Tracing;
+using evaluation::TreeRunSettings;
 
 struct RunOptions {
   std::string tree_path;
@@ -82,16 +89,5 @@ int check_plugin_command(const std::string& library);
 int write_index_command(const std::string& directory);
 /// Lists every node type, or (when `type` is not empty) the ports of one.
 int nodes_command(const std::string& type);
-
-/// Splits "key=value" overrides; throws Error for an entry without '='.
-std::vector<std::pair<std::string, std::string>> parse_overrides(
-    const std::vector<std::string>& entries);
-
-/// Throws Error for a user's `--set key=value` (a blackboard entry: no dot in `key`) that the
-/// tree file at `tree_path` never reads as `{key}` - usually a component parameter given
-/// without its component (`--set samples=10` for `--set sampler.samples=10`), which would
-/// otherwise change nothing. The message suggests the components whose parameters in the file
-/// have that name.
-void check_entries_are_read(const std::string& tree_path, const std::vector<std::string>& set);
 
 }  // namespace antipode::cli

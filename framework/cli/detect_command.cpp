@@ -9,15 +9,16 @@
 #include "antipode/bt/loader.hpp"
 #include "antipode/core/atomic_file.hpp"
 #include "antipode/core/error.hpp"
+#include "antipode/evaluation/exit_codes.hpp"
+#include "antipode/evaluation/session.hpp"
 #include "antipode/geometry/scene_layout.hpp"
 #include "antipode/interfaces/grasp_selector.hpp"
 #include "antipode/interfaces/hand_set.hpp"
 #include "camera_pose.hpp"
 #include "commands.hpp"
-#include "exit_codes.hpp"
-#include "session.hpp"
 
 namespace antipode::cli {
+
 namespace {
 
 // The detect tree reads these entries, which `antipode detect` fills from its arguments.

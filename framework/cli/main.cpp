@@ -7,14 +7,9 @@
 #include "antipode/config.hpp"
 #include "antipode/core/error.hpp"
 #include "antipode/core/shipped_data.hpp"
-#include "bench_merge.hpp"
-#include "clutter_bench.hpp"
+#include "antipode/evaluation/exit_codes.hpp"
+#include "bench_commands.hpp"
 #include "commands.hpp"
-#include "exit_codes.hpp"
-#include "isolation_bench.hpp"
-#include "outcome_data.hpp"
-#include "reach_bench.hpp"
-#include "report_command.hpp"
 
 namespace {
 
@@ -81,13 +76,13 @@ struct Commands {
   antipode::cli::DetectOptions detect;
   antipode::cli::SceneOptions scene;
   antipode::cli::TrainOptions train;
-  antipode::cli::OutcomeDataOptions outcomes;
+  antipode::evaluation::OutcomeDataOptions outcomes;
   antipode::cli::EvalOptions eval;
-  antipode::cli::IsolationBenchOptions isolation;
-  antipode::cli::ReachBenchOptions reach;
-  antipode::cli::ClutterBenchOptions clutter;
-  antipode::cli::BenchMergeOptions merge;
-  antipode::cli::ReportOptions report;
+  antipode::evaluation::IsolationBenchOptions isolation;
+  antipode::evaluation::ReachBenchOptions reach;
+  antipode::evaluation::ClutterBenchOptions clutter;
+  antipode::evaluation::BenchMergeOptions merge;
+  antipode::evaluation::ReportOptions report;
   std::vector<std::string> validate_paths;
   std::string node_type;        ///< `antipode nodes [TYPE]`
   std::string check_library;    ///< `antipode plugins --check LIB`
@@ -106,7 +101,7 @@ const CLI::Validator kSeed(
     "SEED");
 
 // --set, --seed and -v: the options of every command that runs a tree.
-void add_tree_run_options(CLI::App& command, antipode::cli::TreeRunSettings& settings) {
+void add_tree_run_options(CLI::App& command, antipode::evaluation::TreeRunSettings& settings) {
   command.add_option("--set", settings.set,
                      "Override: component.parameter=value, or key=value for a blackboard entry "
                      "of the main tree (repeatable)");
@@ -211,7 +206,7 @@ void add_eval(CLI::App& app, Commands& commands) {
   add_tree_run_options(*eval, options.settings);
 }
 
-void add_bench_reach(CLI::App& bench, antipode::cli::ReachBenchOptions& o) {
+void add_bench_reach(CLI::App& bench, antipode::evaluation::ReachBenchOptions& o) {
   CLI::App* reach =
       bench.add_subcommand("reach", "Inverse kinematics of the arm (TRAC-IK's protocol)");
   reach->add_option("--robot", o.robot_path, "URDF file")->capture_default_str();
@@ -233,7 +228,7 @@ void add_bench_reach(CLI::App& bench, antipode::cli::ReachBenchOptions& o) {
   reach->add_option("--report", o.report_path, "Write the report as JSON");
 }
 
-void add_bench_clutter(CLI::App& bench, antipode::cli::ClutterBenchOptions& o) {
+void add_bench_clutter(CLI::App& bench, antipode::evaluation::ClutterBenchOptions& o) {
   CLI::App* clutter = bench.add_subcommand(
       "clutter", "The paper's dense-clutter experiment: seeded clear-the-box runs");
   clutter
@@ -316,7 +311,7 @@ void add_bench(CLI::App& app, Commands& commands) {
   merge->add_option("--report", commands.merge.report_path, "Write the merged report as JSON");
 }
 
-void add_report(CLI::App& app, antipode::cli::ReportOptions& o) {
+void add_report(CLI::App& app, antipode::evaluation::ReportOptions& o) {
   CLI::App* report = app.add_subcommand(
       "report", "Write the results report (markdown and PNG charts) from bench reports");
   report->add_option("reports", o.reports, "Bench JSON reports, one section each")->required();

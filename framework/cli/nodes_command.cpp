@@ -3,11 +3,12 @@
 #include <iostream>
 
 #include "antipode/bt/node_registry.hpp"
+#include "antipode/evaluation/exit_codes.hpp"
+#include "antipode/evaluation/session.hpp"
 #include "commands.hpp"
-#include "exit_codes.hpp"
-#include "session.hpp"
 
 namespace antipode::cli {
+
 namespace {
 
 std::string children_of(const bt::NodeManifest& manifest) {

@@ -3,12 +3,12 @@
 #include <string>
 #include <vector>
 
+#include "antipode/evaluation/exit_codes.hpp"
+#include "antipode/evaluation/session.hpp"
 #include "antipode/plugin/abi.hpp"
 #include "antipode/plugin/plugin_host.hpp"
 #include "antipode/plugin/plugin_index.hpp"
 #include "commands.hpp"
-#include "exit_codes.hpp"
-#include "session.hpp"
 
 namespace antipode::cli {
 

@@ -2,9 +2,9 @@
 
 #include "antipode/bt/loader.hpp"
 #include "antipode/core/atomic_file.hpp"
+#include "antipode/evaluation/exit_codes.hpp"
+#include "antipode/evaluation/session.hpp"
 #include "commands.hpp"
-#include "exit_codes.hpp"
-#include "session.hpp"
 
 namespace antipode::cli {
 

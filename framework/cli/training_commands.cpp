@@ -11,13 +11,18 @@
 #include "antipode/core/binary_file.hpp"
 #include "antipode/core/error.hpp"
 #include "antipode/core/shipped_data.hpp"
-#include "bench_report.hpp"
+#include "antipode/evaluation/bench_report.hpp"
+#include "antipode/evaluation/exit_codes.hpp"
+#include "antipode/evaluation/progress_bar.hpp"
+#include "antipode/evaluation/session.hpp"
 #include "commands.hpp"
-#include "exit_codes.hpp"
-#include "progress_bar.hpp"
-#include "session.hpp"
 
 namespace antipode::cli {
+
+using evaluation::attach_progress_bar;
+using evaluation::machine_json;
+using evaluation::progress_wanted;
+using evaluation::ProgressBar;
 namespace {
 
 // Runs `tree_path` with `entries` filled from the command's arguments; a progress bar on a
