@@ -87,6 +87,9 @@ int plugins_command();
 int check_plugin_command(const std::string& library);
 /// `antipode plugins --write-index DIR`: writes DIR's plugin index (plugin_index.hpp).
 int write_index_command(const std::string& directory);
+struct ViewOptions;
+/// `antipode view`: writes the page (view_page.hpp) and opens it with --open.
+int view_command(const ViewOptions& options);
 /// Lists every node type, or (when `type` is not empty) the ports of one.
 int nodes_command(const std::string& type);
 

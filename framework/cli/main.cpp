@@ -10,6 +10,7 @@
 #include "antipode/evaluation/exit_codes.hpp"
 #include "bench_commands.hpp"
 #include "commands.hpp"
+#include "view_page.hpp"
 
 namespace {
 
@@ -60,6 +61,7 @@ constexpr const char* kExamples = R"(Examples:
   antipode bench clutter --shard 2/4 --report shard2.json
   antipode bench merge shard*.json --report clutter.json
   antipode report iso.json clutter.json --out results.md --notes notes.md
+  antipode view ../shared/data/clouds/table_mug.pcd grasps.json --out view.html
   antipode bench reach --ik-poses 10000 --scenes 100 --report reach.json
   antipode train --out my.model --dataset examples.data
   antipode eval-classifier --model my.model --report eval.json
@@ -83,6 +85,7 @@ struct Commands {
   antipode::evaluation::ClutterBenchOptions clutter;
   antipode::evaluation::BenchMergeOptions merge;
   antipode::evaluation::ReportOptions report;
+  antipode::cli::ViewOptions view;
   std::vector<std::string> validate_paths;
   std::string node_type;        ///< `antipode nodes [TYPE]`
   std::string check_library;    ///< `antipode plugins --check LIB`
@@ -311,6 +314,17 @@ void add_bench(CLI::App& app, Commands& commands) {
   merge->add_option("--report", commands.merge.report_path, "Write the merged report as JSON");
 }
 
+void add_view(CLI::App& app, antipode::cli::ViewOptions& o) {
+  CLI::App* view = app.add_subcommand(
+      "view", "Write one offline HTML page showing a cloud and its hands in 3D (docs/view.md)");
+  view->add_option("inputs", o.inputs, "A cloud (.pcd, .ply) and a grasps file (.json)")
+      ->required();
+  view->add_option("--out", o.out_path, "The page to write")->capture_default_str();
+  view->add_option("--gripper", o.gripper_path,
+                   "Gripper file the hands are drawn with (default: Baxter's)");
+  view->add_flag("--open", o.open, "Open the page in the desktop's browser (xdg-open)");
+}
+
 void add_report(CLI::App& app, antipode::evaluation::ReportOptions& o) {
   CLI::App* report = app.add_subcommand(
       "report", "Write the results report (markdown and PNG charts) from bench reports");
@@ -359,6 +373,7 @@ int dispatch(const CLI::App& app, const Commands& commands) {
     return antipode::cli::bench_isolation_command(commands.isolation);
   }
   if (app.got_subcommand("report")) return antipode::cli::report_command(commands.report);
+  if (app.got_subcommand("view")) return antipode::cli::view_command(commands.view);
   if (app.got_subcommand("plugins")) {
     if (!commands.index_directory.empty())
       return antipode::cli::write_index_command(commands.index_directory);
@@ -386,6 +401,7 @@ int main(int argc, char** argv) {
   add_outcomes(app, commands);
   add_bench(app, commands);
   add_report(app, commands.report);
+  add_view(app, commands.view);
   CLI::App* validate = app.add_subcommand(
       "validate", "Check tree files without running them (the first error stops)");
   validate->add_option("trees", commands.validate_paths, "YAML tree files")->required();
