@@ -42,6 +42,9 @@ struct DetectOptions {
   /// how many of the grasps lie on objects: the selected ones with --top or --per-object, else
   /// the 12 best.
   bool explain = false;
+  /// Also write to --out the hands a stage dropped, each with its reason (the tree's entry
+  /// include_rejected).
+  bool rejected = false;
   std::string camera_pose;  ///< "x y z qw qx qy qz" or an extrinsics file; "" = none
   std::string frame;        ///< the output frame's name ("": base with a camera pose, else sensor)
   int top = 0;              ///< select at most this many grasps (0: no selection unless per_object)

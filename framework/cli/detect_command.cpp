@@ -31,6 +31,7 @@ std::vector<std::string> detect_entries(const DetectOptions& options,
   if (frame.empty()) frame = pose ? (pose->frame.empty() ? "base" : pose->frame) : "sensor";
   entries.push_back("frame=" + frame);
   if (pose) entries.push_back("camera_pose=" + pose->port_text());
+  if (options.rejected) entries.emplace_back("include_rejected=true");
   return entries;
 }
 
@@ -165,6 +166,8 @@ int detect_command(const DetectOptions& options) {
     if (!path->empty()) check_output_path(*path);  // before the work, and before either is written
   std::optional<CameraPose> pose;
   if (!options.camera_pose.empty()) pose = read_camera_pose(options.camera_pose);
+  if (options.rejected && options.out_path.empty())
+    throw Error("--rejected: the rejected hands are written to --out, which names no file");
   const std::vector<std::string> entries = detect_entries(options, pose);
   const TreeRunSettings settings = detect_settings(options, pose.has_value());
   Session session = open_session_for(options.tree_path, entries, settings);

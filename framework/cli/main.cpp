@@ -155,6 +155,9 @@ void add_detect(CLI::App& app, Commands& commands) {
                    "Print the support and objects found, the hands each stage kept per object "
                    "and how many of the grasps lie on objects (the selected ones with --top or "
                    "--per-object, else the 12 best)");
+  detect->add_flag("--rejected", options.rejected,
+                   "Also write to --out the hands a stage dropped, each with its reason "
+                   "(antipode view colours and filters them)");
   add_tree_run_options(*detect, options.settings);
 }
 

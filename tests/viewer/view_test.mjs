@@ -164,15 +164,22 @@ try {
   assert.ok(after < 0 || (hands[after].rejection || 'accepted') !== reason);
   await page.close();
 
-  // 4. A real detection: every hand of `detect --out` is on the page.
+  // 4. A real detection with its rejected hands: every hand of `detect --out` is on the page,
+  // and the filters list the stages' reasons.
   const cloud = join(args.data, 'clouds', 'table_mug.pcd');
-  const detect = antipode('detect', cloud, '--out', file('mug.json'), '--set', 'sampler.samples=300');
+  const detect = antipode('detect', cloud, '--out', file('mug.json'), '--rejected',
+                          '--set', 'sampler.samples=300');
   assert.equal(detect.code, 0, detect.out);
-  const count = JSON.parse(readFileSync(file('mug.json'), 'utf8')).hands.length;
+  const found = JSON.parse(readFileSync(file('mug.json'), 'utf8')).hands;
+  const count = found.length;
+  const reasons = new Set(found.map((h) => h.rejection || 'accepted'));
+  assert.ok(reasons.has('accepted') && reasons.size > 1, [...reasons].join(', '));
   assert.equal(antipode('view', cloud, file('mug.json'), '--out', file('mug.html')).code, 0);
   const mug = await openPage(browser, file('mug.html'));
   assert.equal(await mug.evaluate(() => window.antipodeView.hands), count);
   assert.ok(count > 0);
+  const listed = await mug.$$eval('#reasons input', (inputs) => inputs.map((i) => i.dataset.value));
+  assert.deepEqual(new Set(listed), reasons);
   assert.ok((await drawnPixels(mug)) > 1000, 'the mug view is blank');
   await mug.close();
 } finally {
