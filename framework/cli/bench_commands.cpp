@@ -17,7 +17,7 @@ using evaluation::kExitSuccess;
 using evaluation::kExitTreeFailed;
 
 // Writes `report` to `path` unless it is "" (the report's path was checked before the run).
-void write_report(const std::string& path, const nlohmann::ordered_json& report) {
+void write_if_named(const std::string& path, const nlohmann::ordered_json& report) {
   if (!path.empty()) evaluation::write_report(std::cout, path, report);
 }
 
@@ -36,7 +36,7 @@ int stopped_or(Bench bench) {
 int bench_isolation_command(const evaluation::IsolationBenchOptions& options) {
   return stopped_or([&] {
     const auto report = evaluation::run_isolation_bench(options);
-    write_report(options.report_path, report);
+    write_if_named(options.report_path, report);
     // An attempt whose tree raised an error measured nothing: the bench must not pass for one.
     return evaluation::has_errors(report) ? kExitInternalError : kExitSuccess;
   });
@@ -45,18 +45,18 @@ int bench_isolation_command(const evaluation::IsolationBenchOptions& options) {
 int bench_clutter_command(const evaluation::ClutterBenchOptions& options) {
   return stopped_or([&] {
     const auto report = evaluation::run_clutter_bench(options);
-    write_report(options.report_path, report);
+    write_if_named(options.report_path, report);
     return report.at("summary").at("errors").get<int>() > 0 ? kExitInternalError : kExitSuccess;
   });
 }
 
 int bench_reach_command(const evaluation::ReachBenchOptions& options) {
-  write_report(options.report_path, evaluation::run_reach_bench(options));
+  write_if_named(options.report_path, evaluation::run_reach_bench(options));
   return kExitSuccess;
 }
 
 int bench_merge_command(const evaluation::BenchMergeOptions& options) {
-  write_report(options.report_path, evaluation::run_bench_merge(options));
+  write_if_named(options.report_path, evaluation::run_bench_merge(options));
   return kExitSuccess;
 }
 

@@ -7,7 +7,6 @@ extern "C" {
 
 #include <algorithm>
 #include <cctype>
-#include <cstdint>
 #include <filesystem>
 #include <vector>
 
@@ -57,21 +56,8 @@ Json cloud_json(const std::string& path) {
   std::vector<float> xyz;
   xyz.reserve(3 * cloud.points_m.size());
   for (const Eigen::Vector3f& p : cloud.points_m) xyz.insert(xyz.end(), {p.x(), p.y(), p.z()});
-  Json out = {{"count", cloud.points_m.size()}, {"points", base64(xyz.data(), 4 * xyz.size())}};
-  // A point's view: the lowest view its mask names (a voxelised two-view cloud may name both).
-  if (cloud.view_origins_m.size() > 1 && cloud.view_origins_m.size() <= 8) {
-    std::vector<std::uint8_t> views(cloud.view_masks.size());
-    for (std::size_t i = 0; i < views.size(); ++i)
-      views[i] = std::uint8_t(__builtin_ctz(cloud.view_masks[i] | 0x100u));
-    out["views"] = base64(views.data(), views.size());
-    Json names = Json::array();
-    for (std::size_t v = 0; v < cloud.view_origins_m.size(); ++v)
-      names.push_back("view " + std::to_string(v));
-    out["view_names"] = names;
-  } else {
-    out["views"] = nullptr;
-  }
-  return out;
+  // load_cloud gives a file's cloud one view: the page colours it by height, not by view.
+  return {{"count", cloud.points_m.size()}, {"points", base64(xyz.data(), 4 * xyz.size())}};
 }
 
 Json gripper_json(const std::string& path) {
@@ -107,7 +93,7 @@ Json hands_json(const Json& grasps, const std::string& path) {
     vector_of("quaternion_xyzw", 4);
     Json kept = Json::object();
     for (const char* key : {"position_m", "quaternion_xyzw", "approach", "width_m", "open_width_m",
-                            "score", "rank", "object", "label", "rejection", "attempt"})
+                            "score", "rank", "object", "label", "rejection"})
       if (hand.contains(key)) kept[key] = hand[key];
     out.push_back(std::move(kept));
   }
@@ -149,8 +135,9 @@ Json view_data(const ViewOptions& options) {
 }
 
 std::string viewer_template_path() {
-  const fs::path installed = fs::path(shipped_data_dir()) / "viewer" / "antipode-view.html";
-  if (!shipped_data_dir().empty() && fs::is_regular_file(installed)) return installed.string();
+  const std::string shipped = shipped_data_dir();
+  const fs::path installed = fs::path(shipped) / "viewer" / "antipode-view.html";
+  if (!shipped.empty() && fs::is_regular_file(installed)) return installed.string();
   std::string built = ANTIPODE_VIEWER_PAGE;
   if (!built.empty() && fs::is_regular_file(built)) return built;
   if (built.empty())

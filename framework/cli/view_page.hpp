@@ -21,9 +21,8 @@ struct ViewOptions {
 };
 
 /// The page's data (docs/view.md): "title", "frame", "cloud" ({"count", "points": base64 of
-/// little-endian float32 x, y, z per point, "views": base64 of one byte per point or null,
-/// "view_names"}), "gripper" (its geometry, metres) and "hands" (the grasps file's hands, with
-/// the fields the page shows). Throws antipode::Error naming the input at fault.
+/// little-endian float32 x, y, z per point}), "gripper" (its geometry, metres) and "hands" (the
+/// grasps file's hands, with the fields the page shows). Throws antipode::Error naming the input at fault.
 nlohmann::ordered_json view_data(const ViewOptions& options);
 
 /// The page template built with the viewer (viewer/): the installation's

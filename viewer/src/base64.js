@@ -13,8 +13,3 @@ export function decodeFloat32(text) {
   const bytes = bytesOf(text);
   return new Float32Array(bytes.buffer, 0, bytes.length / 4);
 }
-
-/** Uint8Array of the base64 text of bytes. */
-export function decodeUint8(text) {
-  return bytesOf(text);
-}

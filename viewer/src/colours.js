@@ -1,5 +1,5 @@
 // Colours: a perceptual ramp for scores and heights (low: dark blue, high: yellow) and a
-// palette for categories (views, rejection reasons, objects).
+// palette for categories (rejection reasons, objects).
 
 import * as THREE from 'three';
 

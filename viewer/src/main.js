@@ -5,7 +5,7 @@
 import * as THREE from 'three';
 import { OrbitControls } from 'three/examples/jsm/controls/OrbitControls.js';
 
-import { decodeFloat32, decodeUint8 } from './base64.js';
+import { decodeFloat32 } from './base64.js';
 import { buildPanel } from './panel.js';
 import { handMatrices } from './hand_geometry.js';
 import { categoryColour, scoreColour } from './colours.js';
@@ -28,7 +28,6 @@ scene.add(sun);
 // ---- the cloud ----
 const cloud = data.cloud;
 const positions = decodeFloat32(cloud.points);
-const views = cloud.views ? decodeUint8(cloud.views) : null;
 const cloudGeometry = new THREE.BufferGeometry();
 cloudGeometry.setAttribute('position', new THREE.BufferAttribute(positions, 3));
 const cloudColours = new Float32Array(positions.length);
@@ -59,8 +58,7 @@ function colourCloud(mode) {
   }
   const c = new THREE.Color();
   for (let i = 0; i < count; i++) {
-    if (mode === 'view' && views) c.copy(categoryColour(views[i]));
-    else if (mode === 'height') c.copy(scoreColour((height(i) - lo) / Math.max(hi - lo, 1e-9)));
+    if (mode === 'height') c.copy(scoreColour((height(i) - lo) / Math.max(hi - lo, 1e-9)));
     else c.setRGB(0.45, 0.45, 0.45);
     cloudColours[3 * i] = c.r;
     cloudColours[3 * i + 1] = c.g;

@@ -48,7 +48,7 @@ function countsOf(values) {
 const number = (v, digits = 4) => (typeof v === 'number' ? v.toFixed(digits) : String(v));
 const vector = (v) => (Array.isArray(v) ? '[' + v.map((x) => number(x)).join(', ') + ']' : '-');
 
-// One line per fact of `hand`, and its attempt record when it was executed.
+// One line per fact of `hand`.
 function describe(hand, index) {
   const lines = [
     ['hand', String(index)],
@@ -62,10 +62,6 @@ function describe(hand, index) {
   if (hand.object !== undefined) lines.push(['object', String(hand.object)]);
   if (hand.label !== undefined) lines.push(['label', hand.label]);
   lines.push(['rejection', hand.rejection || 'none (accepted)']);
-  if (hand.attempt) {
-    for (const [key, value] of Object.entries(hand.attempt))
-      lines.push(['attempt ' + key, typeof value === 'object' ? JSON.stringify(value) : String(value)]);
-  }
   return lines;
 }
 
@@ -75,20 +71,19 @@ function describe(hand, index) {
  */
 export function buildPanel(root, data, hands, reasonOf, draw) {
   root.appendChild(element('h1', {}, data.title || 'antipode view'));
-  const views = data.cloud.view_names || [];
   root.appendChild(
     element(
       'p',
       { id: 'summary' },
       `${data.cloud.count} points` +
-        (views.length ? ` (${views.join(', ')})` : '') +
         `, ${hands.length} hands, frame ${data.frame}` +
         (data.gripper.name ? `, ${data.gripper.name}` : ''),
     ),
   );
-  const cloudModes = [['height', 'height'], ['grey', 'grey']];
-  if (data.cloud.views) cloudModes.unshift(['view', 'view']);
-  const cloudMode = select(root, 'cloud-colour', 'cloud colour', cloudModes);
+  const cloudMode = select(root, 'cloud-colour', 'cloud colour', [
+    ['height', 'height'],
+    ['grey', 'grey'],
+  ]);
   const handMode = select(root, 'hand-colour', 'hand colour', [
     ['score', 'score'],
     ['reason', 'rejection reason'],
