@@ -159,6 +159,17 @@ void print_explanation(const HandSet* sampled, const HandSet* screened, const Ha
             << " grasps: " << on_objects << " on objects\n";
 }
 
+// Where to see every hand in 3D, with why each dropped one was dropped (docs/viewer.md).
+void print_view_hint(const DetectOptions& options) {
+  const std::string out = options.out_path.empty() ? "grasps.json" : options.out_path;
+  std::cout << "see every hand in 3D: ";
+  if (options.out_path.empty())
+    std::cout << "add --out " << out << " --rejected, then ";
+  else if (!options.rejected)
+    std::cout << "add --rejected, then ";
+  std::cout << "antipode view " << options.cloud_path << " " << out << " --open\n";
+}
+
 }  // namespace
 
 int detect_command(const DetectOptions& options) {
@@ -181,6 +192,7 @@ int detect_command(const DetectOptions& options) {
     const HandSet* written = hand_set(tree, options.hands_entry);
     print_explanation(hand_set(tree, "hands"), hand_set(tree, "screened"),
                       classified != nullptr ? classified : written, ranked ? written : nullptr, 12);
+    print_view_hint(options);
   }
   std::cout << result_line(options.tree_path, status, tracing) << "\n";
   return status == bt::Status::kSuccess ? kExitSuccess : kExitTreeFailed;

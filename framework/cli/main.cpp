@@ -62,6 +62,7 @@ constexpr const char* kExamples = R"(Examples:
   antipode bench merge shard*.json --report clutter.json
   antipode report iso.json clutter.json --out results.md --notes notes.md
   antipode view ../shared/data/clouds/table_mug.pcd grasps.json --out view.html
+  antipode view clutter.json --selections sel --pictures pics --out run.html
   antipode bench reach --ik-poses 10000 --scenes 100 --report reach.json
   antipode train --out my.model --dataset examples.data
   antipode eval-classifier --model my.model --report eval.json
@@ -319,12 +320,26 @@ void add_bench(CLI::App& app, Commands& commands) {
 
 void add_view(CLI::App& app, antipode::cli::ViewOptions& o) {
   CLI::App* view = app.add_subcommand(
-      "view", "Write one offline HTML page showing a cloud and its hands in 3D (docs/view.md)");
-  view->add_option("inputs", o.inputs, "A cloud (.pcd, .ply) and a grasps file (.json)")
+      "view",
+      "Write one offline HTML page showing a detection, a clear-the-box run or a tree's trace "
+      "in 3D (docs/viewer.md)");
+  view->add_option("inputs", o.inputs,
+                   "A cloud (.pcd, .ply) and its grasps file (.json), or a clear-the-box report "
+                   "(.json); and/or a trace (.jsonl)")
       ->required();
   view->add_option("--out", o.out_path, "The page to write")->capture_default_str();
   view->add_option("--gripper", o.gripper_path,
                    "Gripper file the hands are drawn with (default: Baxter's)");
+  view->add_option("--selections", o.selections_dir,
+                   "With a report: the folder its bench's --selections filled (each cycle's "
+                   "cloud, hands and objects)");
+  view->add_option("--pictures", o.pictures_dir,
+                   "With a report: the folder its bench's --pictures filled");
+  view->add_option("--voxel", o.voxel_m,
+                   "With a report: thin each cycle's cloud to one point per voxel of this edge "
+                   "(m; 0 keeps every point)")
+      ->capture_default_str()
+      ->check(CLI::Range(0.0, 0.1));
   view->add_flag("--open", o.open, "Open the page in the desktop's browser (xdg-open)");
 }
 

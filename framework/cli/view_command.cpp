@@ -50,8 +50,16 @@ int view_command(const ViewOptions& options) {
     out << page;
     if (!out) throw Error("view: cannot write " + options.out_path);
   });
-  std::cout << "view: " << options.out_path << " (" << data["cloud"]["count"].get<std::size_t>()
-            << " points, " << data["hands"].size() << " hands, " << page.size() / 1024 << " KiB)\n";
+  std::size_t points = 0, hands = 0;
+  for (const auto& scene : data["scenes"]) {
+    if (scene.contains("cloud")) points += scene["cloud"]["count"].get<std::size_t>();
+    if (scene.contains("hands")) hands += scene["hands"]["count"].get<std::size_t>();
+  }
+  std::cout << "view: " << options.out_path << " (" << data["scenes"].size() << " scene(s), "
+            << points << " points, " << hands << " hands";
+  if (data.contains("trace"))
+    std::cout << ", " << data["trace"]["events"].size() << " status changes";
+  std::cout << ", " << page.size() / 1024 << " KiB)\n";
   if (options.open) open_in_browser(options.out_path);
   return kExitSuccess;
 }

@@ -1,10 +1,5 @@
 #include "view_page.hpp"
 
-// libb64's C header declares its functions without C linkage for C++.
-extern "C" {
-#include <b64/cencode.h>
-}
-
 #include <algorithm>
 #include <cctype>
 #include <filesystem>
@@ -16,6 +11,9 @@ extern "C" {
 #include "antipode/evaluation/json_file.hpp"
 #include "antipode/io/gripper_file.hpp"
 #include "antipode/io/load_cloud.hpp"
+#include "view_encode.hpp"
+#include "view_run.hpp"
+#include "view_trace.hpp"
 
 namespace antipode::cli {
 namespace {
@@ -25,39 +23,11 @@ using Json = nlohmann::ordered_json;
 
 constexpr const char* kDataMark = "<!--antipode-data-->";
 
-// Base64 of `size` bytes (libb64, fed in chunks that its int lengths hold), without the line
-// breaks libb64 puts every 72 characters.
-std::string base64(const void* bytes, std::size_t size) {
-  constexpr std::size_t kChunk = std::size_t(3) << 20;
-  std::vector<char> code(2 * kChunk);  // a chunk's code: 4/3 of it, and a break per 54 bytes
-  std::string text;
-  text.reserve(4 * (size / 3 + 1));
-  base64_encodestate state;
-  base64_init_encodestate(&state);
-  const char* in = static_cast<const char*>(bytes);
-  for (std::size_t done = 0; done < size; done += kChunk) {
-    const int n = int(std::min(kChunk, size - done));
-    text.append(code.data(), std::size_t(base64_encode_block(in + done, n, code.data(), &state)));
-  }
-  text.append(code.data(), std::size_t(base64_encode_blockend(code.data(), &state)));
-  text.erase(std::remove(text.begin(), text.end(), '\n'), text.end());
-  return text;
-}
-
 std::string extension_of(const std::string& path) {
   std::string extension = fs::path(path).extension().string();
   std::transform(extension.begin(), extension.end(), extension.begin(),
                  [](unsigned char c) { return char(std::tolower(c)); });
   return extension;
-}
-
-Json cloud_json(const std::string& path) {
-  const Cloud cloud = load_cloud(path);
-  std::vector<float> xyz;
-  xyz.reserve(3 * cloud.points_m.size());
-  for (const Eigen::Vector3f& p : cloud.points_m) xyz.insert(xyz.end(), {p.x(), p.y(), p.z()});
-  // load_cloud gives a file's cloud one view: the page colours it by height, not by view.
-  return {{"count", cloud.points_m.size()}, {"points", base64(xyz.data(), 4 * xyz.size())}};
 }
 
 Json gripper_json(const std::string& path) {
@@ -72,64 +42,85 @@ Json gripper_json(const std::string& path) {
           {"max_aperture_m", g.max_aperture_m}};
 }
 
-// The hands of a grasps file, with what the page draws and shows.
-Json hands_json(const Json& grasps, const std::string& path) {
-  const auto hands = grasps.find("hands");
-  if (!grasps.is_object() || hands == grasps.end() || !hands->is_array())
-    throw Error(path +
-                ": not a grasps file (no \"hands\" list; `antipode detect --out` and "
-                "WriteGrasps write one)");
-  Json out = Json::array();
-  for (std::size_t i = 0; i < hands->size(); ++i) {
-    const Json& hand = (*hands)[i];
-    const auto vector_of = [&](const char* key, std::size_t size) {
-      const auto entry = hand.find(key);
-      if (entry == hand.end() || !entry->is_array() || entry->size() != size ||
-          !std::all_of(entry->begin(), entry->end(), [](const Json& v) { return v.is_number(); }))
-        throw Error(path + ": hand " + std::to_string(i) + ": \"" + key + "\" is not " +
-                    std::to_string(size) + " numbers");
-    };
-    vector_of("position_m", 3);
-    vector_of("quaternion_xyzw", 4);
-    Json kept = Json::object();
-    for (const char* key : {"position_m", "quaternion_xyzw", "approach", "width_m", "open_width_m",
-                            "score", "rank", "object", "label", "rejection"})
-      if (hand.contains(key)) kept[key] = hand[key];
-    out.push_back(std::move(kept));
+// The inputs sorted by kind: at most one of each, a grasps file only with a cloud, a report
+// with neither.
+struct Inputs {
+  std::string cloud, grasps, report, trace;
+};
+
+const char* kAccepted =
+    "a cloud (.pcd, .ply), a grasps file or a clear-the-box report (.json), or a trace "
+    "(.jsonl)";
+
+Inputs sort_inputs(const std::vector<std::string>& paths) {
+  Inputs in;
+  for (const std::string& path : paths) {
+    const std::string extension = extension_of(path);
+    std::string* slot = nullptr;
+    std::string kind;
+    if (extension == ".pcd" || extension == ".ply") {
+      slot = &in.cloud, kind = "cloud";
+    } else if (extension == ".jsonl") {
+      slot = &in.trace, kind = "trace";
+    } else if (extension == ".json") {
+      const bool report = is_clutter_report(evaluation::read_json_file(path, "a grasps file"));
+      slot = report ? &in.report : &in.grasps, kind = report ? "report" : "grasps file";
+    } else {
+      throw Error("view: '" + path + "': not " + kAccepted);
+    }
+    if (!slot->empty()) {
+      std::string message = "view: '" + path + "': a second ";
+      message.append(kind).append(" (after '").append(*slot);
+      throw Error(message.append("'); give one cloud and at most one grasps file, or one report"));
+    }
+    *slot = path;
   }
-  return out;
+  if (!in.report.empty() && !in.cloud.empty())
+    throw Error("view: '" + in.cloud + "' with the report '" + in.report +
+                "': a report's cycles bring their own clouds (--selections DIR)");
+  if (!in.grasps.empty() && in.cloud.empty())
+    throw Error("view: give the cloud (.pcd or .ply) the hands of '" + in.grasps +
+                "' were found in");
+  if (in.cloud.empty() && in.report.empty() && in.trace.empty())
+    throw Error(std::string("view: give ") + kAccepted + " to show");
+  return in;
+}
+
+// One scene: the cloud and, when given, the hands found in it.
+Json detection_scene(const Inputs& in) {
+  Json scene = {{"name", fs::path(in.cloud).filename().string()}, {"frame", "sensor"}};
+  scene["cloud"] = cloud_json(load_cloud(in.cloud), 0.0);
+  if (!in.grasps.empty()) {
+    const Json grasps = evaluation::read_json_file(in.grasps, "a grasps file");
+    scene["hands"] = hand_table(grasps, in.grasps);
+    if (grasps.contains("frame") && grasps["frame"].is_string()) scene["frame"] = grasps["frame"];
+    scene["name"] =
+        scene["name"].get<std::string>() + " + " + fs::path(in.grasps).filename().string();
+  }
+  return scene;
 }
 
 }  // namespace
 
 Json view_data(const ViewOptions& options) {
-  std::string cloud_path, grasps_path;
-  for (const std::string& input : options.inputs) {
-    const std::string extension = extension_of(input);
-    std::string& slot = extension == ".json" ? grasps_path : cloud_path;
-    if (extension != ".json" && extension != ".pcd" && extension != ".ply")
-      throw Error("view: '" + input +
-                  "': not a cloud (.pcd, .ply) or a grasps file (.json from `antipode detect "
-                  "--out`)");
-    if (!slot.empty()) {
-      std::string message = "view: '" + input + "': a second ";
-      message.append(extension == ".json" ? "grasps file" : "cloud").append(" (after '");
-      throw Error(message.append(slot).append("'); give one cloud and at most one grasps file"));
-    }
-    slot = input;
-  }
-  if (cloud_path.empty()) throw Error("view: give a cloud (.pcd or .ply) to show");
-  Json data = {{"title", fs::path(cloud_path).filename().string()}, {"frame", "sensor"}};
-  data["cloud"] = cloud_json(cloud_path);
+  const Inputs in = sort_inputs(options.inputs);
+  if (in.report.empty() && !(options.selections_dir.empty() && options.pictures_dir.empty()))
+    throw Error("view: --selections and --pictures go with a clear-the-box report");
+  Json data = {{"title", ""}, {"gripper", Json()}, {"scenes", Json::array()}};
   data["gripper"] = gripper_json(
       options.gripper_path.empty() ? "robots/grippers/baxter_electric.yaml" : options.gripper_path);
-  data["hands"] = Json::array();
-  if (!grasps_path.empty()) {
-    const Json grasps = evaluation::read_json_file(grasps_path, "a grasps file");
-    data["hands"] = hands_json(grasps, grasps_path);
-    if (grasps.contains("frame") && grasps["frame"].is_string()) data["frame"] = grasps["frame"];
-    data["title"] =
-        data["title"].get<std::string>() + " + " + fs::path(grasps_path).filename().string();
+  if (!in.cloud.empty()) {
+    data["scenes"].push_back(detection_scene(in));
+    data["title"] = data["scenes"][0]["name"];
+  }
+  if (!in.report.empty()) {
+    add_run({in.report, options.selections_dir, options.pictures_dir, options.voxel_m}, data);
+    data["title"] = fs::path(in.report).filename().string();
+  }
+  if (!in.trace.empty()) {
+    data["trace"] = trace_json(in.trace);
+    const std::string title = data["title"];
+    data["title"] = title + (title.empty() ? "" : " + ") + fs::path(in.trace).filename().string();
   }
   return data;
 }

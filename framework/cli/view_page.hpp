@@ -1,6 +1,6 @@
 #pragma once
 // `antipode view`: one self-contained HTML page that shows a cloud and the hands found in it
-// in 3D (three.js), with the data embedded: no server, no network (docs/view.md).
+// in 3D (three.js), with the data embedded: no server, no network (docs/viewer.md).
 
 #include <string>
 #include <vector>
@@ -10,19 +10,27 @@
 namespace antipode::cli {
 
 struct ViewOptions {
-  /// A cloud (.pcd or .ply) and, optionally, a grasps file (.json, from `detect --out` or
-  /// WriteGrasps) whose hands were found in that cloud.
+  /// What to show (docs/viewer.md): a cloud (.pcd, .ply) with at most one grasps file (.json from
+  /// `detect --out` or WriteGrasps) found in it; or a clear-the-box report (.json from `bench
+  /// clutter --report`); and, with either or alone, a trace of a tree run (.jsonl from `run
+  /// --trace`).
   std::vector<std::string> inputs;
   std::string out_path = "view.html";
   /// The gripper file the hands are drawn with ("" = Baxter's,
   /// robots/grippers/baxter_electric.yaml).
   std::string gripper_path;
+  /// With a report: the folders its bench's --selections and --pictures filled ("" = none).
+  std::string selections_dir;
+  std::string pictures_dir;
+  /// With a report: each cycle's cloud thinned to one point per voxel of this edge (0 = all).
+  double voxel_m = 0.005;
   bool open = false;  ///< open the page in the desktop's browser (xdg-open) when written
 };
 
-/// The page's data (docs/view.md): "title", "frame", "cloud" ({"count", "points": base64 of
-/// little-endian float32 x, y, z per point}), "gripper" (its geometry, metres) and "hands" (the
-/// grasps file's hands, with the fields the page shows). Throws antipode::Error naming the input at fault.
+/// The page's data (docs/viewer.md, "What is in the page"): "title", "gripper" (its geometry,
+/// metres), "scenes" (each a cloud, hands, objects and what happened there), and "run" (a
+/// report's runs and cycles) and "trace" (a tree run's nodes and status changes) when given.
+/// Throws antipode::Error naming the input at fault.
 nlohmann::ordered_json view_data(const ViewOptions& options);
 
 /// The page template built with the viewer (viewer/): the installation's

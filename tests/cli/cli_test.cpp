@@ -505,6 +505,11 @@ TEST_F(DetectTest, ExplainNamesTheSupportTheObjectsAndWhereTheBestGraspsLie) {
       "rejected by the screen or the classifier: [0-9, a-z]*[0-9]+ low score");
   EXPECT_TRUE(std::regex_search(result.out, rejected)) << result.out;
   EXPECT_NE(result.out.find("the 12 best grasps: 12 on objects"), std::string::npos) << result.out;
+  // It points to the page that shows every hand and why each was dropped.
+  EXPECT_NE(result.out.find("see every hand in 3D: add --rejected, then antipode view " + mug +
+                            " " + (dir_ / "g.json").string() + " --open"),
+            std::string::npos)
+      << result.out;
   std::ifstream in(dir_ / "g.json");
   const auto document = nlohmann::json::parse(in);
   for (const auto& hand : document["hands"]) EXPECT_EQ(hand["object"], 0);

@@ -381,8 +381,8 @@ TEST_F(ClutterBenchTest, PicturesShowEveryFailedAttempt) {
 }
 
 // --selections writes, for every cycle that chose a grasp, what the selection kept - in rank
-// order, the executed grasp among them - and what it dropped, with the reasons; the run is the
-// same without.
+// order, the executed grasp among them - and what it dropped, with the reasons; and for every
+// cycle the cloud it captured and where the objects lay. The run is the same without.
 TEST_F(ClutterBenchTest, SelectionsAreWrittenForEveryAttempt) {
   const std::string folder = file("selections");
   const std::string args = "--runs 1 --objects-per-run 3 --seed 2001";
@@ -392,9 +392,12 @@ TEST_F(ClutterBenchTest, SelectionsAreWrittenForEveryAttempt) {
   const auto& cycles = r["run_records"][0]["cycles"];
   std::set<std::string> expected;
   for (std::size_t c = 0; c < cycles.size(); ++c) {
+    char stem[64];
+    std::snprintf(stem, sizeof stem, "seed-2001-cycle-%02zu", c + 1);
+    expected.insert(std::string(stem) + ".pcd");
+    expected.insert(std::string(stem) + "-objects.json");
     if (cycles[c]["outcome"] == "no grasp found") continue;  // no selection to write
-    char name[64];
-    std::snprintf(name, sizeof name, "seed-2001-cycle-%02zu.json", c + 1);
+    const std::string name = std::string(stem) + ".json";
     expected.insert(name);
     std::ifstream in(folder + "/" + name);
     ASSERT_TRUE(in) << name;

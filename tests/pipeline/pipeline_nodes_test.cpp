@@ -7,12 +7,15 @@
 #include <fstream>
 #include <regex>
 
+#include <nlohmann/json.hpp>
+
 #include "antipode/bt/loader.hpp"
 #include "antipode/core/error.hpp"
 #include "antipode/geometry/hand_body.hpp"
 #include "antipode/interfaces/clearing_run.hpp"
 #include "antipode/interfaces/grasp_attempt.hpp"
 #include "antipode/interfaces/hand_set.hpp"
+#include "antipode/io/load_cloud.hpp"
 #include "antipode/plugin/plugin_host.hpp"
 
 namespace antipode {
@@ -361,6 +364,38 @@ TEST_F(PipelineNodesTest, ClearBoxPicksUntilTheCellHasNoObjectLeft) {
   EXPECT_EQ(lines[1].rfind("cycle 1: success (object 3); 2 left [", 0), 0u) << lines[1];
   EXPECT_EQ(lines[4], "stopped: the box is empty");
   EXPECT_EQ(lines[5], "cleared 3 of 3 objects; 3 of 3 attempts succeeded");
+}
+
+// With a selection prefix, each cycle may write the cloud it captured and where the cell's
+// objects lay beside its selection: the files `antipode view` shows a run from.
+TEST_F(PipelineNodesTest, ClearBoxNamesEachCyclesCloudAndObjectsFiles) {
+  const auto dir =
+      std::filesystem::temp_directory_path() / ("clear_box_files_" + std::to_string(::getpid()));
+  std::filesystem::create_directories(dir);
+  const std::string prefix = (dir / "run-").string();
+  const std::string child = std::string(R"(Sequence:
+          - WriteObjects: { cell: cell, file: "{objects_file}" }
+          - CaptureCloud: { cell: cell, cloud: "{cloud}" }
+          - WriteCloud: { cloud: "{cloud}", file: "{cloud_file}" }
+          )") + (std::string(kPickOne).substr(std::string(kPickOne).find("- SampleHands")));
+  const ClearingRun run =
+      run_clearing(load(clearing_tree("{ plugin: line_cell, objects: 3, points: 5 }",
+                                      "selection_prefix: \"" + prefix +
+                                          "\"\n      cloud_file: \"{cloud_file}\"\n"
+                                          "      objects_file: \"{objects_file}\"",
+                                      child)));
+  ASSERT_EQ(run.cycles.size(), 3u);
+  for (const char* cycle : {"01", "02", "03"}) {
+    const std::string stem = prefix + "cycle-" + cycle;
+    EXPECT_EQ(load_cloud(stem + ".pcd").size(), 5u) << stem;
+    std::ifstream objects(stem + "-objects.json");
+    const auto document = nlohmann::json::parse(objects);
+    EXPECT_EQ(document["frame"], "base");
+    EXPECT_TRUE(document["objects"].is_array() && document["objects"].empty())
+        << "the line cell knows no ground truth";
+  }
+  EXPECT_FALSE(std::filesystem::exists(prefix + "cycle-04.pcd"));
+  std::filesystem::remove_all(dir);
 }
 
 TEST_F(PipelineNodesTest, ClearBoxStopsAfterConsecutiveCyclesWithoutAGrasp) {

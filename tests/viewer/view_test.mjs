@@ -1,84 +1,31 @@
-// `antipode view` in Chromium: a page of 300,000 points and 5,000 hands loads offline (no
-// request leaves the page), draws, and answers a click on a hand with that hand's facts; the
-// filters hide hands; a real detection's page shows its hands; bad input is one error line.
-//   node view_test.mjs --cli ANTIPODE --node-modules DIR --chromium EXE --data DIR --work DIR
+// `antipode view` of detections in Chromium: a page of 300,000 points and 5,000 hands loads
+// offline (no request leaves the page), draws, and answers a click on a hand with that hand's
+// facts; the filters show and hide hands; the page of a real detection shows every hand of its
+// file, its chosen grasp's rank and score, and why each hand around it was dropped; bad input
+// is one error line.
 import assert from 'node:assert/strict';
-import { spawnSync } from 'node:child_process';
-import { mkdirSync, rmSync, writeFileSync, readFileSync } from 'node:fs';
-import { createRequire } from 'node:module';
-import { join, resolve } from 'node:path';
+import { readFileSync, writeFileSync } from 'node:fs';
+import { join } from 'node:path';
 
 import { writeCloud, writeGrasps } from '../../viewer/tools/synthetic_scene.mjs';
+import { antipode, args, drawnPixels, expectRefused, file, launch, openPage, rows } from './browser.mjs';
 
-const args = Object.fromEntries(
-  process.argv.slice(2).reduce((pairs, word, i, all) => {
-    if (word.startsWith('--')) pairs.push([word.slice(2), all[i + 1]]);
-    return pairs;
-  }, []),
-);
-const { chromium } = createRequire(join(resolve(args['node-modules']), 'x.js'))('playwright-core');
-rmSync(args.work, { recursive: true, force: true });
-mkdirSync(args.work, { recursive: true });
-const file = (name) => join(args.work, name);
-
-function antipode(...words) {
-  const run = spawnSync(args.cli, words, { encoding: 'utf8' });
-  return { code: run.status, out: run.stdout + run.stderr };
-}
-
-async function openPage(browser, path) {
-  const page = await browser.newPage({ viewport: { width: 1200, height: 800 } });
-  const outside = [];
-  page.on('request', (request) => {
-    const url = request.url();
-    if (!url.startsWith('file://') && !url.startsWith('data:') && !url.startsWith('blob:'))
-      outside.push(url);
-  });
-  const errors = [];
-  page.on('pageerror', (error) => errors.push(error.message));
-  await page.goto('file://' + path);
-  await page.waitForSelector('body[data-ready="true"]', { timeout: 60000 });
-  assert.deepEqual(errors, [], 'the page raised errors');
-  assert.deepEqual(outside, [], 'the page fetched something');
-  return page;
-}
-
-// Pixels of the 3D view that are not the background: something was drawn.
-const drawnPixels = (page) =>
-  page.evaluate(() => {
-    const gl = document.querySelector('#view canvas');
-    const c = document.createElement('canvas');
-    [c.width, c.height] = [gl.width, gl.height];
-    const g = c.getContext('2d');
-    g.drawImage(gl, 0, 0);
-    const pixels = g.getImageData(0, 0, c.width, c.height).data;
-    let drawn = 0;
-    for (let i = 0; i < pixels.length; i += 4) if (Math.abs(pixels[i] - 244) > 12) drawn++;
-    return drawn;
-  });
-
-const info = (page) =>
-  page.$$eval('#hand-info tr', (rows) =>
-    Object.fromEntries(rows.map((r) => [r.dataset.key, r.querySelector('td').textContent])),
-  );
-
-const browser = await chromium.launch({
-  executablePath: args.chromium,
-  args: ['--use-angle=swiftshader', '--enable-unsafe-swiftshader', '--no-sandbox'],
-});
+const browser = await launch();
 try {
-  // 1. The large page.
+  // 1. The large page. Its accepted hands are shown first; ticking every reason draws all.
   writeCloud(file('cloud.ply'), 300000);
   const hands = writeGrasps(file('grasps.json'), 5000);
   const made = antipode('view', file('cloud.ply'), file('grasps.json'), '--out', file('page.html'));
   assert.equal(made.code, 0, made.out);
-  assert.match(made.out, /300000 points, 5000 hands/);
+  assert.match(made.out, /1 scene\(s\), 300000 points, 5000 hands/);
   const page = await openPage(browser, file('page.html'));
   const view = await page.evaluate(() => ({ ...window.antipodeView }));
   assert.equal(view.points, 300000);
   assert.equal(view.hands, 5000);
   console.log(`300,000 points and 5,000 hands: ready ${view.loadMs.toFixed(0)} ms after navigation`);
+  for (const box of await page.$$('#reasons input:not(:checked)')) await box.click();
   assert.ok((await drawnPixels(page)) > 10000, 'the view is blank');
+  await page.screenshot({ path: file('large-page.jpg'), type: 'jpeg', quality: 80 });
 
   // 2. Clicking a hand shows the facts of the hand drawn there (the first palm in view).
   let picked = -1;
@@ -90,9 +37,9 @@ try {
   }
   assert.ok(picked >= 0, 'no hand could be clicked at its palm');
   await page.mouse.click(at[0], at[1]);
-  const shown = await info(page);
+  const shown = await rows(page, '#hand-info');
   assert.equal(shown.hand, String(picked));
-  assert.equal(shown.score, hands[picked].score.toFixed(4));
+  assert.equal(shown.score, Math.fround(hands[picked].score).toFixed(4));
   assert.equal(shown.object, String(hands[picked].object));
   assert.equal(shown.rejection, hands[picked].rejection || 'none (accepted)');
 
@@ -105,42 +52,66 @@ try {
   await page.close();
 
   // 4. A real detection with its rejected hands: every hand of `detect --out` is on the page,
-  // and the filters list the stages' reasons.
+  // the filters list the stages' reasons, and the test hook gives the chosen grasp's rank and
+  // score and each neighbour's reason as the file has them.
   const cloud = join(args.data, 'clouds', 'table_mug.pcd');
   const detect = antipode('detect', cloud, '--out', file('mug.json'), '--rejected',
                           '--set', 'sampler.samples=300');
   assert.equal(detect.code, 0, detect.out);
   const found = JSON.parse(readFileSync(file('mug.json'), 'utf8')).hands;
-  const count = found.length;
   const reasons = new Set(found.map((h) => h.rejection || 'accepted'));
   assert.ok(reasons.has('accepted') && reasons.size > 1, [...reasons].join(', '));
   assert.equal(antipode('view', cloud, file('mug.json'), '--out', file('mug.html')).code, 0);
   const mug = await openPage(browser, file('mug.html'));
-  assert.equal(await mug.evaluate(() => window.antipodeView.hands), count);
-  assert.ok(count > 0);
+  assert.equal(await mug.evaluate(() => window.antipodeView.hands), found.length);
   const listed = await mug.$$eval('#reasons input', (inputs) => inputs.map((i) => i.dataset.value));
   assert.deepEqual(new Set(listed), reasons);
   assert.ok((await drawnPixels(mug)) > 1000, 'the mug view is blank');
+
+  const best = found.findIndex((h) => h.rank === 1);
+  const chosen = await mug.evaluate(() => window.antipodeView.chosen());
+  assert.deepEqual(chosen, { index: best, rank: 1, score: Math.fround(found[best].score) });
+  // The file's hands within 2 cm of the chosen one, at the page's float32 precision.
+  const f = (v) => v.map(Math.fround);
+  const [x, y, z] = f(found[best].position_m);
+  const expected = found
+    .map((h, index) => {
+      const [u, v, w] = f(h.position_m);
+      return { index, distance: Math.hypot(u - x, v - y, w - z), rejection: h.rejection || 'accepted' };
+    })
+    .filter((n) => n.index !== best && n.distance <= 0.02);
+  const around = await mug.evaluate((i) => window.antipodeView.neighbours(i), best);
+  assert.ok(around.length > 0, 'no hand around the chosen grasp');
+  assert.deepEqual(
+    around.map((n) => [n.index, n.rejection]).sort((a, b) => a[0] - b[0]),
+    expected.map((n) => [n.index, n.rejection]),
+  );
+  console.log(`mug: chosen hand ${best} (score ${found[best].score.toFixed(3)}), ` +
+              `${around.length} hands within 2 cm: ${[...new Set(around.map((n) => n.rejection))].join(', ')}`);
+  // Clicking the chosen grasp's palm shows its facts and lists its neighbours.
+  const [cx, cy] = await mug.evaluate((i) => window.antipodeView.screenPositionOf(i), best);
+  const hit = await mug.evaluate(([px, py]) => window.antipodeView.handAt(px, py), [cx, cy]);
+  await mug.mouse.click(cx, cy);
+  if (hit === best) {
+    const facts = await rows(mug, '#hand-info');
+    assert.equal(facts.rank, '1');
+    assert.equal(facts.score, Math.fround(found[best].score).toFixed(4));
+    assert.equal(await mug.$$eval('#neighbours li', (items) => items.length), Math.min(around.length, 12));
+  }
+  await mug.screenshot({ path: file('mug-page.jpg'), type: 'jpeg', quality: 80 });
   await mug.close();
 } finally {
   await browser.close();
 }
 
 // 5. Bad input: one error line naming the input, exit 2, and no page written.
-for (const [words, text] of [
-  [['view', file('scene.yaml')], "'" + file('scene.yaml') + "': not a cloud (.pcd, .ply) or a grasps file"],
-  [['view', file('grasps.json')], 'give a cloud'],
+writeFileSync(file('not-grasps.json'), '{"grasps": []}');
+expectRefused([
+  [['view', file('scene.yaml')], "'" + file('scene.yaml') + "': not a cloud (.pcd, .ply), a grasps file"],
+  [['view', file('grasps.json')], 'give the cloud'],
   [['view', file('cloud.ply'), file('cloud.ply')], 'a second cloud'],
   [['view', file('cloud.ply'), file('mug.html') + '.json'], 'mug.html.json'],
-]) {
-  const bad = antipode(...words, '--out', file('bad.html'));
-  assert.equal(bad.code, 2, bad.out);
-  assert.equal(bad.out.trim().split('\n').length, 1, bad.out);
-  assert.ok(bad.out.includes(text), bad.out);
-}
-writeFileSync(file('not-grasps.json'), '{"grasps": []}');
-const notGrasps = antipode('view', file('cloud.ply'), file('not-grasps.json'), '--out', file('bad.html'));
-assert.equal(notGrasps.code, 2, notGrasps.out);
-assert.match(notGrasps.out, /not a grasps file/);
-assert.throws(() => readFileSync(file('bad.html')), 'a failed view wrote its page');
+  [['view', file('cloud.ply'), file('not-grasps.json')], 'not a grasps file'],
+  [['view', file('cloud.ply'), '--selections', args.work], '--selections and --pictures go with a clear-the-box report'],
+]);
 console.log('viewer: all checks passed');

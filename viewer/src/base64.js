@@ -1,4 +1,4 @@
-// The page's arrays travel as base64 text of little-endian binary (docs/view.md): far smaller
+// The page's arrays travel as base64 text of little-endian binary (docs/viewer.md): far smaller
 // and faster to read than JSON numbers for a cloud of 300,000 points.
 
 function bytesOf(text) {
@@ -13,3 +13,4 @@ export function decodeFloat32(text) {
   const bytes = bytesOf(text);
   return new Float32Array(bytes.buffer, 0, bytes.length / 4);
 }
+

@@ -1,14 +1,13 @@
-// The side panel: what is shown (counts), how the cloud and hands are coloured, which hands
-// are shown (by rejection reason, object and rank), and the hand last clicked.
+// The scene panel: what the scene holds, how the cloud and hands are coloured, which hands
+// are shown (by rejection reason, object and rank), and the hand last clicked, with the
+// hands around it and why each was dropped.
 
 import { categoryColour } from './colours.js';
+import { element, factRows, number, vector } from './dom.js';
+import { approachOf, neighbours } from './hand_table.js';
 
-function element(tag, attributes = {}, text = '') {
-  const e = document.createElement(tag);
-  for (const [key, value] of Object.entries(attributes)) e.setAttribute(key, value);
-  if (text) e.textContent = text;
-  return e;
-}
+/** How far around a clicked hand its neighbours are listed (m). */
+export const NEIGHBOUR_RADIUS_M = 0.02;
 
 function select(parent, id, label, options) {
   const row = parent.appendChild(element('label', {}, label + ' '));
@@ -19,14 +18,13 @@ function select(parent, id, label, options) {
 
 // Checkboxes, one per category, each with its count and colour; returns the set of values
 // ticked, kept up to date.
-function checklist(parent, id, title, values, counts, onChange) {
+function checklist(parent, id, title, values, counts, onChange, ticked = new Set(values)) {
   const box = parent.appendChild(element('fieldset', { id }));
   box.appendChild(element('legend', {}, title));
-  const ticked = new Set(values);
   values.forEach((value, i) => {
     const row = box.appendChild(element('label', { class: 'check' }));
     const input = row.appendChild(element('input', { type: 'checkbox', 'data-value': value }));
-    input.checked = true;
+    input.checked = ticked.has(value);
     input.addEventListener('change', () => {
       if (input.checked) ticked.add(value);
       else ticked.delete(value);
@@ -45,41 +43,35 @@ function countsOf(values) {
   return counts;
 }
 
-const number = (v, digits = 4) => (typeof v === 'number' ? v.toFixed(digits) : String(v));
-const vector = (v) => (Array.isArray(v) ? '[' + v.map((x) => number(x)).join(', ') + ']' : '-');
+export const reasonOf = (hand) => hand.rejection || 'accepted';
 
-// One line per fact of `hand`.
-function describe(hand, index) {
-  const lines = [
+/** One [key, value] per fact of hand `index` of `hands` (`executed`: the scene's executed hand). */
+export function handFacts(hands, index, executed) {
+  const hand = hands[index];
+  const facts = [
     ['hand', String(index)],
     ['position_m', vector(hand.position_m)],
     ['quaternion_xyzw', vector(hand.quaternion_xyzw)],
-    ['approach', vector(hand.approach)],
+    ['approach', vector(approachOf(hand))],
     ['width_m', number(hand.width_m)],
     ['score', number(hand.score)],
   ];
-  if (hand.rank !== undefined) lines.push(['rank', String(hand.rank)]);
-  if (hand.object !== undefined) lines.push(['object', String(hand.object)]);
-  if (hand.label !== undefined) lines.push(['label', hand.label]);
-  lines.push(['rejection', hand.rejection || 'none (accepted)']);
-  return lines;
+  if (hand.rank !== undefined) facts.push(['rank', String(hand.rank)]);
+  if (hand.object !== undefined) facts.push(['object', String(hand.object)]);
+  if (hand.label !== undefined) facts.push(['label', hand.label]);
+  facts.push(['rejection', hand.rejection || 'none (accepted)']);
+  if (index === executed) facts.push(['executed', 'yes: the grasp the cycle tried']);
+  return facts;
 }
 
 /**
- * Builds the panel into `root`; `draw` holds colourCloud(mode), colourHands(mode, reasons)
- * and showHands(visible(hand, i)). Returns {apply(), showHand(i)}.
+ * Builds the panel into `root` for the page's title; `draw` holds colourCloud(mode),
+ * colourHands(mode, reasons) and showHands(visible(hand, i)). Returns {setScene(scene,
+ * hands), showHand(i), selectHand(i)}: setScene rebuilds the per-scene part.
  */
-export function buildPanel(root, data, hands, reasonOf, draw) {
+export function buildPanel(root, data, draw) {
   root.appendChild(element('h1', {}, data.title || 'antipode view'));
-  root.appendChild(
-    element(
-      'p',
-      { id: 'summary' },
-      `${data.cloud.count} points` +
-        `, ${hands.length} hands, frame ${data.frame}` +
-        (data.gripper.name ? `, ${data.gripper.name}` : ''),
-    ),
-  );
+  const summary = root.appendChild(element('p', { id: 'summary' }));
   const cloudMode = select(root, 'cloud-colour', 'cloud colour', [
     ['height', 'height'],
     ['grey', 'grey'],
@@ -87,14 +79,20 @@ export function buildPanel(root, data, hands, reasonOf, draw) {
   const handMode = select(root, 'hand-colour', 'hand colour', [
     ['score', 'score'],
     ['reason', 'rejection reason'],
+    ['rank', 'selection rank'],
   ]);
   const rankRow = root.appendChild(element('label', {}, 'best hands shown '));
-  const best = rankRow.appendChild(
-    element('input', { id: 'best', type: 'number', min: 0, value: hands.length }),
-  );
+  const best = rankRow.appendChild(element('input', { id: 'best', type: 'number', min: 0 }));
+  const filters = root.appendChild(element('div', { id: 'filters' }));
+  const info = root.appendChild(element('table', { id: 'hand-info' }));
+  const near = root.appendChild(element('div', { id: 'neighbours' }));
+  root.appendChild(element('p', { class: 'hint' }, 'Drag to turn, scroll to zoom, click a hand.'));
 
-  const reasonCounts = countsOf(hands.map(reasonOf));
-  const reasons = [...reasonCounts.keys()];
+  let hands = [];
+  let executed = -1;
+  let reasons = [];
+  let shownReasons = new Set();
+  let shownObjects = null;
   const apply = () => {
     draw.colourHands(handMode.value, reasons);
     const limit = Number(best.value);
@@ -105,32 +103,53 @@ export function buildPanel(root, data, hands, reasonOf, draw) {
         (!shownObjects || shownObjects.has(String(hand.object ?? 'none'))),
     );
   };
-  const shownReasons = checklist(root, 'reasons', 'hands by rejection reason', reasons, reasonCounts, apply);
-  let shownObjects = null;
-  if (hands.some((h) => h.object !== undefined)) {
-    const objectCounts = countsOf(hands.map((h) => String(h.object ?? 'none')));
-    shownObjects = checklist(root, 'objects', 'hands by object', [...objectCounts.keys()], objectCounts, apply);
-  }
-  const info = root.appendChild(element('table', { id: 'hand-info' }));
-  root.appendChild(element('p', { class: 'hint' }, 'Drag to turn, scroll to zoom, click a hand.'));
-
   cloudMode.addEventListener('change', () => draw.colourCloud(cloudMode.value));
   handMode.addEventListener('change', apply);
   best.addEventListener('change', apply);
 
+  function showHand(index) {
+    info.replaceChildren();
+    near.replaceChildren();
+    if (index < 0) return;
+    factRows(info, handFacts(hands, index, executed));
+    const around = neighbours(hands, index, NEIGHBOUR_RADIUS_M);
+    near.appendChild(
+      element('p', {}, `${around.length} hands within ${NEIGHBOUR_RADIUS_M * 100} cm` + (around.length ? ':' : '')),
+    );
+    const list = near.appendChild(element('ul'));
+    for (const n of around.slice(0, 12))
+      list.appendChild(
+        element('li', { 'data-hand': n.index }, `hand ${n.index}, ${(n.distance_m * 1000).toFixed(0)} mm: ${n.rejection}`),
+      );
+  }
+
   return {
-    apply() {
+    setScene(scene, sceneHands) {
+      hands = sceneHands;
+      executed = scene.executed ?? -1;
+      const points = scene.cloud ? scene.cloud.count : 0;
+      summary.textContent =
+        `${scene.name}: ${points} points, ${hands.length} hands, frame ${scene.frame}` +
+        (data.gripper.name ? `, ${data.gripper.name}` : '') +
+        (scene.objects ? `, ${scene.objects.length} objects` : '');
+      best.value = hands.length;
+      best.max = hands.length;
+      filters.replaceChildren();
+      const reasonCounts = countsOf(hands.map(reasonOf));
+      reasons = [...reasonCounts.keys()];
+      // The accepted hands first; the dropped ones a tick away.
+      const first = new Set(reasonCounts.has('accepted') ? ['accepted'] : reasons);
+      shownReasons = checklist(filters, 'reasons', 'hands by rejection reason', reasons, reasonCounts, apply, first);
+      shownObjects = null;
+      if (hands.some((h) => h.object !== undefined)) {
+        const objectCounts = countsOf(hands.map((h) => String(h.object ?? 'none')));
+        shownObjects = checklist(filters, 'objects', 'hands by object', [...objectCounts.keys()], objectCounts, apply);
+      }
+      showHand(-1);
       draw.colourCloud(cloudMode.value);
       apply();
     },
-    showHand(index) {
-      info.replaceChildren();
-      if (index < 0) return;
-      for (const [key, value] of describe(hands[index], index)) {
-        const row = info.appendChild(element('tr', { 'data-key': key }));
-        row.appendChild(element('th', {}, key));
-        row.appendChild(element('td', {}, value));
-      }
-    },
+    showHand,
+    recolour: apply,
   };
 }

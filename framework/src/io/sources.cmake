@@ -8,6 +8,7 @@ list(APPEND ANTIPODE_SOURCES
   ${CMAKE_CURRENT_LIST_DIR}/pcd_ascii.cpp
   ${CMAKE_CURRENT_LIST_DIR}/pcd_header.cpp
   ${CMAKE_CURRENT_LIST_DIR}/pcd_reader.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/pcd_writer.cpp
   ${CMAKE_CURRENT_LIST_DIR}/ply_reader.cpp
   ${CMAKE_CURRENT_LIST_DIR}/png_file.cpp
   ${CMAKE_CURRENT_LIST_DIR}/text_scan.cpp)

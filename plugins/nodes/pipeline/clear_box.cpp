@@ -58,6 +58,12 @@ class ClearBox final : public bt::DecoratorNode {
              bt::output_port<std::string>("selection",
                                           "the file the cycle about to run may write its "
                                           "selection to (\"\" when selection_prefix is empty)"),
+             bt::output_port<std::string>("cloud_file",
+                                          "beside the selection, the file the cycle may write "
+                                          "its captured cloud to: PREFIXcycle-NN.pcd"),
+             bt::output_port<std::string>("objects_file",
+                                          "beside the selection, the file the cycle may write "
+                                          "the cell's objects to: PREFIXcycle-NN-objects.json"),
              bt::output_port<ClearingRun>("run", "the record of the run, cycle by cycle")},
             1,
             1,
@@ -139,6 +145,8 @@ class ClearBox final : public bt::DecoratorNode {
     };
     set_output("picture", cycle_file("picture_prefix", ".png"));
     set_output("selection", cycle_file("selection_prefix", ".json"));
+    set_output("cloud_file", cycle_file("selection_prefix", ".pcd"));
+    set_output("objects_file", cycle_file("selection_prefix", "-objects.json"));
     cycle_started_ = true;
     cycle_start_ = std::chrono::steady_clock::now();
     objects_before_ = run_.objects_left();

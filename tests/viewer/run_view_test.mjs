@@ -1,0 +1,89 @@
+// `antipode view` of runs in Chromium. A clear-the-box report with its --selections and
+// --pictures folders: the page lists every cycle; choosing a failed attempt shows its scene
+// (the cloud the cycle captured, its selection, the grasp it tried) and its reason and record
+// as the report has them. A tree run's trace: the tree as a diagram, stepped to the node that
+// failed. Bad input is one error line.
+import assert from 'node:assert/strict';
+import { readFileSync, readdirSync, writeFileSync } from 'node:fs';
+import { join } from 'node:path';
+
+import { antipode, args, drawnPixels, expectRefused, file, launch, openPage, rows } from './browser.mjs';
+
+// One run of four YCB objects with two failed attempts (seed 2002).
+const bench = antipode('bench', 'clutter', '--objects', join(args.data, 'objects', 'ycb'), '--runs', '1',
+                       '--objects-per-run', '4', '--seed', '2002', '--report', file('run.json'),
+                       '--selections', file('sel'), '--pictures', file('pic'));
+assert.equal(bench.code, 0, bench.out);
+const report = JSON.parse(readFileSync(file('run.json'), 'utf8'));
+const cycles = report.run_records[0].cycles;
+const failed = cycles.findIndex((c) => c.record && c.outcome !== 'success');
+assert.ok(failed >= 0, 'the run has no failed attempt: ' + cycles.map((c) => c.reason).join(', '));
+const stem = `seed-2002-cycle-${String(failed + 1).padStart(2, '0')}`;
+for (const suffix of ['.json', '.pcd', '-objects.json'])
+  assert.ok(readdirSync(file('sel')).includes(stem + suffix), `no ${stem}${suffix}`);
+
+const browser = await launch();
+try {
+  const made = antipode('view', file('run.json'), '--selections', file('sel'), '--pictures', file('pic'),
+                        '--out', file('run.html'));
+  assert.equal(made.code, 0, made.out);
+  assert.match(made.out, new RegExp(`${cycles.length} scene\\(s\\)`));
+  const page = await openPage(browser, file('run.html'));
+  assert.equal(await page.$$eval('.cycle', (r) => r.length), cycles.length);
+  await page.click(`.cycle[data-run="0"][data-cycle="${failed}"]`);
+  const facts = await rows(page, '#cycle-facts');
+  assert.equal(facts.outcome, cycles[failed].outcome);
+  assert.equal(facts.reason, cycles[failed].reason);
+  const state = await page.evaluate(() => {
+    const v = window.antipodeView;
+    const e = v.executed();
+    return { scene: v.scene, points: v.points, hands: v.hands, executed: e, facts: e >= 0 ? v.facts(e) : null };
+  });
+  assert.equal(state.scene, failed);
+  assert.ok(state.points > 1000, 'the cycle shows no cloud');
+  const selection = JSON.parse(readFileSync(file(join('sel', stem + '.json')), 'utf8')).hands;
+  assert.equal(state.hands, selection.length);
+  assert.ok(state.executed >= 0, 'the tried grasp is not marked');
+  const tried = cycles[failed].hand.position_m.map(Math.fround);
+  assert.deepEqual(selection[state.executed].position_m.map(Math.fround), tried);
+  assert.equal(state.facts.executed, 'yes: the grasp the cycle tried');
+  assert.equal(await page.$$eval('#cycle-detail img', (i) => i.length), 1, 'no picture of the failed attempt');
+  assert.ok((await drawnPixels(page)) > 1000, 'the cycle view is blank');
+  await page.screenshot({ path: file('run-page.jpg'), type: 'jpeg', quality: 80 });
+  console.log(`clear the box: cycle ${failed + 1} of ${cycles.length}, ${cycles[failed].reason}: ` +
+              `${state.points} points, ${state.hands} hands`);
+  await page.close();
+
+  // The trace.
+  const detect = antipode('run', join(args.source, 'trees', 'detect.yaml'), '--set',
+                          `cloud_file=${join(args.data, 'clouds', 'table_mug.pcd')}`, '--set',
+                          'sampler.samples=300', '--set', `grasps_file=${file('g.json')}`, '--set',
+                          'classifier.threshold=100', '--trace', file('trace.jsonl'));
+  assert.equal(detect.code, 1, detect.out);
+  const lines = readFileSync(file('trace.jsonl'), 'utf8').trim().split('\n').map((l) => JSON.parse(l));
+  assert.equal(antipode('view', file('trace.jsonl'), '--out', file('trace.html')).code, 0);
+  const trace = await openPage(browser, file('trace.html'));
+  assert.equal(await trace.$$eval('#trace-tree .node', (n) => n.length), new Set(lines.map((l) => l.path)).size);
+  await trace.evaluate(() => window.antipodeView.traceStep(0));
+  const first = await trace.$$eval('#trace-tree .node', (n) => n.map((e) => e.dataset.status));
+  assert.deepEqual(first, ['RUNNING', ...first.slice(1).map(() => 'IDLE')]);
+  await trace.click('#trace-next-failure');
+  const failure = lines.find((l) => l.to === 'FAILURE' && l.reason);
+  const caption = await trace.textContent('#trace-caption');
+  assert.ok(caption.includes(`${failure.node} → FAILURE (${failure.reason})`), caption);
+  const node = [...new Set(lines.map((l) => l.path))].indexOf(failure.path);
+  assert.equal(await trace.$eval(`#trace-tree .node[data-node="${node}"]`, (e) => e.dataset.status), 'FAILURE');
+  await trace.screenshot({ path: file('trace-page.jpg'), type: 'jpeg', quality: 80 });
+  await trace.close();
+} finally {
+  await browser.close();
+}
+
+// Bad input: one error line naming the input, exit 2, and no page written.
+writeFileSync(file('bad.jsonl'), '{"time_s": 0, "path": "x", "to": "SUCCESS"}\n{"time_s": "soon"}\n');
+expectRefused([
+  [['view', file('bad.jsonl')], 'bad.jsonl:2: not a status change'],
+  [['view', file('run.json'), '--selections', file('nowhere')], "'" + file('nowhere') + "' is not a folder"],
+  [['view', file('run.json'), join(args.data, 'clouds', 'table_mug.pcd')], "a report's cycles bring their own clouds"],
+]);
+console.log('viewer (runs and traces): all checks passed');

@@ -1,0 +1,66 @@
+// A clear-the-box run, cycle by cycle: every run's cycles with their outcomes; choosing one
+// shows its scene (the cloud it captured, its selection and the grasp it tried) and what
+// happened: the outcome, its failure class, the cell's detail and record, and its picture.
+
+import { element, factRows, number } from './dom.js';
+
+// The cell's record (docs/bench.md) as [key, value] rows, lists joined and empty ones left out.
+function recordFacts(record) {
+  const facts = [];
+  for (const [key, value] of Object.entries(record || {})) {
+    if (value === null || value === '' || (Array.isArray(value) && value.length === 0)) continue;
+    facts.push([key, Array.isArray(value) ? value.join(', ') : typeof value === 'number' ? number(value) : String(value)]);
+  }
+  return facts;
+}
+
+/**
+ * Builds the run's list into `root`; `choose(sceneIndex)` shows one of `scenes`. Returns
+ * {choose(run, cycle)} for the page's test hook.
+ */
+export function buildRunPanel(root, run, scenes, choose) {
+  root.appendChild(element('h2', {}, run.report));
+  const s = run.summary || {};
+  if (s.attempts !== undefined)
+    root.appendChild(
+      element('p', {}, `${s.successes} of ${s.attempts} attempts succeeded; ${s.removed} of ${s.objects} objects removed`),
+    );
+  const list = root.appendChild(element('div', { id: 'cycles' }));
+  const detail = root.appendChild(element('div', { id: 'cycle-detail' }));
+  const rows = [];
+  function show(r, c) {
+    const cycle = run.runs[r].cycles[c];
+    rows.forEach((row) => row.classList.toggle('chosen', row.dataset.run == r && row.dataset.cycle == c));
+    detail.replaceChildren();
+    detail.appendChild(element('h3', {}, `seed ${run.runs[r].seed}, cycle ${c + 1}`));
+    const facts = [
+      ['outcome', cycle.outcome],
+      ['reason', cycle.reason],
+    ];
+    if (cycle.detail) facts.push(['detail', cycle.detail]);
+    const table = detail.appendChild(element('table', { id: 'cycle-facts' }));
+    factRows(table, facts.concat(recordFacts(cycle.record)));
+    const picture = scenes[cycle.scene].picture;
+    if (picture) detail.appendChild(element('img', { src: picture, alt: 'the attempt as DrawAttempt drew it', width: '100%' }));
+    choose(cycle.scene);
+  }
+  run.runs.forEach((r, ri) => {
+    const block = list.appendChild(element('details', { open: '' }));
+    block.appendChild(element('summary', {}, `seed ${r.seed}: ${r.summary} (${r.stop})`));
+    r.cycles.forEach((cycle, ci) => {
+      const ok = cycle.outcome === 'success';
+      const attempt = cycle.record !== undefined;
+      const row = block.appendChild(
+        element(
+          'div',
+          { class: 'cycle ' + (ok ? 'ok' : attempt ? 'failed' : 'none'), 'data-run': ri, 'data-cycle': ci },
+          `${ci + 1}. ${cycle.outcome}${!ok && cycle.reason !== cycle.outcome ? ': ' + cycle.reason : ''}`,
+        ),
+      );
+      row.addEventListener('click', () => show(ri, ci));
+      rows.push(row);
+    });
+  });
+  return { choose: show };
+}
+
