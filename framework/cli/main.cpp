@@ -300,6 +300,9 @@ void add_bench(CLI::App& app, Commands& commands) {
       ->capture_default_str();
   isolation->add_option("--report", o.report_path, "Write the report as JSON");
   isolation->add_option("--pictures", o.pictures_dir, "Draw every failed attempt into this folder");
+  isolation->add_option("--selections", o.selections_dir,
+                        "Write every attempt's selection, cloud and objects into this folder "
+                        "(VARIANT-OBJECT-poseK.json, .pcd, -objects.json)");
   isolation->add_option("--tree", o.tree_path, "The pick tree (its `attempt` tree runs)")
       ->capture_default_str();
   isolation->add_option("--noise", o.noise, "The cell's sensor noise scale (default: the tree's)")

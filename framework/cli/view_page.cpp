@@ -49,8 +49,7 @@ struct Inputs {
 };
 
 const char* kAccepted =
-    "a cloud (.pcd, .ply), a grasps file or a clear-the-box report (.json), or a trace "
-    "(.jsonl)";
+    "a cloud (.pcd, .ply), a grasps file or a bench report (.json), or a trace (.jsonl)";
 
 Inputs sort_inputs(const std::vector<std::string>& paths) {
   Inputs in;
@@ -63,7 +62,7 @@ Inputs sort_inputs(const std::vector<std::string>& paths) {
     } else if (extension == ".jsonl") {
       slot = &in.trace, kind = "trace";
     } else if (extension == ".json") {
-      const bool report = is_clutter_report(evaluation::read_json_file(path, "a grasps file"));
+      const bool report = is_run_report(evaluation::read_json_file(path, "a grasps file"));
       slot = report ? &in.report : &in.grasps, kind = report ? "report" : "grasps file";
     } else {
       throw Error("view: '" + path + "': not " + kAccepted);
@@ -77,7 +76,7 @@ Inputs sort_inputs(const std::vector<std::string>& paths) {
   }
   if (!in.report.empty() && !in.cloud.empty())
     throw Error("view: '" + in.cloud + "' with the report '" + in.report +
-                "': a report's cycles bring their own clouds (--selections DIR)");
+                "': a report's attempts bring their own clouds (--selections DIR)");
   if (!in.grasps.empty() && in.cloud.empty())
     throw Error("view: give the cloud (.pcd or .ply) the hands of '" + in.grasps +
                 "' were found in");
@@ -105,7 +104,7 @@ Json detection_scene(const Inputs& in) {
 Json view_data(const ViewOptions& options) {
   const Inputs in = sort_inputs(options.inputs);
   if (in.report.empty() && !(options.selections_dir.empty() && options.pictures_dir.empty()))
-    throw Error("view: --selections and --pictures go with a clear-the-box report");
+    throw Error("view: --selections and --pictures go with a bench report");
   Json data = {{"title", ""}, {"gripper", Json()}, {"scenes", Json::array()}};
   data["gripper"] = gripper_json(
       options.gripper_path.empty() ? "robots/grippers/baxter_electric.yaml" : options.gripper_path);

@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <sstream>
 
 #include "antipode/core/error.hpp"
@@ -19,13 +20,9 @@ namespace {
 namespace fs = std::filesystem;
 using Json = nlohmann::ordered_json;
 
-// DIR/seed-S-cycle-NN + suffix, the names clear_box.yaml's prefixes give ("" without DIR).
-std::string cycle_file(const std::string& dir, std::uint64_t seed, std::size_t cycle,
-                       const std::string& suffix) {
-  if (dir.empty()) return {};
-  char number[24];
-  std::snprintf(number, sizeof number, "%02zu", cycle);
-  return (fs::path(dir) / ("seed-" + std::to_string(seed) + "-cycle-" + number + suffix)).string();
+// DIR/STEM + suffix, or "" without DIR.
+std::string file_in(const std::string& dir, const std::string& stem, const std::string& suffix) {
+  return dir.empty() ? std::string() : (fs::path(dir) / (stem + suffix)).string();
 }
 
 std::string png_data_uri(const std::string& path) {
@@ -75,68 +72,124 @@ Cloud around_objects(const Cloud& cloud, const Json& objects) {
   return box.min_m.x() <= box.max_m.x() ? crop(cloud, box) : cloud;
 }
 
-Json cycle_scene(const RunInputs& in, std::uint64_t seed, std::size_t number, const Json& cycle) {
-  Json scene = {{"name", "seed " + std::to_string(seed) + ", cycle " + std::to_string(number)},
-                {"frame", "base"}};
-  const std::string objects = cycle_file(in.selections_dir, seed, number, "-objects.json");
+// One attempt's scene from the files whose names start with `stem` (docs/viewer.md).
+Json attempt_scene(const RunInputs& in, const std::string& stem, const std::string& name,
+                   const Json& attempt) {
+  Json scene = {{"name", name}, {"frame", "base"}};
+  const std::string objects = file_in(in.selections_dir, stem, "-objects.json");
   if (!objects.empty() && fs::exists(objects)) {
-    const Json truth = evaluation::read_json_file(objects, "a cycle's objects");
+    const Json truth = evaluation::read_json_file(objects, "an attempt's objects");
     if (!truth.contains("objects") || !truth["objects"].is_array())
       throw Error(objects + ": no \"objects\" list (WriteObjects writes one)");
     scene["objects"] = truth["objects"];
   }
-  const std::string cloud = cycle_file(in.selections_dir, seed, number, ".pcd");
+  const std::string cloud = file_in(in.selections_dir, stem, ".pcd");
   if (!cloud.empty() && fs::exists(cloud)) {
     const Cloud whole = load_cloud(cloud, {std::nullopt, "base"});
     scene["cloud"] = cloud_json(around_objects(whole, scene.value("objects", Json())), in.voxel_m);
   }
-  const std::string selection = cycle_file(in.selections_dir, seed, number, ".json");
+  const std::string selection = file_in(in.selections_dir, stem, ".json");
   if (!selection.empty() && fs::exists(selection)) {
-    const Json grasps = evaluation::read_json_file(selection, "a cycle's selection");
+    const Json grasps = evaluation::read_json_file(selection, "an attempt's selection");
     scene["hands"] = hand_table(grasps, selection);
-    scene["executed"] = executed_index(grasps, cycle);
+    scene["executed"] = executed_index(grasps, attempt);
   }
-  const std::string picture = cycle_file(in.pictures_dir, seed, number, ".png");
+  const std::string picture = file_in(in.pictures_dir, stem, ".png");
   if (!picture.empty() && fs::exists(picture)) scene["picture"] = png_data_uri(picture);
   return scene;
 }
 
+// A report's attempts in the page's groups: a clear-the-box run per seed, its cycles in
+// order; an isolation bench per variant, its attempts in order.
+struct Attempt {
+  std::string stem;   ///< the file names its bench gave it, without extension
+  std::string title;  ///< how the list names it
+  Json record;        ///< the report's entry
+};
+struct Group {
+  std::string title;
+  std::vector<Attempt> attempts;
+};
+
+std::vector<Group> clutter_groups(const Json& report) {
+  std::vector<Group> groups;
+  for (const Json& run : report["run_records"]) {
+    const std::string seed = std::to_string(run.value("seed", std::uint64_t(0)));
+    Group group{
+        "seed " + seed + ": " + run.value("summary", "") + " (" + run.value("stop", "") + ")", {}};
+    const Json cycles = run.value("cycles", Json::array());
+    for (std::size_t k = 0; k < cycles.size(); ++k) {
+      char number[24];
+      std::snprintf(number, sizeof number, "%02zu", k + 1);
+      group.attempts.push_back({"seed-" + seed + "-cycle-" + number,
+                                "seed " + seed + ", cycle " + std::to_string(k + 1), cycles[k]});
+    }
+    groups.push_back(std::move(group));
+  }
+  return groups;
+}
+
+std::vector<Group> isolation_groups(const Json& report) {
+  std::vector<Group> groups;
+  std::map<std::string, std::size_t> group_of;  // variant -> its group, in order of appearance
+  for (const Json& attempt : report["attempts"]) {
+    const std::string variant = attempt.value("variant", "");
+    if (group_of.emplace(variant, groups.size()).second) {
+      const Json summary = report.value("summary", Json::object()).value(variant, Json::object());
+      groups.push_back({variant + ": " + std::to_string(summary.value("successes", 0)) + " of " +
+                            std::to_string(summary.value("attempts", 0)) + " attempts succeeded",
+                        {}});
+    }
+    const std::string object = attempt.value("object", "");
+    const std::string pose = std::to_string(attempt.value("pose", 0));
+    std::string stem = variant;
+    stem.append("-").append(object).append("-pose").append(pose);
+    groups[group_of[variant]].attempts.push_back({stem, object + ", pose ", attempt});
+    groups[group_of[variant]].attempts.back().title += pose;
+  }
+  return groups;
+}
+
+bool is_isolation_report(const Json& document) {
+  return document.is_object() && document.value("bench", "") == "isolation" &&
+         document.contains("attempts") && document["attempts"].is_array();
+}
+
 }  // namespace
 
-bool is_clutter_report(const Json& document) {
-  return document.is_object() && document.value("bench", "") == "clutter" &&
-         document.contains("run_records");
+bool is_run_report(const Json& document) {
+  return is_isolation_report(document) ||
+         (document.is_object() && document.value("bench", "") == "clutter" &&
+          document.contains("run_records") && document["run_records"].is_array());
 }
 
 void add_run(const RunInputs& in, Json& data) {
   const Json report = evaluation::read_json_file(in.report_path, "a bench report");
-  if (!is_clutter_report(report) || !report["run_records"].is_array())
+  if (!is_run_report(report))
     throw Error(in.report_path +
-                ": not a clear-the-box report (no \"run_records\" of bench \"clutter\"; "
-                "`antipode bench clutter --report` writes one)");
+                ": not a report of `antipode bench clutter` or `bench isolation` (no "
+                "\"run_records\" or \"attempts\")");
   for (const std::string& dir : {in.selections_dir, in.pictures_dir})
     if (!dir.empty() && !fs::is_directory(dir)) throw Error("view: '" + dir + "' is not a folder");
   Json runs = Json::array();
-  for (const Json& record : report["run_records"]) {
-    const std::uint64_t seed = record.value("seed", std::uint64_t(0));
-    Json run = {{"seed", seed},
-                {"summary", record.value("summary", "")},
-                {"stop", record.value("stop", "")},
-                {"cycles", Json::array()}};
-    const Json cycles = record.value("cycles", Json::array());
-    for (std::size_t k = 0; k < cycles.size(); ++k) {
-      const Json& cycle = cycles[k];
-      Json entry = {{"outcome", cycle.value("outcome", "")},
-                    {"reason", cycle.value("reason", "")},
-                    {"detail", cycle.value("detail", "")},
+  for (const Group& group :
+       is_isolation_report(report) ? isolation_groups(report) : clutter_groups(report)) {
+    Json run = {{"title", group.title}, {"cycles", Json::array()}};
+    for (const Attempt& attempt : group.attempts) {
+      const Json& r = attempt.record;
+      Json entry = {{"title", attempt.title},
+                    {"outcome", r.value("outcome", "")},
+                    {"reason", r.value("reason", "")},
+                    {"detail", r.value("detail", "")},
                     {"scene", data["scenes"].size()}};
-      if (cycle.contains("record")) entry["record"] = cycle["record"];
-      data["scenes"].push_back(cycle_scene(in, seed, k + 1, cycle));
+      if (r.contains("record")) entry["record"] = r["record"];
+      data["scenes"].push_back(attempt_scene(in, attempt.stem, attempt.title, r));
       run["cycles"].push_back(std::move(entry));
     }
     runs.push_back(std::move(run));
   }
   data["run"] = {{"report", fs::path(in.report_path).filename().string()},
+                 {"bench", report.value("bench", "")},
                  {"summary", report.value("summary", Json::object())},
                  {"runs", runs}};
 }

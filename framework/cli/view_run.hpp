@@ -1,6 +1,7 @@
 #pragma once
-// `antipode view` of a bench run: a clear-the-box report (`antipode bench clutter --report`)
-// and the folders its --selections and --pictures options filled, as one scene per cycle.
+// `antipode view` of a bench run: a clear-the-box or isolation report (`antipode bench clutter
+// --report`, `bench isolation --report`) and the folders its --selections and --pictures
+// options filled, as one scene per attempt.
 
 #include <string>
 
@@ -15,16 +16,17 @@ struct RunInputs {
   double voxel_m = 0.005;      ///< each cycle's cloud thinned to a point per voxel (0: all)
 };
 
-/// Appends one scene per cycle to `data["scenes"]` and sets `data["run"]` (docs/viewer.md):
-/// per run its seed, summary and why it stopped; per cycle its outcome, failure class, the
-/// cell's detail and record, and its scene's index. A cycle's scene holds the cloud the cycle
-/// captured (SEL/seed-S-cycle-NN.pcd), its selection (SEL/seed-S-cycle-NN.json) with the
-/// executed grasp marked, where the objects lay (SEL/seed-S-cycle-NN-objects.json) and its
-/// picture (PIC/seed-S-cycle-NN.png), each when present. Throws antipode::Error naming the
-/// file at fault: a report that is not a clear-the-box report, or a malformed file.
+/// Appends one scene per attempt (a clear-the-box cycle, an isolation attempt) to
+/// `data["scenes"]` and sets `data["run"]` (docs/viewer.md): the attempts in groups (a
+/// clear-the-box run per seed, an isolation variant), each with its outcome, failure class, the
+/// cell's detail and record, and its scene's index. An attempt's scene holds the cloud it
+/// captured (SEL/STEM.pcd), its selection (SEL/STEM.json) with the executed grasp marked, where
+/// the objects lay (SEL/STEM-objects.json) and its picture (PIC/STEM.png), each when present;
+/// STEM is seed-S-cycle-NN for a cycle, VARIANT-OBJECT-poseK for an isolation attempt. Throws
+/// antipode::Error naming the file at fault: a report of another kind, or a malformed file.
 void add_run(const RunInputs& inputs, nlohmann::ordered_json& data);
 
-/// True when `document` is a bench report of clear-the-box runs.
-bool is_clutter_report(const nlohmann::ordered_json& document);
+/// True when `document` is a report of clear-the-box runs or of an isolation bench.
+bool is_run_report(const nlohmann::ordered_json& document);
 
 }  // namespace antipode::cli

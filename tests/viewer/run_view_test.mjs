@@ -1,7 +1,7 @@
 // `antipode view` of runs in Chromium. A clear-the-box report with its --selections and
 // --pictures folders: the page lists every cycle; choosing a failed attempt shows its scene
 // (the cloud the cycle captured, its selection, the grasp it tried) and its reason and record
-// as the report has them. A tree run's trace: the tree as a diagram, stepped to the node that
+// as the report has them. An isolation report: its attempts by variant, each with its scene. A tree run's trace: the tree as a diagram, stepped to the node that
 // failed. Bad input is one error line.
 import assert from 'node:assert/strict';
 import { readFileSync, readdirSync, writeFileSync } from 'node:fs';
@@ -54,6 +54,24 @@ try {
               `${state.points} points, ${state.hands} hands`);
   await page.close();
 
+  // An isolation bench: its attempts grouped by variant, each with its scene.
+  const iso = antipode('bench', 'isolation', '--objects', join(args.data, 'objects', 'ycb'), '--variants', 'nc_2v',
+                       '--attempts', '2', '--report', file('iso.json'), '--selections', file('isel'));
+  assert.equal(iso.code, 0, iso.out);
+  const attempts = JSON.parse(readFileSync(file('iso.json'), 'utf8')).attempts;
+  assert.equal(antipode('view', file('iso.json'), '--selections', file('isel'), '--out', file('iso.html')).code, 0);
+  const isoPage = await openPage(browser, file('iso.html'));
+  assert.deepEqual(await isoPage.$$eval('#cycles summary', (s) => s.map((e) => e.textContent)), [
+    `nc_2v: ${attempts.filter((a) => a.outcome === 'success').length} of 2 attempts succeeded`,
+  ]);
+  await isoPage.click('.cycle[data-run="0"][data-cycle="1"]');
+  assert.equal((await rows(isoPage, '#cycle-facts')).reason, attempts[1].reason);
+  const isoStem = `nc_2v-${attempts[1].object}-pose${attempts[1].pose}`;
+  const isoHands = JSON.parse(readFileSync(file(join('isel', isoStem + '.json')), 'utf8')).hands.length;
+  assert.equal(await isoPage.evaluate(() => window.antipodeView.hands), isoHands);
+  assert.ok((await isoPage.evaluate(() => window.antipodeView.points)) > 1000, 'the attempt shows no cloud');
+  await isoPage.close();
+
   // The trace.
   const detect = antipode('run', join(args.source, 'trees', 'detect.yaml'), '--set',
                           `cloud_file=${join(args.data, 'clouds', 'table_mug.pcd')}`, '--set',
@@ -84,6 +102,6 @@ writeFileSync(file('bad.jsonl'), '{"time_s": 0, "path": "x", "to": "SUCCESS"}\n{
 expectRefused([
   [['view', file('bad.jsonl')], 'bad.jsonl:2: not a status change'],
   [['view', file('run.json'), '--selections', file('nowhere')], "'" + file('nowhere') + "' is not a folder"],
-  [['view', file('run.json'), join(args.data, 'clouds', 'table_mug.pcd')], "a report's cycles bring their own clouds"],
+  [['view', file('run.json'), join(args.data, 'clouds', 'table_mug.pcd')], "a report's attempts bring their own clouds"],
 ]);
 console.log('viewer (runs and traces): all checks passed');

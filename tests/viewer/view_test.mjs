@@ -112,6 +112,6 @@ expectRefused([
   [['view', file('cloud.ply'), file('cloud.ply')], 'a second cloud'],
   [['view', file('cloud.ply'), file('mug.html') + '.json'], 'mug.html.json'],
   [['view', file('cloud.ply'), file('not-grasps.json')], 'not a grasps file'],
-  [['view', file('cloud.ply'), '--selections', args.work], '--selections and --pictures go with a clear-the-box report'],
+  [['view', file('cloud.ply'), '--selections', args.work], '--selections and --pictures go with a bench report'],
 ]);
 console.log('viewer: all checks passed');

@@ -1,6 +1,7 @@
-// A clear-the-box run, cycle by cycle: every run's cycles with their outcomes; choosing one
-// shows its scene (the cloud it captured, its selection and the grasp it tried) and what
-// happened: the outcome, its failure class, the cell's detail and record, and its picture.
+// A bench run, attempt by attempt: a clear-the-box run's cycles per seed, or an isolation
+// bench's attempts per variant, with their outcomes; choosing one shows its scene (the cloud
+// it captured, its selection and the grasp it tried) and what happened: the outcome, its
+// failure class, the cell's detail and record, and its picture.
 
 import { element, factRows, number } from './dom.js';
 
@@ -32,7 +33,7 @@ export function buildRunPanel(root, run, scenes, choose) {
     const cycle = run.runs[r].cycles[c];
     rows.forEach((row) => row.classList.toggle('chosen', row.dataset.run == r && row.dataset.cycle == c));
     detail.replaceChildren();
-    detail.appendChild(element('h3', {}, `seed ${run.runs[r].seed}, cycle ${c + 1}`));
+    detail.appendChild(element('h3', {}, cycle.title));
     const facts = [
       ['outcome', cycle.outcome],
       ['reason', cycle.reason],
@@ -46,7 +47,7 @@ export function buildRunPanel(root, run, scenes, choose) {
   }
   run.runs.forEach((r, ri) => {
     const block = list.appendChild(element('details', { open: '' }));
-    block.appendChild(element('summary', {}, `seed ${r.seed}: ${r.summary} (${r.stop})`));
+    block.appendChild(element('summary', {}, r.title));
     r.cycles.forEach((cycle, ci) => {
       const ok = cycle.outcome === 'success';
       const attempt = cycle.record !== undefined;
@@ -54,7 +55,7 @@ export function buildRunPanel(root, run, scenes, choose) {
         element(
           'div',
           { class: 'cycle ' + (ok ? 'ok' : attempt ? 'failed' : 'none'), 'data-run': ri, 'data-cycle': ci },
-          `${ci + 1}. ${cycle.outcome}${!ok && cycle.reason !== cycle.outcome ? ': ' + cycle.reason : ''}`,
+          `${run.bench === 'clutter' ? ci + 1 + '.' : cycle.title + ':'} ${cycle.outcome}${!ok && cycle.reason !== cycle.outcome ? ': ' + cycle.reason : ''}`,
         ),
       );
       row.addEventListener('click', () => show(ri, ci));

@@ -31,12 +31,12 @@ std::string number(double value) {
   return text.str();
 }
 
-// Where the tree draws `task` when it fails: DIR/VARIANT-OBJECT-poseK.png, or nowhere.
-std::string picture_file(const TaskSettings& settings, const BenchTask& task) {
-  if (settings.pictures_dir.empty()) return "";
-  return (std::filesystem::path(settings.pictures_dir) /
-          (task.variant->name + "-" + task.object.name + "-pose" + std::to_string(task.pose) +
-           ".png"))
+// DIR/VARIANT-OBJECT-poseK + suffix for `task`, or "" without DIR: where the tree draws the
+// task when it fails (--pictures) and writes its selection, cloud and objects (--selections).
+std::string task_file(const std::string& dir, const BenchTask& task, const std::string& suffix) {
+  if (dir.empty()) return "";
+  return (std::filesystem::path(dir) / (task.variant->name + "-" + task.object.name + "-pose" +
+                                        std::to_string(task.pose) + suffix))
       .string();
 }
 
@@ -53,7 +53,10 @@ std::vector<std::pair<std::string, std::string>> task_overrides(const TaskSettin
       {"sampler.threads", threads},
       {"selector.threads", threads},
       {"views", yaml_list(task.variant->views)},
-      {"picture_file", picture_file(settings, task)}};
+      {"picture_file", task_file(settings.pictures_dir, task, ".png")},
+      {"selection_file", task_file(settings.selections_dir, task, ".json")},
+      {"cloud_file", task_file(settings.selections_dir, task, ".pcd")},
+      {"objects_file", task_file(settings.selections_dir, task, "-objects.json")}};
   if (!settings.noise.empty()) entries.emplace_back("cell.noise", settings.noise);
   if (!task.variant->classifier_plugin.empty())
     entries.emplace_back("classifier.plugin", task.variant->classifier_plugin);

@@ -45,8 +45,10 @@ void check_options(const IsolationBenchOptions& o) {
   if (o.jobs < 1 || o.jobs > 64) throw Error("--jobs must be in 1..64");
   if (!fs::is_regular_file(o.tree_path)) throw Error("--tree: no tree file '" + o.tree_path + "'");
   require_cell_component(o.tree_path, "trees/pick_isolated.yaml");
-  if (!o.pictures_dir.empty() && fs::exists(o.pictures_dir) && !fs::is_directory(o.pictures_dir))
-    throw Error("--pictures: '" + o.pictures_dir + "' is not a folder");
+  for (const auto& [option, dir] :
+       {std::pair{"--pictures", &o.pictures_dir}, std::pair{"--selections", &o.selections_dir}})
+    if (!dir->empty() && fs::exists(*dir) && !fs::is_directory(*dir))
+      throw Error(std::string(option) + ": '" + *dir + "' is not a folder");
   check_entries_are_read(o.tree_path, o.set);  // and throws for an entry without '='
 }
 
@@ -123,6 +125,12 @@ Json run_isolation_bench(const IsolationBenchOptions& o) {
   settings.threads = std::max(1, cores / o.jobs);
   settings.noise = o.noise;
   settings.pictures_dir = o.pictures_dir;
+  settings.selections_dir = o.selections_dir;
+  if (!o.selections_dir.empty() && settings.tree_yaml.find("{selection_file}") == std::string::npos)
+    throw Error("--selections: the tree '" + o.tree_path +
+                "' writes no selections (it reads no {selection_file} entry; "
+                "trees/pick_isolated.yaml does)");
+  if (!o.selections_dir.empty()) fs::create_directories(o.selections_dir);
   settings.overrides = o.set;
 
   std::vector<std::string> variant_names;

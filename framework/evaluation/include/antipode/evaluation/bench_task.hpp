@@ -33,6 +33,7 @@ struct TaskSettings {
   int threads = 2;                     ///< threads of the sampler, classifier and renderer
   std::string noise;                   ///< the cell's `noise` ("" = the tree's)
   std::string pictures_dir;            ///< where failed attempts are drawn ("" = nowhere)
+  std::string selections_dir;          ///< where each attempt's selection, cloud and objects go
   std::vector<std::string> overrides;  ///< the user's --set entries, applied last
 };
 

@@ -22,6 +22,10 @@ struct IsolationBenchOptions {
   int jobs = 1;                       ///< processes sharing the machine's cores
   std::string report_path;            ///< JSON report ("" = none)
   std::string pictures_dir;           ///< failed attempts drawn here ("" = none)
+  /// Each attempt's selection (VARIANT-OBJECT-poseK.json), the cloud it captured (.pcd) and
+  /// where the objects lay (-objects.json) written here ("" = none); the tree's
+  /// {selection_file}, {cloud_file} and {objects_file} entries.
+  std::string selections_dir;
   std::string tree_path = "trees/pick_isolated.yaml";
   std::string noise;                  ///< the cell's sensor noise scale ("" = the tree's)
   std::vector<std::string> held_out;  ///< object names reported apart
