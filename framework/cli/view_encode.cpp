@@ -9,7 +9,6 @@ extern "C" {
 #include <vector>
 
 #include "antipode/core/error.hpp"
-#include "antipode/geometry/preprocess.hpp"
 
 namespace antipode::cli {
 using Json = nlohmann::ordered_json;
@@ -39,8 +38,7 @@ std::string base64(const void* bytes, std::size_t size) {
   return text;
 }
 
-Json cloud_json(const Cloud& input, double voxel_m) {
-  const Cloud cloud = voxel_m > 0.0 ? voxelize(input, float(voxel_m)) : input;
+Json cloud_json(const Cloud& cloud) {
   std::vector<float> xyz;
   xyz.reserve(3 * cloud.points_m.size());
   for (const Eigen::Vector3f& p : cloud.points_m) xyz.insert(xyz.end(), {p.x(), p.y(), p.z()});

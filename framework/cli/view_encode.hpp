@@ -20,9 +20,8 @@ int name_index(const std::string& name, nlohmann::ordered_json& names,
 /// Base64 (RFC 4648, no line breaks) of `size` bytes.
 std::string base64(const void* bytes, std::size_t size);
 
-/// {"count", "points": base64 float32 x, y, z per point, metres}. With `voxel_m` > 0 the cloud is
-/// first thinned to one point per voxel of that edge (voxelize, preprocess.hpp).
-nlohmann::ordered_json cloud_json(const Cloud& cloud, double voxel_m);
+/// {"count", "points": base64 float32 x, y, z per point, metres}.
+nlohmann::ordered_json cloud_json(const Cloud& cloud);
 
 /// The hands of a grasps file (`antipode detect --out`, WriteGrasps) as columns: "count";
 /// base64 float32 "position_m" (3 per hand), "quaternion_xyzw" (4), "width_m", "open_width_m"

@@ -13,6 +13,8 @@
 #include "antipode/io/load_cloud.hpp"
 #include "view_encode.hpp"
 #include "view_run.hpp"
+#include "view_scene_file.hpp"
+#include "view_segments.hpp"
 #include "view_trace.hpp"
 
 namespace antipode::cli {
@@ -45,11 +47,12 @@ Json gripper_json(const std::string& path) {
 // The inputs sorted by kind: at most one of each, a grasps file only with a cloud, a report
 // with neither.
 struct Inputs {
-  std::string cloud, grasps, report, trace;
+  std::string cloud, grasps, report, trace, scene;
 };
 
 const char* kAccepted =
-    "a cloud (.pcd, .ply), a grasps file or a bench report (.json), or a trace (.jsonl)";
+    "a cloud (.pcd, .ply), a grasps file or a bench report (.json), a scene file (.yaml) or a "
+    "trace (.jsonl)";
 
 Inputs sort_inputs(const std::vector<std::string>& paths) {
   Inputs in;
@@ -61,6 +64,8 @@ Inputs sort_inputs(const std::vector<std::string>& paths) {
       slot = &in.cloud, kind = "cloud";
     } else if (extension == ".jsonl") {
       slot = &in.trace, kind = "trace";
+    } else if (extension == ".yaml" || extension == ".yml") {
+      slot = &in.scene, kind = "scene file";
     } else if (extension == ".json") {
       const bool report = is_run_report(evaluation::read_json_file(path, "a grasps file"));
       slot = report ? &in.report : &in.grasps, kind = report ? "report" : "grasps file";
@@ -74,13 +79,16 @@ Inputs sort_inputs(const std::vector<std::string>& paths) {
     }
     *slot = path;
   }
+  if (!in.scene.empty() && !(in.cloud.empty() && in.report.empty()))
+    throw Error("view: '" + in.scene + "' with '" + (in.cloud.empty() ? in.report : in.cloud) +
+                "': a scene file is shown alone (or with a trace)");
   if (!in.report.empty() && !in.cloud.empty())
     throw Error("view: '" + in.cloud + "' with the report '" + in.report +
                 "': a report's attempts bring their own clouds (--selections DIR)");
   if (!in.grasps.empty() && in.cloud.empty())
     throw Error("view: give the cloud (.pcd or .ply) the hands of '" + in.grasps +
                 "' were found in");
-  if (in.cloud.empty() && in.report.empty() && in.trace.empty())
+  if (in.cloud.empty() && in.report.empty() && in.trace.empty() && in.scene.empty())
     throw Error(std::string("view: give ") + kAccepted + " to show");
   return in;
 }
@@ -88,7 +96,7 @@ Inputs sort_inputs(const std::vector<std::string>& paths) {
 // One scene: the cloud and, when given, the hands found in it.
 Json detection_scene(const Inputs& in) {
   Json scene = {{"name", fs::path(in.cloud).filename().string()}, {"frame", "sensor"}};
-  scene["cloud"] = cloud_json(load_cloud(in.cloud), 0.0);
+  add_cloud(load_cloud(in.cloud), 0.0, scene);
   if (!in.grasps.empty()) {
     const Json grasps = evaluation::read_json_file(in.grasps, "a grasps file");
     scene["hands"] = hand_table(grasps, in.grasps);
@@ -110,6 +118,10 @@ Json view_data(const ViewOptions& options) {
       options.gripper_path.empty() ? "robots/grippers/baxter_electric.yaml" : options.gripper_path);
   if (!in.cloud.empty()) {
     data["scenes"].push_back(detection_scene(in));
+    data["title"] = data["scenes"][0]["name"];
+  }
+  if (!in.scene.empty()) {
+    data["scenes"].push_back(scene_file_scene(in.scene, options.voxel_m));
     data["title"] = data["scenes"][0]["name"];
   }
   if (!in.report.empty()) {

@@ -8,11 +8,15 @@
 #include <map>
 #include <sstream>
 
+#include <yaml-cpp/yaml.h>
+
 #include "antipode/core/error.hpp"
 #include "antipode/evaluation/json_file.hpp"
 #include "antipode/geometry/preprocess.hpp"
 #include "antipode/io/load_cloud.hpp"
 #include "view_encode.hpp"
+#include "view_scene_file.hpp"
+#include "view_segments.hpp"
 
 namespace antipode::cli {
 namespace {
@@ -72,6 +76,21 @@ Cloud around_objects(const Cloud& cloud, const Json& objects) {
   return box.min_m.x() <= box.max_m.x() ? crop(cloud, box) : cloud;
 }
 
+// The arm's planned path (WriteArmPath's file): its links' positions at each waypoint.
+Json arm_path(const std::string& path) {
+  const Json document = evaluation::read_json_file(path, "an arm's path");
+  const auto waypoints = document.find("waypoints");
+  if (!document.is_object() || waypoints == document.end() || !waypoints->is_array())
+    throw Error(path + ": no \"waypoints\" list (WriteArmPath writes one)");
+  Json out = {{"links", document.value("links", Json::array())}, {"waypoints", Json::array()}};
+  for (const Json& waypoint : *waypoints) {
+    if (!waypoint.is_object() || !waypoint.contains("links_m") || !waypoint["links_m"].is_array())
+      throw Error(path + ": a waypoint without \"links_m\"");
+    out["waypoints"].push_back(waypoint["links_m"]);
+  }
+  return out;
+}
+
 // One attempt's scene from the files whose names start with `stem` (docs/viewer.md).
 Json attempt_scene(const RunInputs& in, const std::string& stem, const std::string& name,
                    const Json& attempt) {
@@ -86,7 +105,7 @@ Json attempt_scene(const RunInputs& in, const std::string& stem, const std::stri
   const std::string cloud = file_in(in.selections_dir, stem, ".pcd");
   if (!cloud.empty() && fs::exists(cloud)) {
     const Cloud whole = load_cloud(cloud, {std::nullopt, "base"});
-    scene["cloud"] = cloud_json(around_objects(whole, scene.value("objects", Json())), in.voxel_m);
+    add_cloud(around_objects(whole, scene.value("objects", Json())), in.voxel_m, scene);
   }
   const std::string selection = file_in(in.selections_dir, stem, ".json");
   if (!selection.empty() && fs::exists(selection)) {
@@ -94,6 +113,8 @@ Json attempt_scene(const RunInputs& in, const std::string& stem, const std::stri
     scene["hands"] = hand_table(grasps, selection);
     scene["executed"] = executed_index(grasps, attempt);
   }
+  const std::string path = file_in(in.selections_dir, stem, "-path.json");
+  if (!path.empty() && fs::exists(path)) scene["path"] = arm_path(path);
   const std::string picture = file_in(in.pictures_dir, stem, ".png");
   if (!picture.empty() && fs::exists(picture)) scene["picture"] = png_data_uri(picture);
   return scene;
@@ -155,6 +176,18 @@ bool is_isolation_report(const Json& document) {
          document.contains("attempts") && document["attempts"].is_array();
 }
 
+// The table and box of the scene the report's tree gave its cell (null when the tree or the
+// scene cannot be read: the page then draws none).
+Json report_fixtures(const Json& report) {
+  try {
+    const YAML::Node tree = YAML::LoadFile(report.value("tree", ""));
+    const YAML::Node scene = tree["components"]["cell"]["scene"];
+    return scene && scene.IsScalar() ? fixtures_json(scene.as<std::string>()) : Json();
+  } catch (const YAML::Exception&) {
+    return nullptr;
+  }
+}
+
 }  // namespace
 
 bool is_run_report(const Json& document) {
@@ -172,6 +205,7 @@ void add_run(const RunInputs& in, Json& data) {
   for (const std::string& dir : {in.selections_dir, in.pictures_dir})
     if (!dir.empty() && !fs::is_directory(dir)) throw Error("view: '" + dir + "' is not a folder");
   Json runs = Json::array();
+  const std::size_t first_scene = data["scenes"].size();
   for (const Group& group :
        is_isolation_report(report) ? isolation_groups(report) : clutter_groups(report)) {
     Json run = {{"title", group.title}, {"cycles", Json::array()}};
@@ -188,6 +222,9 @@ void add_run(const RunInputs& in, Json& data) {
     }
     runs.push_back(std::move(run));
   }
+  const Json fixtures = report_fixtures(report);
+  for (std::size_t k = first_scene; k < data["scenes"].size(); ++k)
+    data["scenes"][k]["fixtures"] = fixtures;
   data["run"] = {{"report", fs::path(in.report_path).filename().string()},
                  {"bench", report.value("bench", "")},
                  {"summary", report.value("summary", Json::object())},

@@ -21,7 +21,8 @@ struct RunInputs {
 /// clear-the-box run per seed, an isolation variant), each with its outcome, failure class, the
 /// cell's detail and record, and its scene's index. An attempt's scene holds the cloud it
 /// captured (SEL/STEM.pcd), its selection (SEL/STEM.json) with the executed grasp marked, where
-/// the objects lay (SEL/STEM-objects.json) and its picture (PIC/STEM.png), each when present;
+/// the objects lay (SEL/STEM-objects.json), the arm's planned path (SEL/STEM-path.json) and its
+/// picture (PIC/STEM.png), each when present;
 /// STEM is seed-S-cycle-NN for a cycle, VARIANT-OBJECT-poseK for an isolation attempt. Throws
 /// antipode::Error naming the file at fault: a report of another kind, or a malformed file.
 void add_run(const RunInputs& inputs, nlohmann::ordered_json& data);

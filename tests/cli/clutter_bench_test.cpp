@@ -381,8 +381,9 @@ TEST_F(ClutterBenchTest, PicturesShowEveryFailedAttempt) {
 }
 
 // --selections writes, for every cycle that chose a grasp, what the selection kept - in rank
-// order, the executed grasp among them - and what it dropped, with the reasons; and for every
-// cycle the cloud it captured and where the objects lay. The run is the same without.
+// order, the executed grasp among them - and what it dropped, with the reasons; for every
+// cycle the cloud it captured and where the objects lay; and for every cycle that executed a
+// grasp the arm's planned path to it. The run is the same without.
 TEST_F(ClutterBenchTest, SelectionsAreWrittenForEveryAttempt) {
   const std::string folder = file("selections");
   const std::string args = "--runs 1 --objects-per-run 3 --seed 2001";
@@ -396,6 +397,7 @@ TEST_F(ClutterBenchTest, SelectionsAreWrittenForEveryAttempt) {
     std::snprintf(stem, sizeof stem, "seed-2001-cycle-%02zu", c + 1);
     expected.insert(std::string(stem) + ".pcd");
     expected.insert(std::string(stem) + "-objects.json");
+    if (cycles[c].contains("record")) expected.insert(std::string(stem) + "-path.json");  // planned
     if (cycles[c]["outcome"] == "no grasp found") continue;  // no selection to write
     const std::string name = std::string(stem) + ".json";
     expected.insert(name);

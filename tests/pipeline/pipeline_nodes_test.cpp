@@ -11,6 +11,7 @@
 
 #include "antipode/bt/loader.hpp"
 #include "antipode/core/error.hpp"
+#include "antipode/core/trajectory.hpp"
 #include "antipode/geometry/hand_body.hpp"
 #include "antipode/interfaces/clearing_run.hpp"
 #include "antipode/interfaces/grasp_attempt.hpp"
@@ -396,6 +397,47 @@ TEST_F(PipelineNodesTest, ClearBoxNamesEachCyclesCloudAndObjectsFiles) {
   }
   EXPECT_FALSE(std::filesystem::exists(prefix + "cycle-04.pcd"));
   std::filesystem::remove_all(dir);
+}
+
+// WriteArmPath: where Baxter's links are along a motion, by forward kinematics - the tip at
+// the check values of shared/reference/baxter.md (right_hand in base, at q = 0 and neutral).
+TEST_F(PipelineNodesTest, WriteArmPathPutsTheLinksWhereForwardKinematicsDoes) {
+  const auto file =
+      std::filesystem::temp_directory_path() / ("arm_path_" + std::to_string(::getpid()) + ".json");
+  bt::Tree tree = load(std::string(R"(
+main: t
+trees:
+  t:
+    WriteArmPath: { trajectory: "{motion}", robot: ")") +
+                       ANTIPODE_TEST_SOURCE_DIR + R"(/robots/baxter/baxter.urdf",
+                    arm_tip: right_hand, file: "{file}" }
+)");
+  Trajectory motion;
+  motion.joint_names = {"right_s0", "right_s1", "right_e0", "right_e1",
+                        "right_w0", "right_w1", "right_w2"};
+  motion.positions_rad = {{0, 0, 0, 0, 0, 0, 0}, {0, -0.55, 0, 0.75, 0, 1.26, 0}};
+  motion.times_s = {0.0, 1.5};
+  tree.blackboard().set<Trajectory>("motion", motion);
+  tree.blackboard().set<std::string>("file", file.string());
+  ASSERT_EQ(tree.tick_while_running(), bt::Status::kSuccess);
+  std::ifstream in(file);
+  const auto path = nlohmann::json::parse(in);
+  ASSERT_EQ(path["waypoints"].size(), 2u);
+  EXPECT_EQ(path["links"].back(), "right_hand");
+  EXPECT_EQ(path["waypoints"][1]["time_s"], 1.5);
+  const auto expect_at = [](const nlohmann::json& p, double x, double y, double z) {
+    EXPECT_NEAR(p[0].get<double>(), x, 1e-4) << p;
+    EXPECT_NEAR(p[1].get<double>(), y, 1e-4) << p;
+    EXPECT_NEAR(p[2].get<double>(), z, 1e-4) << p;
+  };
+  expect_at(path["waypoints"][0]["links_m"].back(), 0.79746, -0.99246, 0.32098);
+  expect_at(path["waypoints"][1]["links_m"].back(), 0.63393, -0.82893, 0.21935);
+  const auto& links = path["links"];
+  const auto shoulder = std::find(links.begin(), links.end(), "right_upper_shoulder");
+  ASSERT_NE(shoulder, links.end());
+  expect_at(path["waypoints"][0]["links_m"][std::size_t(shoulder - links.begin())], 0.06403,
+            -0.25903, 0.12963);
+  std::filesystem::remove(file);
 }
 
 TEST_F(PipelineNodesTest, ClearBoxStopsAfterConsecutiveCyclesWithoutAGrasp) {

@@ -1,7 +1,8 @@
 // `antipode view` of runs in Chromium. A clear-the-box report with its --selections and
 // --pictures folders: the page lists every cycle; choosing a failed attempt shows its scene
 // (the cloud the cycle captured, its selection, the grasp it tried) and its reason and record
-// as the report has them. An isolation report: its attempts by variant, each with its scene. A tree run's trace: the tree as a diagram, stepped to the node that
+// as the report has them. An isolation report: its attempts by variant, each with its scene.
+// A scene file: built, seen, with its objects and box. A tree run's trace: the tree as a diagram, stepped to the node that
 // failed. Bad input is one error line.
 import assert from 'node:assert/strict';
 import { readFileSync, readdirSync, writeFileSync } from 'node:fs';
@@ -19,7 +20,7 @@ const cycles = report.run_records[0].cycles;
 const failed = cycles.findIndex((c) => c.record && c.outcome !== 'success');
 assert.ok(failed >= 0, 'the run has no failed attempt: ' + cycles.map((c) => c.reason).join(', '));
 const stem = `seed-2002-cycle-${String(failed + 1).padStart(2, '0')}`;
-for (const suffix of ['.json', '.pcd', '-objects.json'])
+for (const suffix of ['.json', '.pcd', '-objects.json', '-path.json'])
   assert.ok(readdirSync(file('sel')).includes(stem + suffix), `no ${stem}${suffix}`);
 
 const browser = await launch();
@@ -48,6 +49,10 @@ try {
   assert.deepEqual(selection[state.executed].position_m.map(Math.fround), tried);
   assert.equal(state.facts.executed, 'yes: the grasp the cycle tried');
   assert.equal(await page.$$eval('#cycle-detail img', (i) => i.length), 1, 'no picture of the failed attempt');
+  // The arm's planned path to the grasp it tried.
+  const path = JSON.parse(readFileSync(file(join('sel', stem + '-path.json')), 'utf8'));
+  assert.equal(await page.evaluate(() => window.antipodeView.waypoints()), path.waypoints.length);
+  assert.ok(path.waypoints.length >= 2);
   assert.ok((await drawnPixels(page)) > 1000, 'the cycle view is blank');
   await page.screenshot({ path: file('run-page.jpg'), type: 'jpeg', quality: 80 });
   console.log(`clear the box: cycle ${failed + 1} of ${cycles.length}, ${cycles[failed].reason}: ` +
@@ -71,6 +76,18 @@ try {
   assert.equal(await isoPage.evaluate(() => window.antipodeView.hands), isoHands);
   assert.ok((await isoPage.evaluate(() => window.antipodeView.points)) > 1000, 'the attempt shows no cloud');
   await isoPage.close();
+
+  // A scene file: the scene built and seen by every camera, where its objects lie, its box.
+  assert.equal(antipode('view', join(args.source, 'scenes', 'clear_box_procedural.yaml'), '--out', file('scene.html')).code, 0);
+  const scenePage = await openPage(browser, file('scene.html'));
+  const shown = await scenePage.evaluate(() => {
+    const data = JSON.parse(document.getElementById('antipode-data').textContent);
+    return { points: window.antipodeView.points, objects: data.scenes[0].objects.length, box: data.scenes[0].fixtures.box };
+  });
+  assert.ok(shown.points > 10000, 'the scene shows no cloud');
+  assert.equal(shown.objects, 10, 'the scene file drops ten objects');
+  assert.deepEqual(shown.box.inner_size_m, [0.3, 0.3]);
+  await scenePage.close();
 
   // The trace.
   const detect = antipode('run', join(args.source, 'trees', 'detect.yaml'), '--set',
@@ -103,5 +120,7 @@ expectRefused([
   [['view', file('bad.jsonl')], 'bad.jsonl:2: not a status change'],
   [['view', file('run.json'), '--selections', file('nowhere')], "'" + file('nowhere') + "' is not a folder"],
   [['view', file('run.json'), join(args.data, 'clouds', 'table_mug.pcd')], "a report's attempts bring their own clouds"],
+  [['view', join(args.source, 'scenes', 'room.yaml'), file('run.json')], 'a scene file is shown alone'],
+  [['view', file('nowhere.yaml')], "scene '" + file('nowhere.yaml') + "': no such file"],
 ]);
 console.log('viewer (runs and traces): all checks passed');

@@ -1,8 +1,8 @@
 // `antipode view` of detections in Chromium: a page of 300,000 points and 5,000 hands loads
 // offline (no request leaves the page), draws, and answers a click on a hand with that hand's
 // facts; the filters show and hide hands; the page of a real detection shows every hand of its
-// file, its chosen grasp's rank and score, and why each hand around it was dropped; bad input
-// is one error line.
+// file, its chosen grasp's rank and score, why each hand around it was dropped, and the cloud's
+// support and object segments; bad input is one error line.
 import assert from 'node:assert/strict';
 import { readFileSync, writeFileSync } from 'node:fs';
 import { join } from 'node:path';
@@ -68,6 +68,12 @@ try {
   assert.deepEqual(new Set(listed), reasons);
   assert.ok((await drawnPixels(mug)) > 1000, 'the mug view is blank');
 
+  // Coloured by segment: the table is the support and holds most points, the mug is one object.
+  await mug.selectOption('#cloud-colour', 'segment');
+  const segments = await mug.evaluate(() => window.antipodeView.segmentCounts());
+  assert.ok(segments['-1'] > segments['0'] && segments['0'] > 1000, JSON.stringify(segments));
+  assert.equal(segments['1'], undefined, 'the mug alone on the table is one segment');
+
   const best = found.findIndex((h) => h.rank === 1);
   const chosen = await mug.evaluate(() => window.antipodeView.chosen());
   assert.deepEqual(chosen, { index: best, rank: 1, score: Math.fround(found[best].score) });
@@ -107,7 +113,7 @@ try {
 // 5. Bad input: one error line naming the input, exit 2, and no page written.
 writeFileSync(file('not-grasps.json'), '{"grasps": []}');
 expectRefused([
-  [['view', file('scene.yaml')], "'" + file('scene.yaml') + "': not a cloud (.pcd, .ply), a grasps file"],
+  [['view', file('notes.txt')], "'" + file('notes.txt') + "': not a cloud (.pcd, .ply), a grasps file"],
   [['view', file('grasps.json')], 'give the cloud'],
   [['view', file('cloud.ply'), file('cloud.ply')], 'a second cloud'],
   [['view', file('cloud.ply'), file('mug.html') + '.json'], 'mug.html.json'],

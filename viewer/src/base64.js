@@ -14,3 +14,9 @@ export function decodeFloat32(text) {
   return new Float32Array(bytes.buffer, 0, bytes.length / 4);
 }
 
+
+/** Int16Array of the base64 text of little-endian 16-bit integers. */
+export function decodeInt16(text) {
+  const bytes = bytesOf(text);
+  return new Int16Array(bytes.buffer, 0, bytes.length / 2);
+}

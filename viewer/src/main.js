@@ -79,6 +79,14 @@ const panel = buildPanel(document.getElementById('panel'), data, {
     layers?.showHands(visible);
     render();
   },
+  armAt: (k) => {
+    layers?.armAt(k);
+    render();
+  },
+  showSupport: (shown) => {
+    layers?.showSupport(shown);
+    render();
+  },
 });
 
 function showScene(k) {
@@ -171,6 +179,15 @@ window.antipodeView = {
   },
   // The hands around hand i, as the panel lists them: [{index, distance_m, rejection}].
   neighbours: (i) => neighbours(hands, i, NEIGHBOUR_RADIUS_M),
+  // How many points of the scene shown have each label: {segment id: count}, -1 the support,
+  // -2 the rest ({} when the page has no segments).
+  segmentCounts() {
+    const counts = {};
+    for (const label of layers?.cloud.segments || []) counts[label] = (counts[label] || 0) + 1;
+    return counts;
+  },
+  // The waypoints of the arm's planned path in the scene shown (0 without one).
+  waypoints: () => scenes[current]?.path?.waypoints.length ?? 0,
   // The scene's executed grasp, or -1.
   executed: () => scenes[current]?.executed ?? -1,
   showScene,

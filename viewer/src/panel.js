@@ -66,7 +66,8 @@ export function handFacts(hands, index, executed) {
 
 /**
  * Builds the panel into `root` for the page's title; `draw` holds colourCloud(mode),
- * colourHands(mode, reasons) and showHands(visible(hand, i)). Returns {setScene(scene,
+ * colourHands(mode, reasons), showHands(visible(hand, i)), showSupport(shown) and
+ * armAt(waypoint). Returns {setScene(scene,
  * hands), showHand(i), selectHand(i)}: setScene rebuilds the per-scene part.
  */
 export function buildPanel(root, data, draw) {
@@ -74,8 +75,15 @@ export function buildPanel(root, data, draw) {
   const summary = root.appendChild(element('p', { id: 'summary' }));
   const cloudMode = select(root, 'cloud-colour', 'cloud colour', [
     ['height', 'height'],
+    ['segment', 'object segment'],
     ['grey', 'grey'],
   ]);
+  const supportRow = root.appendChild(element('label', {}, ' the support'));
+  const supportShown = supportRow.insertBefore(element('input', { id: 'support', type: 'checkbox' }), supportRow.firstChild);
+  supportShown.checked = true;
+  const armRow = root.appendChild(element('label', {}, 'arm along its planned path '));
+  const armAt = armRow.appendChild(element('input', { id: 'arm-waypoint', type: 'range', min: 0, value: 0 }));
+  armAt.addEventListener('input', () => draw.armAt(Number(armAt.value)));
   const handMode = select(root, 'hand-colour', 'hand colour', [
     ['score', 'score'],
     ['reason', 'rejection reason'],
@@ -84,6 +92,7 @@ export function buildPanel(root, data, draw) {
   const rankRow = root.appendChild(element('label', {}, 'best hands shown '));
   const best = rankRow.appendChild(element('input', { id: 'best', type: 'number', min: 0 }));
   const filters = root.appendChild(element('div', { id: 'filters' }));
+  const handControls = [handMode.parentElement, rankRow, filters];
   const info = root.appendChild(element('table', { id: 'hand-info' }));
   const near = root.appendChild(element('div', { id: 'neighbours' }));
   root.appendChild(element('p', { class: 'hint' }, 'Drag to turn, scroll to zoom, click a hand.'));
@@ -104,6 +113,7 @@ export function buildPanel(root, data, draw) {
     );
   };
   cloudMode.addEventListener('change', () => draw.colourCloud(cloudMode.value));
+  supportShown.addEventListener('change', () => draw.showSupport(supportShown.checked));
   handMode.addEventListener('change', apply);
   best.addEventListener('change', apply);
 
@@ -128,13 +138,19 @@ export function buildPanel(root, data, draw) {
       hands = sceneHands;
       executed = scene.executed ?? -1;
       const points = scene.cloud ? scene.cloud.count : 0;
+      const segments = scene.cloud && scene.cloud.objects !== undefined ? `, ${scene.cloud.objects} object segments` : '';
       summary.textContent =
-        `${scene.name}: ${points} points, ${hands.length} hands, frame ${scene.frame}` +
+        `${scene.name}: ${points} points${segments}, ${hands.length} hands, frame ${scene.frame}` +
         (data.gripper.name ? `, ${data.gripper.name}` : '') +
         (scene.objects ? `, ${scene.objects.length} objects` : '');
       best.value = hands.length;
       best.max = hands.length;
       filters.replaceChildren();
+      const waypoints = scene.path ? scene.path.waypoints.length : 0;
+      armRow.hidden = waypoints === 0;
+      armAt.max = Math.max(waypoints - 1, 0);
+      armAt.value = armAt.max;
+      handControls.forEach((e) => (e.hidden = hands.length === 0));
       const reasonCounts = countsOf(hands.map(reasonOf));
       reasons = [...reasonCounts.keys()];
       // The accepted hands first; the dropped ones a tick away.
@@ -147,6 +163,7 @@ export function buildPanel(root, data, draw) {
       }
       showHand(-1);
       draw.colourCloud(cloudMode.value);
+      draw.showSupport(supportShown.checked);
       apply();
     },
     showHand,

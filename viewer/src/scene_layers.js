@@ -1,9 +1,10 @@
-// What the 3D view draws of one scene: its cloud (coloured by height or grey), its hands (fingers and palm at the gripper's real size, in one mesh)
+// What the 3D view draws of one scene: its cloud (coloured by height, by object segment or
+// grey), the support's extent, the table and box of its scene file, the arm's planned path, its hands (fingers and palm at the gripper's real size, in one mesh)
 // and markers where its objects lie. Built when the scene is shown, disposed when another is.
 
 import * as THREE from 'three';
 
-import { decodeFloat32 } from './base64.js';
+import { decodeFloat32, decodeInt16 } from './base64.js';
 import { handMatrices } from './hand_geometry.js';
 import { categoryColour, scoreColour } from './colours.js';
 
@@ -22,6 +23,7 @@ function cloudLayer(cloud, up) {
     geometry,
     new THREE.PointsMaterial({ size: 2, sizeAttenuation: false, vertexColors: true }),
   );
+  const segments = cloud && cloud.segments ? decodeInt16(cloud.segments) : null;
   const count = positions.length / 3;
   const height = (i) =>
     positions[3 * i] * up.x + positions[3 * i + 1] * up.y + positions[3 * i + 2] * up.z;
@@ -35,12 +37,14 @@ function cloudLayer(cloud, up) {
     const c = new THREE.Color();
     for (let i = 0; i < count; i++) {
       if (mode === 'height') c.copy(scoreColour((height(i) - lo) / Math.max(hi - lo, 1e-9)));
+      else if (mode === 'segment' && segments)
+        segments[i] >= 0 ? c.copy(categoryColour(segments[i])) : c.setRGB(...(segments[i] === -1 ? [0.8, 0.8, 0.8] : [0.35, 0.35, 0.35]));
       else c.setRGB(0.45, 0.45, 0.45);
       c.toArray(colours, 3 * i);
     }
     geometry.attributes.color.needsUpdate = true;
   }
-  return { points, count, colour };
+  return { points, count, colour, segments };
 }
 
 // One merged geometry, not instances: software renderers (a headless browser's SwiftShader)
@@ -72,6 +76,64 @@ function handLayer(hands, gripper) {
   return { mesh, geometry, colours, perHand };
 }
 
+// The support's extent, a translucent quad (its four corners in order).
+function supportQuad(corners) {
+  const group = new THREE.Group();
+  if (!corners) return group;
+  const geometry = new THREE.BufferGeometry();
+  const [a, b, c, d] = corners;
+  geometry.setAttribute('position', new THREE.Float32BufferAttribute([...a, ...b, ...c, ...a, ...c, ...d], 3));
+  group.add(
+    new THREE.Mesh(
+      geometry,
+      new THREE.MeshBasicMaterial({ color: 0x4a90d9, transparent: true, opacity: 0.15, side: THREE.DoubleSide, depthWrite: false }),
+    ),
+  );
+  const outline = new THREE.BufferGeometry().setFromPoints([a, b, c, d, a].map((p) => new THREE.Vector3(...p)));
+  group.add(new THREE.Line(outline, new THREE.LineBasicMaterial({ color: 0x4a90d9 })));
+  return group;
+}
+
+// A scene file's table top (its outline) and box (the edges of its inside), base frame.
+function fixtureLines(fixtures) {
+  const group = new THREE.Group();
+  if (!fixtures) return group;
+  const material = new THREE.LineBasicMaterial({ color: 0x8a6d3b });
+  const edges = (size, centre) => {
+    const lines = new THREE.LineSegments(new THREE.EdgesGeometry(new THREE.BoxGeometry(...size)), material);
+    lines.position.set(...centre);
+    return lines;
+  };
+  const { table, box } = fixtures;
+  if (table) group.add(edges([table.size_m[0], table.size_m[1], 0], [table.center_m[0], table.center_m[1], table.top_z_m]));
+  if (box)
+    group.add(
+      edges(
+        [box.inner_size_m[0], box.inner_size_m[1], box.wall_height_m],
+        [box.center_m[0], box.center_m[1], box.floor_z_m + box.wall_height_m / 2],
+      ),
+    );
+  return group;
+}
+
+// The arm along its planned path: the path of its tip, and the arm itself (a line through its
+// links' origins) at a chosen waypoint.
+function armLayer(path) {
+  const group = new THREE.Group();
+  if (!path || path.waypoints.length === 0) return { group, at() {} };
+  const tip = path.waypoints.map((links) => new THREE.Vector3(...links[links.length - 1]));
+  group.add(new THREE.Line(new THREE.BufferGeometry().setFromPoints(tip), new THREE.LineDashedMaterial({ color: 0x555555 })));
+  const arm = new THREE.Line(new THREE.BufferGeometry(), new THREE.LineBasicMaterial({ color: 0xd62728, linewidth: 3 }));
+  group.add(arm);
+  const at = (k) => {
+    const links = path.waypoints[Math.min(Math.max(k, 0), path.waypoints.length - 1)];
+    arm.geometry.dispose();
+    arm.geometry = new THREE.BufferGeometry().setFromPoints(links.map((p) => new THREE.Vector3(...p)));
+  };
+  at(path.waypoints.length - 1);
+  return { group, at };
+}
+
 function objectMarkers(objects) {
   const group = new THREE.Group();
   const shape = new THREE.OctahedronGeometry(0.008);
@@ -86,13 +148,16 @@ function objectMarkers(objects) {
 /**
  * The layers of `scene` (its cloud, `hands` decoded from it, objects), added to `world`.
  * Returns {cloud, colourCloud(mode), colourHands(mode, reasons, picked), showHands(visible),
- * handAt(raycaster), dispose()}.
+ * handAt(raycaster), armAt(waypoint), showSupport(shown), dispose()}.
  */
 export function buildLayers(world, scene, hands, gripper, up) {
   const cloud = cloudLayer(scene.cloud, up);
   const handsDrawn = handLayer(hands, gripper);
   const markers = objectMarkers(scene.objects);
-  world.add(cloud.points, handsDrawn.mesh, markers);
+  const support = supportQuad(scene.support);
+  const fixtures = fixtureLines(scene.fixtures);
+  const arm = armLayer(scene.path);
+  world.add(cloud.points, handsDrawn.mesh, markers, support, fixtures, arm.group);
   const scores = hands.map((h) => (typeof h.score === 'number' ? h.score : 0));
   const scoreLo = Math.min(...scores, 0);
   const scoreHi = Math.max(...scores, 1e-9);
@@ -130,13 +195,17 @@ export function buildLayers(world, scene, hands, gripper, up) {
       handsDrawn.geometry.setIndex(new THREE.BufferAttribute(index, 1));
       handsDrawn.geometry.computeBoundingSphere();
     },
+    armAt: arm.at,
+    showSupport(shown) {
+      support.visible = shown;
+    },
     handAt(raycaster) {
       const hits = raycaster.intersectObject(handsDrawn.mesh, false);
       if (hits.length === 0) return -1;
       return Math.floor(handsDrawn.geometry.index.array[3 * hits[0].faceIndex] / handsDrawn.perHand);
     },
     dispose() {
-      world.remove(cloud.points, handsDrawn.mesh, markers);
+      world.remove(cloud.points, handsDrawn.mesh, markers, support, fixtures, arm.group);
       cloud.points.geometry.dispose();
       handsDrawn.geometry.dispose();
     },

@@ -64,6 +64,9 @@ class ClearBox final : public bt::DecoratorNode {
              bt::output_port<std::string>("objects_file",
                                           "beside the selection, the file the cycle may write "
                                           "the cell's objects to: PREFIXcycle-NN-objects.json"),
+             bt::output_port<std::string>("path_file",
+                                          "beside the selection, the file the cycle may write "
+                                          "its arm's planned path to: PREFIXcycle-NN-path.json"),
              bt::output_port<ClearingRun>("run", "the record of the run, cycle by cycle")},
             1,
             1,
@@ -147,6 +150,7 @@ class ClearBox final : public bt::DecoratorNode {
     set_output("selection", cycle_file("selection_prefix", ".json"));
     set_output("cloud_file", cycle_file("selection_prefix", ".pcd"));
     set_output("objects_file", cycle_file("selection_prefix", "-objects.json"));
+    set_output("path_file", cycle_file("selection_prefix", "-path.json"));
     cycle_started_ = true;
     cycle_start_ = std::chrono::steady_clock::now();
     objects_before_ = run_.objects_left();

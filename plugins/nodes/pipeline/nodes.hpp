@@ -19,6 +19,7 @@ void register_try_grasps(bt::NodeRegistry& registry);
 void register_write_grasps(bt::NodeRegistry& registry);
 void register_write_cloud(bt::NodeRegistry& registry);
 void register_write_objects(bt::NodeRegistry& registry);
+void register_write_arm_path(bt::NodeRegistry& registry);
 void register_read_grasps(bt::NodeRegistry& registry);
 void register_reset_scene(bt::NodeRegistry& registry);
 void register_select_views(bt::NodeRegistry& registry);

@@ -20,6 +20,8 @@ const antipode::PluginFactory kFactories[] = {
     {"node", "WriteGrasps", "writes hands to JSON", nullptr, &register_write_grasps},
     {"node", "WriteCloud", "writes a cloud to PCD", nullptr, &register_write_cloud},
     {"node", "WriteObjects", "writes where a cell's objects lie", nullptr, &register_write_objects},
+    {"node", "WriteArmPath", "writes where an arm's links pass along a motion", nullptr,
+     &register_write_arm_path},
     {"node", "ReadGrasps", "reads hands from JSON", nullptr, &register_read_grasps},
     {"node", "SelectViews", "keeps the points of some views", nullptr, &register_select_views},
     {"node", "ResetScene", "rebuilds a cell's scene from a seed", nullptr, &register_reset_scene},

@@ -1,11 +1,10 @@
 #include <algorithm>
-#include <fstream>
 #include <vector>
 
 #include <nlohmann/json.hpp>
 
 #include "antipode/bt/action_node.hpp"
-#include "antipode/core/atomic_file.hpp"
+#include "json_output.hpp"
 #include "nodes.hpp"
 
 namespace antipode::pipeline {
@@ -102,12 +101,7 @@ class WriteGrasps final : public bt::SyncActionNode {
     }
     const std::string frame = set->cloud ? set->cloud->frame : std::string();
     const nlohmann::json document = {{"frame", frame}, {"count", hands.size()}, {"hands", hands}};
-    write_file_atomically(file, [&](const std::string& temporary) {
-      std::ofstream out(temporary);
-      out << document.dump(1) << "\n";
-      out.close();  // flushes: a failure to write the last bytes shows here
-      if (!out) throw Error("write failed");
-    });
+    write_json_file(file, document);
     log(std::to_string(hands.size()) + " hands written to " + file);
     return bt::Status::kSuccess;
   }

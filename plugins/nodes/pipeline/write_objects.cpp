@@ -1,11 +1,8 @@
-#include <fstream>
-
 #include <nlohmann/json.hpp>
 
 #include "antipode/bt/action_node.hpp"
-#include "antipode/core/atomic_file.hpp"
-#include "antipode/core/error.hpp"
 #include "antipode/interfaces/cell.hpp"
+#include "json_output.hpp"
 #include "nodes.hpp"
 
 namespace antipode::pipeline {
@@ -43,12 +40,7 @@ class WriteObjects final : public bt::SyncActionNode {
                          {"narrowest_horizontal_m", object.narrowest_horizontal_m}});
     }
     const nlohmann::ordered_json document = {{"frame", "base"}, {"objects", objects}};
-    write_file_atomically(file, [&](const std::string& temporary) {
-      std::ofstream out(temporary);
-      out << document.dump(1) << "\n";
-      out.close();
-      if (!out) throw Error("write failed");
-    });
+    write_json_file(file, document);
     log(std::to_string(objects.size()) + " objects written to " + file);
     return bt::Status::kSuccess;
   }
