@@ -42,7 +42,12 @@ Json cloud_json(const Cloud& cloud) {
   std::vector<float> xyz;
   xyz.reserve(3 * cloud.points_m.size());
   for (const Eigen::Vector3f& p : cloud.points_m) xyz.insert(xyz.end(), {p.x(), p.y(), p.z()});
-  return {{"count", cloud.points_m.size()}, {"points", base64(xyz.data(), 4 * xyz.size())}};
+  Json out = {{"count", cloud.points_m.size()}, {"points", base64(xyz.data(), 4 * xyz.size())}};
+  const auto& masks = cloud.view_masks;
+  if (masks.size() == cloud.size() &&
+      std::any_of(masks.begin(), masks.end(), [&](std::uint32_t m) { return m != masks.front(); }))
+    out["views"] = base64(masks.data(), 4 * masks.size());
+  return out;
 }
 
 Json hand_table(const Json& grasps, const std::string& path) {

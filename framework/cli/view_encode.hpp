@@ -20,7 +20,9 @@ int name_index(const std::string& name, nlohmann::ordered_json& names,
 /// Base64 (RFC 4648, no line breaks) of `size` bytes.
 std::string base64(const void* bytes, std::size_t size);
 
-/// {"count", "points": base64 float32 x, y, z per point, metres}.
+/// {"count", "points": base64 float32 x, y, z per point, metres} and, when the points were
+/// not all seen by the same views, "views": base64 uint32 per point, its view mask (bit k:
+/// view k saw it).
 nlohmann::ordered_json cloud_json(const Cloud& cloud);
 
 /// The hands of a grasps file (`antipode detect --out`, WriteGrasps) as columns: "count";

@@ -48,6 +48,12 @@ try {
   const tried = cycles[failed].hand.position_m.map(Math.fround);
   assert.deepEqual(selection[state.executed].position_m.map(Math.fround), tried);
   assert.equal(state.facts.executed, 'yes: the grasp the cycle tried');
+  assert.equal(state.facts['failure class'], cycles[failed].reason);  // its attempt record too
+  assert.equal(state.facts.lift_m, cycles[failed].record.lift_m.toFixed(4));
+  // The cell's two cameras: points seen by the left, by the right and by both.
+  await page.selectOption('#cloud-colour', 'view');
+  const views = await page.evaluate(() => window.antipodeView.viewCounts());
+  assert.deepEqual(Object.keys(views).sort(), ['1', '2', '3'], JSON.stringify(views));
   assert.equal(await page.$$eval('#cycle-detail img', (i) => i.length), 1, 'no picture of the failed attempt');
   // The arm's planned path to the grasp it tried.
   const path = JSON.parse(readFileSync(file(join('sel', stem + '-path.json')), 'utf8'));

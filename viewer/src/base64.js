@@ -20,3 +20,9 @@ export function decodeInt16(text) {
   const bytes = bytesOf(text);
   return new Int16Array(bytes.buffer, 0, bytes.length / 2);
 }
+
+/** Uint32Array of the base64 text of little-endian 32-bit unsigned integers. */
+export function decodeUint32(text) {
+  const bytes = bytesOf(text);
+  return new Uint32Array(bytes.buffer, 0, bytes.length / 4);
+}

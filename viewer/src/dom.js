@@ -20,3 +20,13 @@ export function factRows(table, facts) {
 
 export const number = (v, digits = 4) => (typeof v === 'number' ? v.toFixed(digits) : String(v));
 export const vector = (v) => (Array.isArray(v) ? '[' + v.map((x) => number(x)).join(', ') + ']' : '-');
+
+/** The cell's record of an attempt as [key, value] rows, lists joined and empty ones left out. */
+export function recordFacts(record) {
+  const facts = [];
+  for (const [key, value] of Object.entries(record || {})) {
+    if (value === null || value === '' || (Array.isArray(value) && value.length === 0)) continue;
+    facts.push([key, Array.isArray(value) ? value.join(', ') : typeof value === 'number' ? number(value) : String(value)]);
+  }
+  return facts;
+}

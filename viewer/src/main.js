@@ -171,7 +171,7 @@ window.antipodeView = {
     return [rect.left + ((ndc.x + 1) / 2) * rect.width, rect.top + ((1 - ndc.y) / 2) * rect.height];
   },
   // What the panel says of hand i, as {key: value}.
-  facts: (i) => Object.fromEntries(handFacts(hands, i, scenes[current]?.executed ?? -1)),
+  facts: (i) => Object.fromEntries(handFacts(hands, i, scenes[current] || {})),
   // The chosen grasp (rank 1) of the scene shown: {index, rank, score}, or null.
   chosen() {
     const i = hands.findIndex((h) => h.rank === 1);
@@ -184,6 +184,12 @@ window.antipodeView = {
   segmentCounts() {
     const counts = {};
     for (const label of layers?.cloud.segments || []) counts[label] = (counts[label] || 0) + 1;
+    return counts;
+  },
+  // How many points of the scene shown each view mask has: {mask: count} ({} without views).
+  viewCounts() {
+    const counts = {};
+    for (const mask of layers?.cloud.views || []) counts[mask] = (counts[mask] || 0) + 1;
     return counts;
   },
   // The waypoints of the arm's planned path in the scene shown (0 without one).

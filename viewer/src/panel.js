@@ -3,7 +3,7 @@
 // hands around it and why each was dropped.
 
 import { categoryColour } from './colours.js';
-import { element, factRows, number, vector } from './dom.js';
+import { element, factRows, number, recordFacts, vector } from './dom.js';
 import { approachOf, neighbours } from './hand_table.js';
 
 /** How far around a clicked hand its neighbours are listed (m). */
@@ -45,8 +45,12 @@ function countsOf(values) {
 
 export const reasonOf = (hand) => hand.rejection || 'accepted';
 
-/** One [key, value] per fact of hand `index` of `hands` (`executed`: the scene's executed hand). */
-export function handFacts(hands, index, executed) {
+/**
+ * One [key, value] per fact of hand `index` of `hands` in `scene`: for the grasp the scene's
+ * attempt executed, also the attempt's outcome, failure class and the cell's record.
+ */
+export function handFacts(hands, index, scene) {
+  const executed = scene.executed ?? -1;
   const hand = hands[index];
   const facts = [
     ['hand', String(index)],
@@ -60,7 +64,11 @@ export function handFacts(hands, index, executed) {
   if (hand.object !== undefined) facts.push(['object', String(hand.object)]);
   if (hand.label !== undefined) facts.push(['label', hand.label]);
   facts.push(['rejection', hand.rejection || 'none (accepted)']);
-  if (index === executed) facts.push(['executed', 'yes: the grasp the cycle tried']);
+  if (index === executed) {
+    facts.push(['executed', 'yes: the grasp the cycle tried']);
+    if (scene.attempt) facts.push(['outcome', scene.attempt.outcome], ['failure class', scene.attempt.reason]);
+    for (const [key, value] of recordFacts(scene.attempt?.record)) facts.push([key, value]);
+  }
   return facts;
 }
 
@@ -76,6 +84,7 @@ export function buildPanel(root, data, draw) {
   const cloudMode = select(root, 'cloud-colour', 'cloud colour', [
     ['height', 'height'],
     ['segment', 'object segment'],
+    ['view', 'the views that saw it'],
     ['grey', 'grey'],
   ]);
   const supportRow = root.appendChild(element('label', {}, ' the support'));
@@ -98,7 +107,7 @@ export function buildPanel(root, data, draw) {
   root.appendChild(element('p', { class: 'hint' }, 'Drag to turn, scroll to zoom, click a hand.'));
 
   let hands = [];
-  let executed = -1;
+  let shownScene = {};
   let reasons = [];
   let shownReasons = new Set();
   let shownObjects = null;
@@ -121,7 +130,7 @@ export function buildPanel(root, data, draw) {
     info.replaceChildren();
     near.replaceChildren();
     if (index < 0) return;
-    factRows(info, handFacts(hands, index, executed));
+    factRows(info, handFacts(hands, index, shownScene));
     const around = neighbours(hands, index, NEIGHBOUR_RADIUS_M);
     near.appendChild(
       element('p', {}, `${around.length} hands within ${NEIGHBOUR_RADIUS_M * 100} cm` + (around.length ? ':' : '')),
@@ -136,7 +145,7 @@ export function buildPanel(root, data, draw) {
   return {
     setScene(scene, sceneHands) {
       hands = sceneHands;
-      executed = scene.executed ?? -1;
+      shownScene = scene;
       const points = scene.cloud ? scene.cloud.count : 0;
       const segments = scene.cloud && scene.cloud.objects !== undefined ? `, ${scene.cloud.objects} object segments` : '';
       summary.textContent =
@@ -162,6 +171,8 @@ export function buildPanel(root, data, draw) {
         shownObjects = checklist(filters, 'objects', 'hands by object', [...objectCounts.keys()], objectCounts, apply);
       }
       showHand(-1);
+      cloudMode.querySelector('option[value="view"]').disabled = !(scene.cloud && scene.cloud.views);
+      if (cloudMode.value === 'view' && !(scene.cloud && scene.cloud.views)) cloudMode.value = 'height';
       draw.colourCloud(cloudMode.value);
       draw.showSupport(supportShown.checked);
       apply();

@@ -3,17 +3,7 @@
 // it captured, its selection and the grasp it tried) and what happened: the outcome, its
 // failure class, the cell's detail and record, and its picture.
 
-import { element, factRows, number } from './dom.js';
-
-// The cell's record (docs/bench.md) as [key, value] rows, lists joined and empty ones left out.
-function recordFacts(record) {
-  const facts = [];
-  for (const [key, value] of Object.entries(record || {})) {
-    if (value === null || value === '' || (Array.isArray(value) && value.length === 0)) continue;
-    facts.push([key, Array.isArray(value) ? value.join(', ') : typeof value === 'number' ? number(value) : String(value)]);
-  }
-  return facts;
-}
+import { element, factRows, recordFacts } from './dom.js';
 
 /**
  * Builds the run's list into `root`; `choose(sceneIndex)` shows one of `scenes`. Returns

@@ -1,10 +1,10 @@
-// What the 3D view draws of one scene: its cloud (coloured by height, by object segment or
-// grey), the support's extent, the table and box of its scene file, the arm's planned path, its hands (fingers and palm at the gripper's real size, in one mesh)
+// What the 3D view draws of one scene: its cloud (coloured by height, by the views that saw
+// each point, by object segment or grey), the support's extent, the table and box of its scene file, the arm's planned path, its hands (fingers and palm at the gripper's real size, in one mesh)
 // and markers where its objects lie. Built when the scene is shown, disposed when another is.
 
 import * as THREE from 'three';
 
-import { decodeFloat32, decodeInt16 } from './base64.js';
+import { decodeFloat32, decodeInt16, decodeUint32 } from './base64.js';
 import { handMatrices } from './hand_geometry.js';
 import { categoryColour, scoreColour } from './colours.js';
 
@@ -24,6 +24,7 @@ function cloudLayer(cloud, up) {
     new THREE.PointsMaterial({ size: 2, sizeAttenuation: false, vertexColors: true }),
   );
   const segments = cloud && cloud.segments ? decodeInt16(cloud.segments) : null;
+  const views = cloud && cloud.views ? decodeUint32(cloud.views) : null;
   const count = positions.length / 3;
   const height = (i) =>
     positions[3 * i] * up.x + positions[3 * i + 1] * up.y + positions[3 * i + 2] * up.z;
@@ -37,6 +38,7 @@ function cloudLayer(cloud, up) {
     const c = new THREE.Color();
     for (let i = 0; i < count; i++) {
       if (mode === 'height') c.copy(scoreColour((height(i) - lo) / Math.max(hi - lo, 1e-9)));
+      else if (mode === 'view' && views) c.copy(categoryColour(views[i] - 1)); // 1, 2, both: 3
       else if (mode === 'segment' && segments)
         segments[i] >= 0 ? c.copy(categoryColour(segments[i])) : c.setRGB(...(segments[i] === -1 ? [0.8, 0.8, 0.8] : [0.35, 0.35, 0.35]));
       else c.setRGB(0.45, 0.45, 0.45);
@@ -44,7 +46,7 @@ function cloudLayer(cloud, up) {
     }
     geometry.attributes.color.needsUpdate = true;
   }
-  return { points, count, colour, segments };
+  return { points, count, colour, segments, views };
 }
 
 // One merged geometry, not instances: software renderers (a headless browser's SwiftShader)
