@@ -48,6 +48,7 @@ Json gripper_json(const std::string& path) {
 // with neither.
 struct Inputs {
   std::string cloud, grasps, report, trace, scene;
+  Json document;  ///< the grasps file's or the report's content, read once
 };
 
 const char* kAccepted =
@@ -67,8 +68,10 @@ Inputs sort_inputs(const std::vector<std::string>& paths) {
     } else if (extension == ".yaml" || extension == ".yml") {
       slot = &in.scene, kind = "scene file";
     } else if (extension == ".json") {
-      const bool report = is_run_report(evaluation::read_json_file(path, "a grasps file"));
+      Json document = evaluation::read_json_file(path, "a grasps file or a bench report");
+      const bool report = is_run_report(document);
       slot = report ? &in.report : &in.grasps, kind = report ? "report" : "grasps file";
+      if (slot->empty()) in.document = std::move(document);
     } else {
       throw Error("view: '" + path + "': not " + kAccepted);
     }
@@ -98,7 +101,7 @@ Json detection_scene(const Inputs& in) {
   Json scene = {{"name", fs::path(in.cloud).filename().string()}, {"frame", "sensor"}};
   add_cloud(load_cloud(in.cloud), 0.0, scene);
   if (!in.grasps.empty()) {
-    const Json grasps = evaluation::read_json_file(in.grasps, "a grasps file");
+    const Json& grasps = in.document;
     scene["hands"] = hand_table(grasps, in.grasps);
     if (grasps.contains("frame") && grasps["frame"].is_string()) scene["frame"] = grasps["frame"];
     scene["name"] =
@@ -125,7 +128,8 @@ Json view_data(const ViewOptions& options) {
     data["title"] = data["scenes"][0]["name"];
   }
   if (!in.report.empty()) {
-    add_run({in.report, options.selections_dir, options.pictures_dir, options.voxel_m}, data);
+    add_run({in.report, options.selections_dir, options.pictures_dir, options.voxel_m}, in.document,
+            data);
     data["title"] = fs::path(in.report).filename().string();
   }
   if (!in.trace.empty()) {

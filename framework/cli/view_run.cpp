@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -77,22 +76,6 @@ Cloud around_objects(const Cloud& cloud, const Json& objects) {
   return box.min_m.x() <= box.max_m.x() ? crop(cloud, box) : cloud;
 }
 
-// The view masks of a cycle's cloud: the `view` field save_cloud_pcd writes after x, y, z (a
-// binary PCD of 16 bytes a point), which load_cloud does not read. Empty for another layout.
-std::vector<std::uint32_t> view_masks(const std::string& path, std::size_t count) {
-  std::ifstream in(path, std::ios::binary);
-  std::string line;
-  bool ours = false;
-  while (std::getline(in, line) && line.rfind("DATA ", 0) != 0)
-    if (line == "FIELDS x y z view") ours = true;
-  if (!ours || line != "DATA binary") return {};
-  std::vector<char> data(16 * count);
-  if (!in.read(data.data(), std::streamsize(data.size()))) return {};
-  std::vector<std::uint32_t> masks(count);
-  for (std::size_t i = 0; i < count; ++i) std::memcpy(&masks[i], &data[16 * i + 12], 4);
-  return masks;
-}
-
 // The arm's planned path (WriteArmPath's file): its links' positions at each waypoint.
 Json arm_path(const std::string& path) {
   const Json document = evaluation::read_json_file(path, "an arm's path");
@@ -122,9 +105,7 @@ Json attempt_scene(const RunInputs& in, const std::string& stem, const std::stri
   const std::string cloud = file_in(in.selections_dir, stem, ".pcd");
   if (!cloud.empty() && fs::exists(cloud)) {
     Cloud whole = load_cloud(cloud, {std::nullopt, "base"});
-    // Every point of a cell's cloud is finite, so load_cloud kept them all, in order.
-    if (auto masks = view_masks(cloud, whole.size()); !masks.empty())
-      whole.view_masks = std::move(masks);
+    if (auto masks = load_view_masks(cloud); !masks.empty()) whole.view_masks = std::move(masks);
     add_cloud(around_objects(whole, scene.value("objects", Json())), in.voxel_m, scene);
   }
   const std::string selection = file_in(in.selections_dir, stem, ".json");
@@ -220,8 +201,7 @@ bool is_run_report(const Json& document) {
           document.contains("run_records") && document["run_records"].is_array());
 }
 
-void add_run(const RunInputs& in, Json& data) {
-  const Json report = evaluation::read_json_file(in.report_path, "a bench report");
+void add_run(const RunInputs& in, const Json& report, Json& data) {
   if (!is_run_report(report))
     throw Error(in.report_path +
                 ": not a report of `antipode bench clutter` or `bench isolation` (no "

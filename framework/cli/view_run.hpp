@@ -16,16 +16,17 @@ struct RunInputs {
   double voxel_m = 0.005;      ///< each cycle's cloud thinned to a point per voxel (0: all)
 };
 
-/// Appends one scene per attempt (a clear-the-box cycle, an isolation attempt) to
-/// `data["scenes"]` and sets `data["run"]` (docs/viewer.md): the attempts in groups (a
-/// clear-the-box run per seed, an isolation variant), each with its outcome, failure class, the
-/// cell's detail and record, and its scene's index. An attempt's scene holds the cloud it
-/// captured (SEL/STEM.pcd), its selection (SEL/STEM.json) with the executed grasp marked, where
-/// the objects lay (SEL/STEM-objects.json), the arm's planned path (SEL/STEM-path.json) and its
-/// picture (PIC/STEM.png), each when present;
-/// STEM is seed-S-cycle-NN for a cycle, VARIANT-OBJECT-poseK for an isolation attempt. Throws
-/// antipode::Error naming the file at fault: a report of another kind, or a malformed file.
-void add_run(const RunInputs& inputs, nlohmann::ordered_json& data);
+/// For the bench report `report` (read from inputs.report_path): appends one scene per attempt (a
+/// clear-the-box cycle, an isolation attempt) to `data["scenes"]` and sets `data["run"]`
+/// (docs/viewer.md): the attempts in groups (a clear-the-box run per seed, an isolation variant),
+/// each with its outcome, failure class, the cell's detail and record, and its scene's index. An
+/// attempt's scene holds the cloud it captured (SEL/STEM.pcd), its selection (SEL/STEM.json) with
+/// the executed grasp marked, where the objects lay (SEL/STEM-objects.json), the arm's planned path
+/// (SEL/STEM-path.json) and its picture (PIC/STEM.png), each when present; STEM is seed-S-cycle-NN
+/// for a cycle, VARIANT-OBJECT-poseK for an isolation attempt. Throws antipode::Error naming the
+/// file at fault: a report of another kind, or a malformed file.
+void add_run(const RunInputs& inputs, const nlohmann::ordered_json& report,
+             nlohmann::ordered_json& data);
 
 /// True when `document` is a report of clear-the-box runs or of an isolation bench.
 bool is_run_report(const nlohmann::ordered_json& document);

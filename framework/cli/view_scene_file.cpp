@@ -1,7 +1,5 @@
 #include "view_scene_file.hpp"
 
-#include <unistd.h>
-
 #include <filesystem>
 
 #include <yaml-cpp/yaml.h>
@@ -10,6 +8,7 @@
 #include "antipode/core/error.hpp"
 #include "antipode/core/shipped_data.hpp"
 #include "antipode/evaluation/json_file.hpp"
+#include "antipode/evaluation/scratch_folder.hpp"
 #include "antipode/evaluation/session.hpp"
 #include "antipode/evaluation/tree_run_settings.hpp"
 #include "antipode/io/load_cloud.hpp"
@@ -20,25 +19,6 @@ namespace {
 
 namespace fs = std::filesystem;
 using Json = nlohmann::ordered_json;
-
-// A folder of its own for the scene tree's files, removed with them at the end.
-class ScratchDir {
- public:
-  ScratchDir()
-      : path_(fs::temp_directory_path() / ("antipode-view-" + std::to_string(::getpid()))) {
-    fs::create_directories(path_);
-  }
-  ~ScratchDir() {
-    std::error_code ignored;
-    fs::remove_all(path_, ignored);
-  }
-  ScratchDir(const ScratchDir&) = delete;
-  ScratchDir& operator=(const ScratchDir&) = delete;
-  std::string file(const std::string& name) const { return (path_ / name).string(); }
-
- private:
-  fs::path path_;
-};
 
 Json numbers(const YAML::Node& node, std::size_t size, Json otherwise) {
   if (!node || !node.IsSequence() || node.size() != size) return otherwise;
@@ -74,7 +54,7 @@ Json fixtures_json(const std::string& path) {
 }
 
 Json scene_file_scene(const std::string& path, double voxel_m) {
-  const ScratchDir scratch;
+  const evaluation::ScratchFolder scratch("view");  // the scene tree's files, removed after
   const std::string tree = resolve_shipped("trees/scene.yaml");
   const std::vector<std::string> entries = {
       "cell.scene='" + path + "'",

@@ -1,9 +1,11 @@
 #include "antipode/io/save_cloud.hpp"
 
+#include <cmath>
 #include <cstring>
 #include <filesystem>
 
 #include <gtest/gtest.h>
+#include <pcl/conversions.h>
 #include <pcl/io/pcd_io.h>
 #include <pcl/point_types.h>
 
@@ -35,6 +37,8 @@ TEST(SaveCloudTest, LoadCloudReadsBackEveryPointExactly) {
   ASSERT_EQ(loaded.size(), cloud.size());
   for (std::size_t i = 0; i < cloud.size(); ++i)
     EXPECT_EQ(loaded.points_m[i], cloud.points_m[i]) << i;
+  // The view masks come back beside them (load_cloud itself gives a file one view).
+  EXPECT_EQ(load_view_masks(dir.file("cycle.pcd")), cloud.view_masks);
 }
 
 TEST(SaveCloudTest, PclReadsThePointsAndTheViewThatSawEach) {
@@ -63,6 +67,30 @@ TEST(SaveCloudTest, ACloudWithoutViewMasksHasOnlyItsCoordinates) {
   ASSERT_EQ(pcl::io::loadPCDFile(dir.file("plain.pcd"), blob), 0);
   EXPECT_EQ(blob.fields.size(), 3u);
   EXPECT_EQ(load_cloud(dir.file("plain.pcd")).size(), cloud.size());
+  EXPECT_TRUE(load_view_masks(dir.file("plain.pcd")).empty());
+}
+
+// Masks stay with their points where load_cloud drops non-finite ones, also in the
+// compressed encoding PCL writes.
+TEST(SaveCloudTest, ViewMasksFollowTheFinitePointsOfACompressedFile) {
+  const TempDir dir;
+  pcl::PointCloud<pcl::PointXYZL> cloud;  // the label stands for the `view` field: U, 4 bytes
+  for (std::uint32_t i = 0; i < 50; ++i) {
+    pcl::PointXYZL p;
+    p.x = 0.01f * float(i), p.y = i % 7 == 3 ? std::nanf("") : 0.2f, p.z = 0.5f, p.label = i;
+    cloud.push_back(p);
+  }
+  pcl::PCLPointCloud2 blob;
+  pcl::toPCLPointCloud2(cloud, blob);
+  for (auto& field : blob.fields)
+    if (field.name == "label") field.name = "view";
+  pcl::PCDWriter writer;
+  ASSERT_EQ(writer.writeBinaryCompressed(dir.file("labels.pcd"), blob), 0);
+  std::vector<std::uint32_t> expected;
+  for (std::uint32_t i = 0; i < 50; ++i)
+    if (i % 7 != 3) expected.push_back(i);
+  EXPECT_EQ(load_cloud(dir.file("labels.pcd")).size(), expected.size());
+  EXPECT_EQ(load_view_masks(dir.file("labels.pcd")), expected);
 }
 
 TEST(SaveCloudTest, AFolderThatIsMissingIsAnErrorNamingThePathAndLeavesNothing) {

@@ -7,14 +7,13 @@
 #include <sstream>
 #include <system_error>
 
-#include <unistd.h>
-
 #include <nlohmann/json.hpp>
 
 #include "antipode/core/atomic_file.hpp"
 #include "antipode/core/error.hpp"
 #include "antipode/evaluation/json_file.hpp"
 #include "antipode/evaluation/report_sections.hpp"
+#include "antipode/evaluation/scratch_folder.hpp"
 
 namespace fs = std::filesystem;
 
@@ -62,40 +61,19 @@ ReportSection section_of(const std::string& path, const std::string& name, const
   throw Error(path + ": not the report of an isolation or clutter bench or of eval-classifier");
 }
 
-// A folder of its own in the system's temporary folder, removed with this object: the charts
-// are drawn there and copied to --plots only once every section is made, so that a bad report
-// leaves nothing behind.
-class StagingFolder {
- public:
-  StagingFolder()
-      : path_(fs::temp_directory_path() / ("antipode-report-" + std::to_string(::getpid()))) {
-    fs::remove_all(path_);
-    fs::create_directories(path_);
+// Copies every chart drawn in `staging` into `dir` (made if missing), replacing files of that
+// name. Throws antipode::Error naming `dir` when it cannot be made or written.
+void move_charts(const ScratchFolder& staging, const fs::path& dir) {
+  try {
+    fs::create_directories(dir);
+    for (const auto& entry : fs::directory_iterator(staging.path()))
+      fs::copy_file(entry.path(), dir / entry.path().filename(),
+                    fs::copy_options::overwrite_existing);
+  } catch (const fs::filesystem_error& e) {
+    throw Error("report: --plots: cannot write the charts to '" + dir.string() + "' (" +
+                e.code().message() + ")");
   }
-  ~StagingFolder() {
-    std::error_code ignored;
-    fs::remove_all(path_, ignored);
-  }
-  StagingFolder(const StagingFolder&) = delete;
-  StagingFolder& operator=(const StagingFolder&) = delete;
-  const fs::path& path() const { return path_; }
-  /// Copies every file drawn here into `dir` (made if missing), replacing files of that name.
-  /// Throws antipode::Error naming `dir` when it cannot be made or written.
-  void move_into(const fs::path& dir) const {
-    try {
-      fs::create_directories(dir);
-      for (const auto& entry : fs::directory_iterator(path_))
-        fs::copy_file(entry.path(), dir / entry.path().filename(),
-                      fs::copy_options::overwrite_existing);
-    } catch (const fs::filesystem_error& e) {
-      throw Error("report: --plots: cannot write the charts to '" + dir.string() + "' (" +
-                  e.code().message() + ")");
-    }
-  }
-
- private:
-  fs::path path_;
-};
+}
 
 std::string introduction(const std::vector<std::string>& reports) {
   std::string text =
@@ -118,7 +96,9 @@ std::string write_markdown_report(const ReportOptions& o) {
       o.plots_dir.empty() ? out.parent_path() / "images" : fs::absolute(o.plots_dir);
   if (fs::exists(plots_dir) && !fs::is_directory(plots_dir))
     throw Error("report: --plots: '" + plots_dir.string() + "' is not a folder");
-  const StagingFolder staging;
+  // The charts are drawn in a scratch folder and copied to --plots only once every section is
+  // made, so that a bad report leaves nothing behind.
+  const ScratchFolder staging("report");
   const PlotPlace plots{staging.path().string(),
                         fs::relative(plots_dir, out.parent_path()).string()};
   const Notes notes = read_notes(o.notes_path);
@@ -141,7 +121,7 @@ std::string write_markdown_report(const ReportOptions& o) {
   }
   for (std::size_t i = 0; i < notes.sections.size(); ++i)
     if (!placed[i]) markdown += "## " + notes.sections[i].title + "\n" + notes.sections[i].markdown;
-  staging.move_into(plots_dir);
+  move_charts(staging, plots_dir);
   write_file_atomically(out.string(), [&](const std::string& temporary) {
     std::ofstream file(temporary);
     file << markdown;

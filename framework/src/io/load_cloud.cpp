@@ -90,6 +90,15 @@ Cloud load_cloud(const std::string& path, const LoadCloudOptions& options) {
   return cloud_of(path, read_any(path), options, Eigen::Isometry3f::Identity());
 }
 
+std::vector<std::uint32_t> load_view_masks(const std::string& path) {
+  io::RawPoints raw = read_any(path);
+  std::vector<std::uint32_t> masks;
+  if (raw.view_masks.size() != raw.points_m.size()) return masks;
+  for (std::size_t i = 0; i < raw.points_m.size(); ++i)
+    if (raw.points_m[i].allFinite()) masks.push_back(raw.view_masks[i]);  // as cloud_of keeps them
+  return masks;
+}
+
 Cloud load_cloud_into(const std::string& path, const Eigen::Isometry3d& X_FrameFile,
                       const LoadCloudOptions& options, std::string* note) {
   if (!X_FrameFile.matrix().allFinite()) throw Error("the cloud's pose is not finite", {path});

@@ -53,24 +53,33 @@ float value_at(const char* at, const PcdField& field) {
   }
 }
 
-// x, y, z of every point in `data`: records of point_step bytes (binary), or one block per
-// field holding that field for every point (binary_compressed, once unpacked).
-std::vector<Eigen::Vector3f> decode(const char* data, const PcdHeader& header, bool by_field) {
-  const PcdField* axes[3] = {header.field("x"), header.field("y"), header.field("z")};
-  std::vector<Eigen::Vector3f> points(header.points);
-  for (int a = 0; a < 3; ++a) {
-    const PcdField& f = *axes[a];
-    for (std::size_t i = 0; i < header.points; ++i) {
-      const std::size_t at = by_field ? f.offset * header.points + i * f.size * f.count
-                                      : i * header.point_step + f.offset;
-      points[i][a] = value_at(data + at, f);
-    }
-  }
-  return points;
+// Where point i's value of `f` starts in `data`: records of point_step bytes (binary), or
+// one block per field holding that field for every point (binary_compressed, once unpacked).
+std::size_t value_offset(const PcdHeader& header, const PcdField& f, std::size_t i, bool by_field) {
+  return by_field ? f.offset * header.points + i * f.size * f.count
+                  : i * header.point_step + f.offset;
 }
 
-std::vector<Eigen::Vector3f> read_compressed(const std::string& path, const std::string& bytes,
-                                             const PcdHeader& header) {
+// x, y, z of every point in `data`, and the `view` masks when the file has that field as
+// save_cloud_pcd writes it (U, 4 bytes, one value).
+RawPoints decode(const char* data, const PcdHeader& header, bool by_field) {
+  const PcdField* axes[3] = {header.field("x"), header.field("y"), header.field("z")};
+  RawPoints raw;
+  raw.points_m.resize(header.points);
+  for (int a = 0; a < 3; ++a)
+    for (std::size_t i = 0; i < header.points; ++i)
+      raw.points_m[i][a] = value_at(data + value_offset(header, *axes[a], i, by_field), *axes[a]);
+  const PcdField* view = header.field("view");
+  if (view != nullptr && view->type == 'U' && view->size == 4 && view->count == 1) {
+    raw.view_masks.resize(header.points);
+    for (std::size_t i = 0; i < header.points; ++i)
+      std::memcpy(&raw.view_masks[i], data + value_offset(header, *view, i, by_field), 4);
+  }
+  return raw;
+}
+
+RawPoints read_compressed(const std::string& path, const std::string& bytes,
+                          const PcdHeader& header) {
   // check_pcd_data_size() has checked both size fields against the header and the file.
   std::uint32_t compressed = 0;
   std::memcpy(&compressed, bytes.data() + header.data_offset, 4);
@@ -90,20 +99,19 @@ RawPoints read_pcd(const std::string& path, const std::string& bytes) {
   const PcdHeader header = parse_pcd_header(path, bytes);
   check_pcd_data_size(path, bytes, header);
   RawPoints raw;
+  if (header.points > 0) switch (header.data) {
+      case PcdData::kAscii:
+        raw.points_m = read_pcd_ascii_points(path, bytes, header);
+        break;
+      case PcdData::kBinary:
+        raw = decode(bytes.data() + header.data_offset, header, false);
+        break;
+      case PcdData::kBinaryCompressed:
+        raw = read_compressed(path, bytes, header);
+        break;
+    }
   raw.origin_m = header.viewpoint_m;
   raw.rotation = header.viewpoint_rotation;
-  if (header.points == 0) return raw;
-  switch (header.data) {
-    case PcdData::kAscii:
-      raw.points_m = read_pcd_ascii_points(path, bytes, header);
-      break;
-    case PcdData::kBinary:
-      raw.points_m = decode(bytes.data() + header.data_offset, header, false);
-      break;
-    case PcdData::kBinaryCompressed:
-      raw.points_m = read_compressed(path, bytes, header);
-      break;
-  }
   return raw;
 }
 

@@ -2,6 +2,7 @@
 // Internal to the io area: what a format reader hands back to load_cloud().
 
 #include <cstddef>
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <vector>
@@ -15,6 +16,9 @@ namespace antipode::io {
 /// origin and rotation in the file's frame (a PCD's VIEWPOINT).
 struct RawPoints {
   std::vector<Eigen::Vector3f> points_m;
+  /// A binary PCD's `view` field (unsigned, 4 bytes: save_cloud_pcd's view masks), one per
+  /// point, when the file has one; empty otherwise.
+  std::vector<std::uint32_t> view_masks;
   std::optional<Eigen::Vector3f> origin_m;
   Eigen::Quaternionf rotation = Eigen::Quaternionf::Identity();
 };

@@ -2,8 +2,10 @@
 /// @file
 /// Reading point clouds from PCD and PLY files.
 
+#include <cstdint>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include <Eigen/Core>
 #include <Eigen/Geometry>
@@ -39,6 +41,12 @@ struct LoadCloudOptions {
 ///
 /// Thread-safe: concurrent calls may read different (or the same) files.
 Cloud load_cloud(const std::string& path, const LoadCloudOptions& options = {});
+
+/// The view masks a binary PCD file holds in a `view` field (unsigned, 4 bytes, as
+/// save_cloud_pcd writes them: bit k set when view k saw the point), one for each point
+/// load_cloud() keeps, in the same order; empty when the file has no such field (a PLY file,
+/// an ascii PCD, a PCD of other fields). Throws as load_cloud() does.
+std::vector<std::uint32_t> load_view_masks(const std::string& path);
 
 /// As load_cloud(), with the points and the view origin moved from the file's frame into
 /// `options.frame`, in which the file's frame has the pose `X_FrameFile` (for a depth
