@@ -124,7 +124,12 @@ function armLayer(path) {
   const group = new THREE.Group();
   if (!path || path.waypoints.length === 0) return { group, at() {} };
   const tip = path.waypoints.map((links) => new THREE.Vector3(...links[links.length - 1]));
-  group.add(new THREE.Line(new THREE.BufferGeometry().setFromPoints(tip), new THREE.LineDashedMaterial({ color: 0x555555 })));
+  const tipPath = new THREE.Line(
+    new THREE.BufferGeometry().setFromPoints(tip),
+    new THREE.LineDashedMaterial({ color: 0x555555, dashSize: 0.01, gapSize: 0.01 }),
+  );
+  tipPath.computeLineDistances(); // dashes are laid out along the line's length
+  group.add(tipPath);
   const arm = new THREE.Line(new THREE.BufferGeometry(), new THREE.LineBasicMaterial({ color: 0xd62728, linewidth: 3 }));
   group.add(arm);
   const at = (k) => {
