@@ -77,7 +77,23 @@ struct SceneOptions {
   TreeRunSettings settings;
 };
 
+/// `antipode robot check ROBOT` (trees/robot_check.yaml): a robot file's checks.
+struct RobotCheckOptions {
+  std::string robot_path;
+  std::string tree_path = "trees/robot_check.yaml";
+  std::string scene_path = "scenes/clear_box_procedural.yaml";  ///< entry scene_file
+  int configurations = 1000;                                    ///< entry configurations
+  std::string report_path;                                      ///< entry report_file
+  TreeRunSettings settings;
+};
+
+/// Runs `tree_path` with `entries` ("key=value", the command's arguments) set on its main
+/// blackboard; a progress bar on a terminal unless every node's status is printed.
+int run_tree_command(const std::string& tree_path, const std::vector<std::string>& entries,
+                     const TreeRunSettings& settings);
+
 int run_command(const RunOptions& options);
+int robot_check_command(const RobotCheckOptions& options);
 int scene_command(const SceneOptions& options);
 int detect_command(const DetectOptions& options);
 int train_command(const TrainOptions& options);

@@ -87,6 +87,7 @@ struct Commands {
   antipode::evaluation::BenchMergeOptions merge;
   antipode::evaluation::ReportOptions report;
   antipode::cli::ViewOptions view;
+  antipode::cli::RobotCheckOptions robot_check;
   std::vector<std::string> validate_paths;
   std::string node_type;        ///< `antipode nodes [TYPE]`
   std::string check_library;    ///< `antipode plugins --check LIB`
@@ -216,9 +217,9 @@ void add_eval(CLI::App& app, Commands& commands) {
 void add_bench_reach(CLI::App& bench, antipode::evaluation::ReachBenchOptions& o) {
   CLI::App* reach =
       bench.add_subcommand("reach", "Inverse kinematics of the arm (TRAC-IK's protocol)");
-  reach->add_option("--robot", o.robot_path, "URDF file")->capture_default_str();
-  reach->add_option("--base", o.base_link, "Base link of the chain")->capture_default_str();
-  reach->add_option("--tip", o.tip_link, "Tip link of the chain")->capture_default_str();
+  reach->add_option("--robot", o.robot_path, "Robot file (robots/*/*.yaml)")->capture_default_str();
+  reach->add_option("--base", o.base_link, "Base link of the IK chain (default: the URDF's root)");
+  reach->add_option("--tip", o.tip_link, "Tip link of the IK chain (default: the hand's link)");
   reach->add_option("--ik-poses", o.ik_poses, "Random reachable poses")->capture_default_str();
   reach->add_option("--seed", o.seed, "Seed of the poses")->capture_default_str()->check(kSeed);
   reach->add_option("--solvers", o.solvers, "Any of dls,kdl")->delimiter(',');
@@ -365,9 +366,29 @@ void resolve_shipped_paths(Commands& c) {
   for (std::string* path :
        {&c.run.tree_path, &c.detect.tree_path, &c.scene.tree_path, &c.train.tree_path,
         &c.outcomes.tree_path, &c.eval.tree_path, &c.eval.model_path, &c.isolation.tree_path,
-        &c.reach.robot_path, &c.reach.scene_tree, &c.clutter.tree_path, &c.clutter.gripper_path})
+        &c.reach.robot_path, &c.reach.scene_tree, &c.clutter.tree_path, &c.clutter.gripper_path,
+        &c.robot_check.robot_path, &c.robot_check.tree_path})
     *path = antipode::resolve_shipped(*path);
   for (std::string& path : c.validate_paths) path = antipode::resolve_shipped(path);
+}
+
+void add_robot(CLI::App& app, antipode::cli::RobotCheckOptions& o) {
+  CLI::App* robot = app.add_subcommand("robot", "Robot files: check a robot's description");
+  robot->require_subcommand(1);
+  CLI::App* check = robot->add_subcommand(
+      "check",
+      "Check a robot file: its arm's kinematics and limits, self-collision, reach over the "
+      "cell's box and table, and its fingers against its gripper file (trees/robot_check.yaml)");
+  check->add_option("robot", o.robot_path, "Robot file (robots/*/*.yaml)")->required();
+  check->add_option("--scene", o.scene_path, "Cell scene whose table and box the reach covers")
+      ->capture_default_str();
+  check
+      ->add_option("--configurations", o.configurations,
+                   "Random configurations for the self-collision histogram")
+      ->capture_default_str();
+  check->add_option("--report", o.report_path, "Write the checks as JSON");
+  check->add_option("--tree", o.tree_path, "The checking tree")->capture_default_str();
+  add_tree_run_options(*check, o.settings);
 }
 
 int dispatch(const CLI::App& app, const Commands& commands) {
@@ -394,6 +415,7 @@ int dispatch(const CLI::App& app, const Commands& commands) {
     return antipode::cli::bench_isolation_command(commands.isolation);
   }
   if (app.got_subcommand("report")) return antipode::cli::report_command(commands.report);
+  if (app.got_subcommand("robot")) return antipode::cli::robot_check_command(commands.robot_check);
   if (app.got_subcommand("view")) return antipode::cli::view_command(commands.view);
   if (app.got_subcommand("plugins")) {
     if (!commands.index_directory.empty())
@@ -423,6 +445,7 @@ int main(int argc, char** argv) {
   add_bench(app, commands);
   add_report(app, commands.report);
   add_view(app, commands.view);
+  add_robot(app, commands.robot_check);
   CLI::App* validate = app.add_subcommand(
       "validate", "Check tree files without running them (the first error stops)");
   validate->add_option("trees", commands.validate_paths, "YAML tree files")->required();

@@ -23,12 +23,9 @@ using evaluation::attach_progress_bar;
 using evaluation::machine_json;
 using evaluation::progress_wanted;
 using evaluation::ProgressBar;
-namespace {
 
-// Runs `tree_path` with `entries` filled from the command's arguments; a progress bar on a
-// terminal unless every node's status is printed.
-int run_tree(const std::string& tree_path, const std::vector<std::string>& entries,
-             const TreeRunSettings& settings) {
+int run_tree_command(const std::string& tree_path, const std::vector<std::string>& entries,
+                     const TreeRunSettings& settings) {
   Session session = open_session_for(tree_path, entries, settings);
   bt::Tree tree = load_tree_for(session, tree_path, entries, settings);
   const Tracing tracing = attach_tracers(tree, settings.verbose, "");
@@ -39,8 +36,6 @@ int run_tree(const std::string& tree_path, const std::vector<std::string>& entri
   std::cout << result_line(tree_path, status, tracing) << "\n";
   return status == bt::Status::kSuccess ? kExitSuccess : kExitTreeFailed;
 }
-
-}  // namespace
 
 namespace {
 
@@ -65,9 +60,10 @@ int train_command(const TrainOptions& options) {
   check_not_shipped(options.model_path, options.overwrite);
   for (const std::string* path : {&options.model_path, &options.dataset_path})
     if (!path->empty()) check_output_path(*path);
-  return run_tree(options.tree_path,
-                  {"model_file=" + options.model_path, "dataset_file=" + options.dataset_path},
-                  options.settings);
+  return run_tree_command(
+      options.tree_path,
+      {"model_file=" + options.model_path, "dataset_file=" + options.dataset_path},
+      options.settings);
 }
 
 namespace {
@@ -96,7 +92,7 @@ int eval_classifier_command(const EvalOptions& options) {
   if (!options.report_path.empty()) check_output_path(options.report_path);
   // The tree reads the model only after computing every example: a damaged one is refused now.
   check_binary_file(options.model_path, "classifier model");
-  const int code = run_tree(
+  const int code = run_tree_command(
       options.tree_path, {"model_file=" + options.model_path, "report_file=" + options.report_path},
       options.settings);
   if (code == kExitSuccess && !options.report_path.empty()) stamp_eval_report(options);

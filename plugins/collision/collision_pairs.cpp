@@ -1,5 +1,6 @@
 #include "collision_pairs.hpp"
 
+#include <algorithm>
 #include <vector>
 
 #include "antipode/core/error.hpp"
@@ -46,6 +47,15 @@ std::vector<std::string> shaped_links_below(const RobotModel& robot, const std::
       }
     }
   }
+  return names;
+}
+
+std::vector<std::string> shaped_links_below(const RobotModel& robot,
+                                            const std::vector<std::string>& links) {
+  std::vector<std::string> names;
+  for (const std::string& link : links)
+    for (const std::string& name : shaped_links_below(robot, link))
+      if (std::find(names.begin(), names.end(), name) == names.end()) names.push_back(name);
   return names;
 }
 

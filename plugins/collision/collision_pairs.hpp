@@ -20,5 +20,8 @@ int moving_joints_between(const RobotModel& robot, const std::string& a, const s
 /// flange: the links a caller may leave unchecked against observed points). Throws
 /// antipode::Error for an unknown link, suggesting the nearest name.
 std::vector<std::string> shaped_links_below(const RobotModel& robot, const std::string& link);
+/// The same for each of `links`, in order, without repeats.
+std::vector<std::string> shaped_links_below(const RobotModel& robot,
+                                            const std::vector<std::string>& links);
 
 }  // namespace antipode::collision

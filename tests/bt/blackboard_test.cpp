@@ -259,6 +259,58 @@ trees:
   }
 }
 
+// A file's settings: named once, taken by components as "{name}" (nested too) and read by
+// the tree as entries; one --set replaces a setting everywhere.
+TEST_F(EntryTest, SettingsReachComponentsAndTheMainBlackboard) {
+  const std::string file = R"(
+settings: { samples: 4, add: 2 }
+components:
+  sampler: { plugin: fake_sampler, samples: "{samples}", extra: { add: "{add}" } }
+main: t
+trees:
+  t:
+    Sequence:
+      - UseSampler: { sampler: sampler, out: "{n}" }
+      - ReadInt: { in: "{samples}", expect: 4 }
+)";
+  Tree tree = load(file);
+  EXPECT_EQ(tree.tick_once(), Status::kSuccess);
+  EXPECT_EQ(tree.blackboard().get<int>("n"), 6);  // 4 + 2
+
+  options.overrides = {{"add", "7"}};
+  Tree again = load(file);
+  EXPECT_EQ(again.tick_once(), Status::kSuccess);
+  EXPECT_EQ(again.blackboard().get<int>("n"), 11);  // 4 + 7
+}
+
+TEST_F(EntryTest, BadSettingsAreLocatedErrors) {
+  const auto error = [this](const std::string& file) {
+    try {
+      load(file);
+    } catch (const Error& e) {
+      return std::string(e.what());
+    }
+    return std::string();
+  };
+  const std::string tree = "main: t\ntrees:\n  t:\n    AlwaysSuccess: {}\n";
+  const std::string unknown = error(
+      "settings: { robot: r.yaml }\ncomponents:\n  sampler: { plugin: fake_sampler, samples: "
+      "\"{robt}\" }\n" +
+      tree);
+  EXPECT_NE(unknown.find("component 'sampler': '{robt}' names no setting of the file (did you "
+                         "mean 'robot'?)"),
+            std::string::npos)
+      << unknown;
+  EXPECT_NE(unknown.find(":3:"), std::string::npos) << unknown;
+  EXPECT_NE(
+      error("settings: { robot: [a, b] }\n" + tree).find("setting 'robot' must be a single value"),
+      std::string::npos);
+  EXPECT_NE(error("settings: [robot]\n" + tree).find("'settings' must be a mapping"),
+            std::string::npos);
+  EXPECT_NE(error("settings: { 1robot: x }\n" + tree).find("setting '1robot': not an entry name"),
+            std::string::npos);
+}
+
 TEST_F(EntryTest, SettingAComponentsPluginStartsItsParametersAfresh) {
   // `classifier` was written for another plugin; its parameters mean nothing to the new one.
   options.overrides = {{"sampler.plugin", "fake_sampler"}, {"sampler.samples", "9"}};

@@ -20,7 +20,9 @@ const std::string kUrdf = std::string(ANTIPODE_TEST_SOURCE_DIR) + "/robots/baxte
 BulletCell arm_cell(bool with_arm = true) {
   CellOptions options;
   options.sensor.scale = 0.0;
-  if (with_arm) options.arm = CellArmOptions{kUrdf};
+  if (with_arm)
+    options.arm =
+        CellArmOptions{kUrdf, "right_gripper", {0.08, -1.0, 1.19, 1.94, -0.67, 1.03, 0.5}};
   return BulletCell(
       parse_scene(Parameters(YAML::Load("placement: isolated\nobjects:\n  - { shape: cylinder, "
                                         "size_m: [0.05, 0.1], position_m: [0.72, -0.12] }\n"),

@@ -74,11 +74,13 @@ TEST_F(BulletCellPluginTest, RejectsBadParameters) {
 
 TEST_F(BulletCellPluginTest, RejectsBadArmParametersAtTheirKey) {
   const std::string scene = "scene: scenes/isolated_cylinder.yaml\n";
-  EXPECT_NE(creation_error(scene + "robot: robots/nope.urdf")
-                .find("robot: robots/nope.urdf: cannot open the robot description"),
+  EXPECT_NE(creation_error(scene + "robot: robots/nope.yaml").find("robot: robot file"),
+            std::string::npos);
+  EXPECT_NE(creation_error(scene + "robot: robots/baxter/baxter.urdf")
+                .find("a URDF, not a robot file (name the robot file that names this URDF"),
             std::string::npos);
   const std::string home =
-      creation_error(scene + "robot: robots/baxter/baxter.urdf\n" + "home_rad: [0, 1]");
+      creation_error(scene + "robot: robots/baxter/baxter.yaml\n" + "home_rad: [0, 1]");
   EXPECT_NE(home.find("home_rad: 2 values for the 7 joints of the arm (right_s0 ... right_w2)"),
             std::string::npos)
       << home;

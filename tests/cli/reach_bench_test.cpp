@@ -74,9 +74,9 @@ TEST(ReachBench, BadOptionsGiveOneLineAndExitCode2) {
   r = reach("--ik-poses 1 --scenes 1 --tree trees/detect.yaml");
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(r.out.find("unknown component 'cell'"), std::string::npos) << r.out;
-  r = reach("--robot /nonexistent.urdf --ik-poses 1");
+  r = reach("--robot /nonexistent.yaml --ik-poses 1");
   EXPECT_EQ(r.exit_code, 2);
-  EXPECT_NE(r.out.find("/nonexistent.urdf: cannot open"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("robot file '/nonexistent.yaml'"), std::string::npos) << r.out;
 }
 
 }  // namespace

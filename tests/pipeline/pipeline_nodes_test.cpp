@@ -409,8 +409,8 @@ main: t
 trees:
   t:
     WriteArmPath: { trajectory: "{motion}", robot: ")") +
-                       ANTIPODE_TEST_SOURCE_DIR + R"(/robots/baxter/baxter.urdf",
-                    arm_tip: right_hand, file: "{file}" }
+                       ANTIPODE_TEST_SOURCE_DIR + R"(/robots/baxter/baxter.yaml",
+                    file: "{file}" }
 )");
   Trajectory motion;
   motion.joint_names = {"right_s0", "right_s1", "right_e0", "right_e1",
@@ -423,16 +423,19 @@ trees:
   std::ifstream in(file);
   const auto path = nlohmann::json::parse(in);
   ASSERT_EQ(path["waypoints"].size(), 2u);
-  EXPECT_EQ(path["links"].back(), "right_hand");
+  EXPECT_EQ(path["links"].back(), "right_gripper");
   EXPECT_EQ(path["waypoints"][1]["time_s"], 1.5);
   const auto expect_at = [](const nlohmann::json& p, double x, double y, double z) {
     EXPECT_NEAR(p[0].get<double>(), x, 1e-4) << p;
     EXPECT_NEAR(p[1].get<double>(), y, 1e-4) << p;
     EXPECT_NEAR(p[2].get<double>(), z, 1e-4) << p;
   };
-  expect_at(path["waypoints"][0]["links_m"].back(), 0.79746, -0.99246, 0.32098);
-  expect_at(path["waypoints"][1]["links_m"].back(), 0.63393, -0.82893, 0.21935);
   const auto& links = path["links"];
+  const auto hand = std::find(links.begin(), links.end(), "right_hand");
+  ASSERT_NE(hand, links.end());
+  const std::size_t at_hand = std::size_t(hand - links.begin());
+  expect_at(path["waypoints"][0]["links_m"][at_hand], 0.79746, -0.99246, 0.32098);
+  expect_at(path["waypoints"][1]["links_m"][at_hand], 0.63393, -0.82893, 0.21935);
   const auto shoulder = std::find(links.begin(), links.end(), "right_upper_shoulder");
   ASSERT_NE(shoulder, links.end());
   expect_at(path["waypoints"][0]["links_m"][std::size_t(shoulder - links.begin())], 0.06403,

@@ -747,7 +747,7 @@ TEST_F(ClusterSelectorTest, TheSameResultForAnyNumberOfThreads) {
 // With Baxter's model, a grasp the right arm cannot reach is dropped for want of inverse
 // kinematics, and the reachable one is kept although the classifier scored it lower.
 TEST_F(ClusterSelectorTest, WithARobotTheArmMustReachTheGrasp) {
-  const std::string robot = std::string(ANTIPODE_TEST_SOURCE_DIR) + "/robots/baxter/baxter.urdf";
+  const std::string robot = std::string(ANTIPODE_TEST_SOURCE_DIR) + "/robots/baxter/baxter.yaml";
   // The table 30 cm below the base; a hand over it in front of the right arm, and one
   // 1.5 m out, beyond the arm's reach, scored higher.
   HandSet set = on_table({top_down(0.72, -0.2, -0.17, 1.0), top_down(1.5, -0.2, -0.17, 5.0)});
@@ -769,15 +769,16 @@ TEST_F(ClusterSelectorTest, WithARobotTheArmMustReachTheGrasp) {
   cloud->frame = "camera";
   set.cloud = cloud;
   EXPECT_THROW(create("min_cluster_size: 1\nrobot: " + robot)->select(set, {}), Error);
-  EXPECT_NE(creation_error("robot: /nonexistent.urdf").find("parameter 'robot'"),
-            std::string::npos);
+  EXPECT_NE(
+      creation_error("robot: /nonexistent.yaml").find("robot: robot file '/nonexistent.yaml'"),
+      std::string::npos);
 }
 
 // The context's scene, not the hands' cloud, is what the arm must avoid: a wall of points
 // where the arm passes (above the grasp, outside any sampler workspace) makes the grasp
 // unreachable.
 TEST_F(ClusterSelectorTest, TheArmAvoidsTheContextsScene) {
-  const std::string robot = std::string(ANTIPODE_TEST_SOURCE_DIR) + "/robots/baxter/baxter.urdf";
+  const std::string robot = std::string(ANTIPODE_TEST_SOURCE_DIR) + "/robots/baxter/baxter.yaml";
   HandSet set = on_table({top_down(0.72, -0.2, -0.17, 1.0)});
   set.support->offset = 0.295f;
   auto empty = std::make_shared<Cloud>();

@@ -15,6 +15,8 @@
 #include <sstream>
 #include <thread>
 
+#include <yaml-cpp/yaml.h>
+
 #include "antipode/bt/loader.hpp"
 #include "antipode/core/atomic_file.hpp"
 #include "antipode/core/error.hpp"
@@ -31,6 +33,7 @@
 #include "antipode/interfaces/cell.hpp"
 #include "antipode/interfaces/clearing_run.hpp"
 #include "antipode/io/gripper_file.hpp"
+#include "antipode/robot/robot_file.hpp"
 
 namespace fs = std::filesystem;
 
@@ -443,10 +446,16 @@ Json run_clutter_bench(const ClutterBenchOptions& options) {
   settings.threads = std::max(1, cores / o.jobs);
   settings.entries = shared_entries(o, settings.threads);
   std::optional<GripperFile> gripper;
+  const std::string robot_path = tree_robot_path(o.tree_path, o.set);
+  std::optional<RobotFile> robot;
+  if (!robot_path.empty()) robot = read_robot_file(robot_path);
   if (!o.gripper_path.empty()) {
     gripper = read_gripper_file(o.gripper_path);
     settings.graspable_m =
         graspable_width_m(gripper->geometry.min_aperture_m, gripper->geometry.max_aperture_m);
+  } else if (robot) {
+    settings.graspable_m =
+        graspable_width_m(robot->gripper.min_aperture_m, robot->gripper.max_aperture_m);
   }
 
   std::cout << "clutter bench (" << o.protocol << "): " << o.runs << " runs of "
@@ -481,6 +490,7 @@ Json run_clutter_bench(const ClutterBenchOptions& options) {
   report["summary"] = summary;
   report["run_records"] = std::move(runs);
   if (gripper) report["gripper"] = {{"file", o.gripper_path}, {"name", gripper->name}};
+  if (robot) report["robot"] = {{"file", robot_path}, {"name", robot->name}};
   if (!shard.whole()) report["shard"] = shard_json(shard, std::size_t(o.runs));
   return report;
 }

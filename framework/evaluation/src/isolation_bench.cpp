@@ -14,7 +14,9 @@
 #include "antipode/evaluation/bench_report.hpp"
 #include "antipode/evaluation/bench_shard.hpp"
 #include "antipode/evaluation/bench_task.hpp"
+#include "antipode/evaluation/clutter_bench.hpp"
 #include "antipode/evaluation/tree_run_settings.hpp"
+#include "antipode/robot/robot_file.hpp"
 
 namespace fs = std::filesystem;
 
@@ -62,6 +64,12 @@ std::vector<BenchTask> plan(const IsolationBenchOptions& o, const std::vector<Be
       throw Error("--held-out: no object '" + name + "'" + did_you_mean(name, names));
   const int n = int(objects.size());
   const int attempts = o.attempts > 0 ? o.attempts : n * o.poses;
+  // Holdable widths: the apertures of the tree's robot's gripper, else Baxter's 3-7 cm.
+  std::pair<double, double> graspable{kMinGraspableWidthM, kMaxGraspableWidthM};
+  if (const std::string robot = tree_robot_path(o.tree_path, o.set); !robot.empty()) {
+    const HandGeometry& hand = read_robot_file(robot).gripper;
+    graspable = graspable_width_m(hand.min_aperture_m, hand.max_aperture_m);
+  }
   std::vector<BenchTask> tasks;
   for (int i = o.first; i < o.first + attempts; ++i)
     for (const BenchVariant* variant : variants) {
@@ -75,8 +83,7 @@ std::vector<BenchTask> plan(const IsolationBenchOptions& o, const std::vector<Be
       t.seed = o.seed + std::uint64_t(i);
       t.held_out =
           std::find(o.held_out.begin(), o.held_out.end(), t.object.name) != o.held_out.end();
-      t.graspable =
-          t.object.graspable_in_pose(t.pose, o.poses, kMinGraspableWidthM, kMaxGraspableWidthM);
+      t.graspable = t.object.graspable_in_pose(t.pose, o.poses, graspable.first, graspable.second);
       tasks.push_back(std::move(t));
     }
   return tasks;

@@ -16,6 +16,7 @@
 #include "antipode/core/random.hpp"
 #include "antipode/evaluation/bench_report.hpp"
 #include "antipode/robot/inverse_kinematics.hpp"
+#include "antipode/robot/robot_file.hpp"
 #include "antipode/robot/robot_model.hpp"
 
 namespace antipode::evaluation {
@@ -88,15 +89,20 @@ void check(const ReachBenchOptions& o) {
 
 nlohmann::ordered_json run_reach_bench(const ReachBenchOptions& o) {
   check(o);
-  const RobotModel robot = RobotModel::load(o.robot_path);
-  const KinematicChain chain = robot.chain(o.base_link, o.tip_link);
+  const RobotFile robot_file = read_robot_file(o.robot_path);
+  const RobotModel robot = RobotModel::load(robot_file.urdf_path);
+  const std::string base = o.base_link.empty() ? robot.root_link() : o.base_link;
+  const std::string tip = o.tip_link.empty() ? robot_file.gripper_from : o.tip_link;
+  const KinematicChain chain = robot.chain(base, tip);
   const std::vector<Eigen::Isometry3d> targets = random_targets(chain, o.ik_poses, o.seed);
-  nlohmann::ordered_json report = {
-      {"robot", o.robot_path}, {"chain", {o.base_link, o.tip_link}}, {"ik_poses", o.ik_poses},
-      {"seed", o.seed},        {"timeout_ms", o.timeout_ms},         {"tolerance", o.tolerance}};
-  std::cout << "IK, " << chain.dof() << " joints from '" << o.base_link << "' to '" << o.tip_link
-            << "', " << o.ik_poses << " random reachable poses, seed at mid-range, tolerance "
-            << o.tolerance << ", timeout " << o.timeout_ms << " ms\n";
+  nlohmann::ordered_json report = {{"robot", o.robot_path},   {"robot_name", robot_file.name},
+                                   {"chain", {base, tip}},    {"ik_poses", o.ik_poses},
+                                   {"seed", o.seed},          {"timeout_ms", o.timeout_ms},
+                                   {"tolerance", o.tolerance}};
+  std::cout << robot_file.name << ": IK, " << chain.dof() << " joints from '" << base << "' to '"
+            << tip << "', " << o.ik_poses
+            << " random reachable poses, seed at mid-range, tolerance " << o.tolerance
+            << ", timeout " << o.timeout_ms << " ms\n";
   std::cout << std::left << std::setw(8) << "solver" << std::setw(22) << "success" << std::setw(12)
             << "median ms" << std::setw(12) << "mean ms"
             << "p90 ms\n";

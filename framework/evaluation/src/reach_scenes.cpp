@@ -51,6 +51,9 @@ nlohmann::ordered_json bench_planning_scenes(const ReachBenchOptions& o) {
   TreeRunSettings settings;
   settings.seed = o.seed;
   settings.set = {"cell.scene=" + o.scene_file};
+  // A tree with a `robot` setting (trees/plan_reach.yaml) plans with the bench's robot; one
+  // without plans with the robots it names.
+  if (!tree_robot_path(o.scene_tree, {}).empty()) settings.set.push_back("robot=" + o.robot_path);
   settings.set.insert(settings.set.end(), o.set.begin(), o.set.end());
   const bt::Tree tree = load_tree_for(session, o.scene_tree, {}, settings);
   const auto cell = component_of<Cell>(tree, "cell", o);

@@ -5,6 +5,7 @@
 #include <yaml-cpp/yaml.h>
 
 #include "antipode/core/error.hpp"
+#include "antipode/core/parameters.hpp"
 #include "antipode/evaluation/tree_run_settings.hpp"
 
 namespace antipode::evaluation {
@@ -62,6 +63,20 @@ void check_entries_are_read(const std::string& tree_path, const std::vector<std:
       continue;
     throw_unread_entry(tree_path, key, value, component_suggestion(text, key));
   }
+}
+
+std::string tree_robot_path(const std::string& tree_path, const std::vector<std::string>& set) {
+  for (auto it = set.rbegin(); it != set.rend(); ++it)
+    if (it->rfind("robot=", 0) == 0) return resolve_path(it->substr(6), tree_path);
+  try {
+    const YAML::Node settings = YAML::LoadFile(tree_path)["settings"];
+    if (settings.IsDefined() && settings.IsMap() && settings["robot"].IsDefined() &&
+        settings["robot"].IsScalar())
+      return resolve_path(settings["robot"].Scalar(), tree_path);
+  } catch (const YAML::Exception&) {
+    // loading the tree reports the file's own errors
+  }
+  return {};
 }
 
 }  // namespace antipode::evaluation

@@ -6,6 +6,7 @@
 #include "checks.hpp"
 #include "overrides.hpp"
 #include "parser.hpp"
+#include "settings.hpp"
 #include "yaml_source.hpp"
 
 namespace antipode::bt {
@@ -26,7 +27,8 @@ CheckedFile check_file(const std::string& yaml, const std::string& file_name,
                        const LoadOptions& options) {
   YAML::Node document = detail::parse_yaml(yaml, file_name);
   CheckedFile checked;
-  checked.entries = detail::apply_overrides(document, options.overrides);
+  checked.entries = detail::apply_settings(
+      document, detail::apply_overrides(document, options.overrides), file_name);
   detail::ParseContext context;
   context.file = file_name;
   context.registry = &registry_of(options);

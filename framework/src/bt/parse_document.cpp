@@ -7,7 +7,7 @@
 namespace antipode::bt::detail {
 namespace {
 
-const std::vector<std::string> kTopLevelKeys = {"components", "main", "trees"};
+const std::vector<std::string> kTopLevelKeys = {"settings", "components", "main", "trees"};
 const std::vector<std::string> kDirections = {"input", "output", "inout"};
 
 ComponentSpec parse_component(const YAML::Node& key, const YAML::Node& value,
@@ -146,7 +146,7 @@ void check_top_level(const YAML::Node& document, const std::string& file) {
   check_keys(document, file);
   for (const auto& entry : document) {
     const std::string key = entry.first.Scalar();
-    if (key != "components" && key != "main" && key != "trees") {
+    if (key != "settings" && key != "components" && key != "main" && key != "trees") {
       throw Error("unknown top-level key '" + key + "'" + did_you_mean(key, kTopLevelKeys),
                   locate(entry.first, file));
     }

@@ -20,6 +20,7 @@ list(APPEND ANTIPODE_SOURCES
   ${CMAKE_CURRENT_LIST_DIR}/parse_document.cpp
   ${CMAKE_CURRENT_LIST_DIR}/parse_node.cpp
   ${CMAKE_CURRENT_LIST_DIR}/parse_subtree.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/settings.cpp
   ${CMAKE_CURRENT_LIST_DIR}/status.cpp
   ${CMAKE_CURRENT_LIST_DIR}/tree.cpp
   ${CMAKE_CURRENT_LIST_DIR}/type_names.cpp

@@ -2,7 +2,10 @@
 
 #include <vector>
 
+#include <filesystem>
+
 #include "antipode/core/error.hpp"
+#include "antipode/core/input_file.hpp"
 
 namespace antipode {
 
@@ -26,6 +29,25 @@ void check_yaml_size(const YAML::Node& node, const std::string& what, std::size_
       }
     }
   }
+}
+
+YAML::Node load_yaml_map(const std::string& path, const std::string& what, const std::string& kind,
+                         const std::string& examples) {
+  const std::string see = " (see " + examples + ")";
+  require_regular_file(path, "a YAML map of " + kind + see);
+  if (!std::filesystem::exists(path)) throw Error(what + ": no such file");
+  YAML::Node root;
+  try {
+    root = YAML::LoadFile(path);
+  } catch (const YAML::Exception& e) {
+    throw Error(what + ": " + e.what());
+  }
+  check_yaml_size(root, what);
+  if (!root.IsMap()) {
+    throw Error(what + ": " +
+                (root.IsNull() ? std::string("the file is empty") : "not a map of " + kind) + see);
+  }
+  return root;
 }
 
 }  // namespace antipode

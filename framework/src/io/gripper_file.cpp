@@ -54,20 +54,7 @@ HandGeometry read_fields(const Parameters& p, HandGeometry geometry, bool requir
 
 GripperFile read_gripper_file(const std::string& path) {
   const std::string what = "gripper file '" + path + "'";
-  require_regular_file(path, "a gripper file (a YAML map, see robots/grippers/)");
-  if (!std::filesystem::exists(path)) throw Error(what + ": no such file");
-  YAML::Node root;
-  try {
-    root = YAML::LoadFile(path);
-  } catch (const YAML::Exception& e) {
-    throw Error(what + ": " + e.what());
-  }
-  check_yaml_size(root, what);
-  if (!root.IsMap()) {
-    throw Error(what + ": " +
-                (root.IsNull() ? std::string("the file is empty") : "not a map of gripper fields") +
-                " (see robots/grippers/)");
-  }
+  const YAML::Node root = load_yaml_map(path, what, "gripper fields", "robots/grippers/");
   const Parameters p(root, what, path);
   GripperFile file;
   file.path = path;

@@ -7,6 +7,7 @@ find_package(tinyxml2 REQUIRED)
 list(APPEND ANTIPODE_SOURCES
   ${CMAKE_CURRENT_LIST_DIR}/inverse_kinematics.cpp
   ${CMAKE_CURRENT_LIST_DIR}/kinematic_chain.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/robot_file.cpp
   ${CMAKE_CURRENT_LIST_DIR}/robot_model.cpp)
 list(APPEND ANTIPODE_PRIVATE_LIBS urdfdom::urdfdom_model orocos-kdl tinyxml2::tinyxml2)
 list(APPEND ANTIPODE_PRIVATE_INCLUDES ${urdfdom_INCLUDE_DIRS} ${orocos_kdl_INCLUDE_DIRS})

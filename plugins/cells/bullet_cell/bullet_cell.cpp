@@ -6,6 +6,7 @@
 
 #include "antipode/core/error.hpp"
 #include "antipode/geometry/narrowest_extent.hpp"
+#include "antipode/robot/robot_file.hpp"
 
 namespace antipode::cells {
 namespace {
@@ -118,15 +119,14 @@ CellOptions read_cell_options(const Parameters& p, const SceneSpec& scene) {
       in_range(p, "gripper_torsional_friction_m", a.gripper.torsional_friction_m, 0.0, 0.05);
   a.gripper.hand_force_n = in_range(p, "hand_force_n", a.gripper.hand_force_n, 1.0, 5000.0);
   if (p.has("robot")) {
+    const RobotFile robot = robot_file_parameter(p, "robot");
     CellArmOptions arm;
-    arm.robot_file = resolve_path(p.require<std::string>("robot"), p.file());
-    arm.tip = p.get<std::string>("arm_tip", arm.tip);
-    arm.last_checked = p.get<std::string>("arm_last_checked", arm.last_checked);
-    arm.home_rad = p.get<std::vector<double>>("home_rad", arm.home_rad);
+    arm.robot_file = robot.urdf_path;
+    arm.tip = robot.arm_tip;
+    arm.home_rad = p.get<std::vector<double>>("home_rad", robot.home_rad);
     o.arm = arm;
-  } else {
-    for (const char* key : {"arm_tip", "arm_last_checked", "home_rad"})
-      if (p.has(key)) p.fail(key, std::string("'") + key + "' needs 'robot' (the arm's URDF)");
+  } else if (p.has("home_rad")) {
+    p.fail("home_rad", "'home_rad' needs 'robot' (the arm's robot file)");
   }
   return o;
 }

@@ -49,13 +49,10 @@ CellArm::CellArm(const CellArmOptions& options) : impl_(std::make_unique<Impl>()
   const RobotModel robot = RobotModel::load(options.robot_file);
   impl_->chain = robot.chain(robot.root_link(), options.tip);
   const std::vector<std::string> links = impl_->chain.link_names();
-  const auto last = std::find(links.begin(), links.end(), options.last_checked);
-  if (last == links.end())
-    throw Error("arm: link '" + options.last_checked + "' is not on the chain to '" + options.tip +
-                "'");
-  // Links from the first moving joint to `last_checked` move with the arm.
+  // Links from the first moving joint to the tip move with the arm. The fingers are not on
+  // the chain: the cell's gripper model stands for them.
   bool moving = false;
-  for (std::size_t i = 0; i <= std::size_t(last - links.begin()); ++i) {
+  for (std::size_t i = 0; i < links.size(); ++i) {
     bool joint_moves = false;
     robot.parent_link(links[i], nullptr, &joint_moves);
     moving = moving || joint_moves;

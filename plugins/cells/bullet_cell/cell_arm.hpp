@@ -25,10 +25,9 @@ class btCollisionShape;
 namespace antipode::cells {
 
 struct CellArmOptions {
-  std::string robot_file;                   ///< the URDF
-  std::string tip = "right_gripper";        ///< the arm chain's tip (the grasp frame)
-  std::string last_checked = "right_hand";  ///< links after this one are the gripper's
-  std::vector<double> home_rad = {0.08, -1.0, 1.19, 1.94, -0.67, 1.03, 0.5};
+  std::string robot_file;        ///< the URDF
+  std::string tip;               ///< the arm chain's tip (the grasp frame)
+  std::vector<double> home_rad;  ///< where every attempt starts, one value per joint
   double check_step_rad = 0.02;  ///< largest joint change between checked states
 };
 

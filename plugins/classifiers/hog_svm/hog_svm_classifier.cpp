@@ -2,9 +2,10 @@
 // hypothesis image is encoded by its HOG descriptor and scored by a trained polynomial-kernel
 // SVM; see antipode/grasp/svm_model.hpp and docs/classification.md.
 //
-// Parameters: model (path, "models/hog_svm.model"), score ("decision": the SVM's decision
-// value; "probability": the calibrated probability of success of a model trained on outcome
-// labels, docs/training.md), threshold (the score from which a hand is a grasp: 0 for
+// Parameters: model (path; default: the `robot` file's model, else "models/hog_svm.model"),
+// robot (a robot file, docs/robot.md: its `model` is the default model), score ("decision": the
+// SVM's decision value; "probability": the calibrated probability of success of a model trained on
+// outcome labels, docs/training.md), threshold (the score from which a hand is a grasp: 0 for
 // decision values, 0.5 for probabilities), threads (0 = all).
 #include <cmath>
 #include <filesystem>
@@ -17,10 +18,26 @@
 #include "antipode/grasp/svm_model.hpp"
 #include "antipode/interfaces/classifier.hpp"
 #include "antipode/plugin/abi.hpp"
+#include "antipode/robot/robot_file.hpp"
 
 namespace {
 using namespace antipode;
 namespace fs = std::filesystem;
+
+// The model file: `model`, else the robot file's, else the shipped model for Baxter's gripper.
+std::string model_path(const Parameters& params) {
+  const bool robot_model = params.has("robot") && !params.has("model");
+  (void)params.get<std::string>("robot", "");  // a `model` given beside it replaces its model
+  if (robot_model) {
+    const RobotFile robot = robot_file_parameter(params, "robot");
+    if (robot.model_path.empty()) {
+      params.fail("robot", "parameter 'robot': " + robot.path +
+                               " names no model for its gripper; give the classifier a 'model'");
+    }
+    return robot.model_path;
+  }
+  return resolve_path(params.get<std::string>("model", "models/hog_svm.model"), params.file());
+}
 
 SvmModel load_model(const Parameters& params, const std::string& path) {
   try {
@@ -49,8 +66,7 @@ bool read_score(const Parameters& params, const SvmModel& model, const std::stri
 class HogSvmClassifier final : public Classifier {
  public:
   explicit HogSvmClassifier(const Parameters& params)
-      : path_(
-            resolve_path(params.get<std::string>("model", "models/hog_svm.model"), params.file())),
+      : path_(model_path(params)),
         model_(load_model(params, path_)),
         probability_(read_score(params, model_, path_)),
         threshold_(params.get<double>("threshold", probability_ ? 0.5 : 0.0)),

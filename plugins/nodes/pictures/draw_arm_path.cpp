@@ -7,6 +7,7 @@
 #include "antipode/core/parameters.hpp"
 #include "antipode/core/trajectory.hpp"
 #include "antipode/interfaces/hand_set.hpp"
+#include "antipode/robot/robot_file.hpp"
 #include "antipode/robot/robot_model.hpp"
 #include "draw.hpp"
 #include "picture_nodes.hpp"
@@ -75,10 +76,7 @@ class DrawArmPath final : public bt::SyncActionNode {
             bt::NodeCategory::kAction,
             {bt::input_port<HandSetPtr>("grasps", "a selection: its cloud and first grasp"),
              bt::input_port<Trajectory>("trajectory", "the arm's motion (PlanReach)"),
-             bt::input_port<std::string>("robot", std::string("robots/baxter/baxter.urdf"),
-                                         "the robot's URDF"),
-             bt::input_port<std::string>("arm_tip", std::string("right_gripper"),
-                                         "the tip of the arm chain"),
+             bt::input_port<std::string>("robot", "the robot file (robots/*/*.yaml)"),
              bt::input_port<std::string>("file", std::string(), "output PNG file; empty = none"),
              bt::input_port<int>("poses", 6, "arm poses drawn along the motion"),
              bt::input_port<int>("size_px", 600, "side of each of the two square views")},
@@ -99,24 +97,27 @@ class DrawArmPath final : public bt::SyncActionNode {
     const int size_px = get_input<int>("size_px"), poses = get_input<int>("poses");
     if (size_px < 64 || size_px > 4096) fail("size_px", "size_px must be in [64, 4096]");
     if (poses < 1 || poses > 50) fail("poses", "poses must be in [1, 50]");
-    const RobotModel robot =
-        RobotModel::load(resolve_path(get_input<std::string>("robot"), where().file));
-    const KinematicChain arm = robot.chain(robot.root_link(), get_input<std::string>("arm_tip"));
+    const RobotFile robot_file =
+        read_robot_file(resolve_path(get_input<std::string>("robot"), where().file));
+    const RobotModel robot = RobotModel::load(robot_file.urdf_path);
+    const KinematicChain arm = robot.chain(robot.root_link(), robot_file.arm_tip);
     if (trajectory.joint_names != arm.joint_names())
-      fail("trajectory", "the trajectory's joints are not those of the arm to '" +
-                             get_input<std::string>("arm_tip") + "'");
+      fail("trajectory", "the trajectory's joints are not those of " + robot_file.name + "'s arm");
 
+    // The views centre between the arm's first moving link (its shoulder) and the grasp.
+    const std::vector<std::string> links = arm.link_names();
+    const std::size_t first_moving = first_moving_link(robot, links);
     const Eigen::Isometry3d X_end = arm.forward(at_fraction(trajectory, 1.0));
-    const Eigen::Vector3d centre = 0.5 * (X_end.translation() + Eigen::Vector3d(0.1, -0.3, 0.2));
+    const Eigen::Vector3d shoulder =
+        arm.link_poses(at_fraction(trajectory, 0.0))[first_moving].translation();
+    const Eigen::Vector3d centre = 0.5 * (X_end.translation() + shoulder);
     const OrthoView side(Eigen::Vector3d::UnitY(), Eigen::Vector3d::UnitZ(), centre, 0.75, size_px);
     const OrthoView above(-Eigen::Vector3d::UnitZ(), Eigen::Vector3d::UnitX(), centre, 0.75,
                           size_px);
     // The links' shapes, and their poses at each drawn point of the motion (the fixed links
     // before the first moving joint are the same in all).
-    const std::vector<std::string> links = arm.link_names();
     std::vector<std::vector<CollisionPrimitive>> shapes;
     for (const std::string& link : links) shapes.push_back(robot.collision_shapes(link));
-    const std::size_t first_moving = first_moving_link(robot, links);
     std::vector<std::vector<Eigen::Isometry3d>> X_BaseLink;
     for (int k = 0; k < poses; ++k)
       X_BaseLink.push_back(arm.link_poses(at_fraction(trajectory, fraction(k, poses))));

@@ -3,6 +3,7 @@
 #include "antipode/bt/action_node.hpp"
 #include "antipode/core/parameters.hpp"
 #include "antipode/core/trajectory.hpp"
+#include "antipode/robot/robot_file.hpp"
 #include "antipode/robot/robot_model.hpp"
 #include "json_output.hpp"
 #include "nodes.hpp"
@@ -13,7 +14,7 @@ namespace {
 /// Writes a planned arm motion as where the arm's links are along it, all or nothing, for a
 /// viewer to draw: {"frame": "base", "links": [names, base to tip], "waypoints": [{"time_s",
 /// "joints_rad", "links_m": [[x, y, z] of each link's origin]}]}, by forward kinematics of
-/// the robot's chain to `arm_tip`. An empty `file` writes nothing.
+/// the chain of the robot file's arm. An empty `file` writes nothing.
 class WriteArmPath final : public bt::SyncActionNode {
  public:
   using SyncActionNode::SyncActionNode;
@@ -21,10 +22,7 @@ class WriteArmPath final : public bt::SyncActionNode {
     return {"WriteArmPath",
             bt::NodeCategory::kAction,
             {bt::input_port<Trajectory>("trajectory", "the arm's motion (PlanReach)"),
-             bt::input_port<std::string>("robot", std::string("robots/baxter/baxter.urdf"),
-                                         "the robot's URDF"),
-             bt::input_port<std::string>("arm_tip", std::string("right_gripper"),
-                                         "the tip of the arm chain"),
+             bt::input_port<std::string>("robot", "the robot file (robots/*/*.yaml)"),
              bt::input_port<std::string>("file", std::string(), "output JSON file; empty = none")},
             0,
             0,
@@ -37,12 +35,12 @@ class WriteArmPath final : public bt::SyncActionNode {
     const std::string file = get_input<std::string>("file");
     if (file.empty()) return bt::Status::kSuccess;
     const Trajectory& trajectory = get_input_ref<Trajectory>("trajectory");
-    const std::string tip = get_input<std::string>("arm_tip");
-    const RobotModel robot =
-        RobotModel::load(resolve_path(get_input<std::string>("robot"), where().file));
-    const KinematicChain arm = robot.chain(robot.root_link(), tip);
+    const RobotFile robot_file =
+        read_robot_file(resolve_path(get_input<std::string>("robot"), where().file));
+    const RobotModel robot = RobotModel::load(robot_file.urdf_path);
+    const KinematicChain arm = robot.chain(robot.root_link(), robot_file.arm_tip);
     if (trajectory.joint_names != arm.joint_names())
-      fail("trajectory", "the trajectory's joints are not those of the arm to '" + tip + "'");
+      fail("trajectory", "the trajectory's joints are not those of " + robot_file.name + "'s arm");
     nlohmann::ordered_json waypoints = nlohmann::ordered_json::array();
     for (std::size_t k = 0; k < trajectory.positions_rad.size(); ++k) {
       nlohmann::ordered_json links = nlohmann::ordered_json::array();
@@ -52,8 +50,9 @@ class WriteArmPath final : public bt::SyncActionNode {
                            {"joints_rad", trajectory.positions_rad[k]},
                            {"links_m", std::move(links)}});
     }
-    const nlohmann::ordered_json document = {
-        {"frame", "base"}, {"links", arm.link_names()}, {"waypoints", std::move(waypoints)}};
+    const nlohmann::ordered_json document = {{"frame", robot.root_link()},
+                                             {"links", arm.link_names()},
+                                             {"waypoints", std::move(waypoints)}};
     write_json_file(file, document);
     log(std::to_string(trajectory.positions_rad.size()) + " waypoints written to " + file);
     return bt::Status::kSuccess;

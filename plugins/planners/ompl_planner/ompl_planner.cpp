@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "antipode/core/error.hpp"
+#include "antipode/robot/robot_file.hpp"
 #include "arm_planner.hpp"
 #include "collision_pairs.hpp"
 #include "reach_check.hpp"
@@ -16,9 +17,10 @@ using Clock = std::chrono::steady_clock;
 
 OmplPlannerOptions read_options(const Parameters& p) {
   OmplPlannerOptions o;
-  o.robot_file = resolve_path(p.require<std::string>("robot"), p.file());
-  o.arm_tip = p.get<std::string>("arm_tip", o.arm_tip);
-  o.points_unchecked_from = p.get<std::string>("points_unchecked_from", o.points_unchecked_from);
+  const RobotFile robot = robot_file_parameter(p, "robot");
+  o.robot_file = robot.urdf_path;
+  o.arm_tip = robot.arm_tip;
+  o.points_unchecked = robot.points_unchecked;
   o.points_resolution_m = p.get<double>("points_resolution_m", o.points_resolution_m);
   o.planner = p.get<std::string>("planner", o.planner);
   o.time_limit_s = p.get<double>("time_limit_s", o.time_limit_s);
@@ -37,17 +39,6 @@ OmplPlannerOptions read_options(const Parameters& p) {
   if (!(o.speed_fraction > 0.0 && o.speed_fraction <= 1.0))
     p.fail("speed_fraction", "'speed_fraction' must be in (0, 1]");
   p.reject_unknown();
-  // The robot's errors located at the key that names what is wrong.
-  const char* key = "robot";
-  try {
-    const RobotModel robot = RobotModel::load(o.robot_file);
-    key = "arm_tip";
-    robot.chain(robot.root_link(), o.arm_tip);
-    key = "points_unchecked_from";
-    collision::shaped_links_below(robot, o.points_unchecked_from);
-  } catch (const Error& e) {
-    p.fail(key, std::string(key) + ": " + e.what());
-  }
   return o;
 }
 
@@ -95,7 +86,7 @@ OmplPlanner::OmplPlanner(const OmplPlannerOptions& options)
     : options_(options),
       robot_(RobotModel::load(options.robot_file)),
       arm_(robot_.chain(robot_.root_link(), options.arm_tip)),
-      gripper_links_(collision::shaped_links_below(robot_, options.points_unchecked_from)) {}
+      gripper_links_(collision::shaped_links_below(robot_, options.points_unchecked)) {}
 
 std::shared_ptr<const collision::ArmCollisionWorld> OmplPlanner::world_for(
     const CloudPtr& scene) const {

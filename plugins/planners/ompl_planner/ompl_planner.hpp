@@ -22,8 +22,8 @@ namespace antipode::planning {
 
 struct OmplPlannerOptions {
   std::string robot_file;
-  std::string arm_tip = "right_gripper";
-  std::string points_unchecked_from = "right_hand";
+  std::string arm_tip;                        ///< the grasp frame (RobotFile::arm_tip)
+  std::vector<std::string> points_unchecked;  ///< RobotFile::points_unchecked
   double points_resolution_m = 0.01;
   std::string planner = "RRTConnect";
   double time_limit_s = 1.0;

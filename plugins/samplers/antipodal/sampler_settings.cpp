@@ -6,6 +6,7 @@
 
 #include "antipode/geometry/bin.hpp"
 #include "antipode/io/gripper_file.hpp"
+#include "antipode/robot/robot_file.hpp"
 
 namespace antipode::samplers {
 namespace {
@@ -73,7 +74,11 @@ SupportPlaneMode support_mode(const Parameters& params) {
 
 HandSearchParameters search_parameters(const Parameters& params) {
   HandSearchParameters s;
-  s.hand = hand_geometry_parameter(params, "hand");
+  // The gripper: `hand`, else the robot file's, else Baxter's (HandGeometry's defaults).
+  const bool robot_gripper = params.has("robot") && !params.has("hand");
+  s.hand = robot_gripper ? robot_file_parameter(params, "robot").gripper
+                         : hand_geometry_parameter(params, "hand");
+  (void)params.get<std::string>("robot", "");  // a `hand` given beside it replaces its gripper
   s.samples = static_cast<std::size_t>(integer(params, "samples", 4000, 1));
   s.frame_radius_m = number(params, "neighbourhood_radius_m", s.frame_radius_m, 0.0, false);
   s.frame.min_points = static_cast<std::size_t>(integer(params, "min_neighbours", 10, 9));

@@ -9,7 +9,7 @@ ArmReach::ArmReach(const ArmReachOptions& options)
     : options_(options),
       robot_(RobotModel::load(options.robot_file)),
       arm_(robot_.chain(robot_.root_link(), options.arm_tip)) {
-  gripper_links_ = collision::shaped_links_below(robot_, options.points_unchecked_from);
+  gripper_links_ = collision::shaped_links_below(robot_, options.points_unchecked);
 }
 
 collision::ArmCollisionWorld ArmReach::world_for(const Cloud& cloud) const {

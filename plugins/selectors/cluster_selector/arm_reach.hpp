@@ -4,7 +4,7 @@
 // the robot's collision world (antipode_collision) holding the observed points.
 //
 // The cloud must be in the robot's base frame (the frame named like the URDF's root link).
-// The gripper's links - from `points_unchecked_from` down - are not checked against the
+// The gripper's links - `points_unchecked` and those below them - are not checked against the
 // points: the selector's own hand check (hand_clearance.hpp) is finer and lets the fingers
 // enclose the target.
 
@@ -22,11 +22,11 @@
 namespace antipode::selectors {
 
 struct ArmReachOptions {
-  std::string robot_file;                 ///< URDF; "" = a free-floating hand (no check)
-  std::string arm_tip = "right_gripper";  ///< the grasp frame; the chain starts at the root
-  std::string points_unchecked_from = "right_hand";
-  double points_resolution_m = 0.01;  ///< the octree of the observed points
-  int ik_solutions = 12;              ///< distinct IK solutions tried at a grasp
+  std::string robot_file;                     ///< URDF; "" = a free-floating hand (no check)
+  std::string arm_tip;                        ///< the grasp frame; the chain starts at the root
+  std::vector<std::string> points_unchecked;  ///< RobotFile::points_unchecked
+  double points_resolution_m = 0.01;          ///< the octree of the observed points
+  int ik_solutions = 12;                      ///< distinct IK solutions tried at a grasp
 };
 
 class ArmReach {
@@ -50,7 +50,7 @@ class ArmReach {
   ArmReachOptions options_;
   RobotModel robot_;
   KinematicChain arm_;
-  std::vector<std::string> gripper_links_;  // below points_unchecked_from, itself included
+  std::vector<std::string> gripper_links_;  // points_unchecked and the links below them
 };
 
 }  // namespace antipode::selectors

@@ -4,6 +4,8 @@
 #include <string>
 #include <vector>
 
+#include "antipode/robot/robot_file.hpp"
+
 namespace antipode::selectors {
 namespace {
 
@@ -67,11 +69,12 @@ SelectionOptions read_selection_options(const Parameters& params) {
       params.number_in("score_first_tolerance", o.score_first_tolerance, 0.0, 1e6);
   o.max_grasps = std::size_t(params.number_in("max_grasps", double(o.max_grasps), 1, 1e6));
   o.threads = int(whole(params, "threads", o.threads, 0, 256));
-  o.arm.robot_file =
-      resolve_path(params.get<std::string>("robot", o.arm.robot_file), params.file());
-  o.arm.arm_tip = params.get<std::string>("arm_tip", o.arm.arm_tip);
-  o.arm.points_unchecked_from =
-      params.get<std::string>("points_unchecked_from", o.arm.points_unchecked_from);
+  if (params.has("robot")) {
+    const RobotFile robot = robot_file_parameter(params, "robot");
+    o.arm.robot_file = robot.urdf_path;
+    o.arm.arm_tip = robot.arm_tip;
+    o.arm.points_unchecked = robot.points_unchecked;
+  }
   o.arm.points_resolution_m =
       params.number_in("points_resolution_m", o.arm.points_resolution_m, 0.001, 0.1);
   o.arm.ik_solutions = int(params.number_in("ik_solutions", o.arm.ik_solutions, 1, 100));

@@ -30,7 +30,8 @@ struct ClutterBenchOptions {
   /// Each cycle's selection written as seed-S-cycle-NN.json ("" = none).
   std::string selections_dir;
   /// A gripper file (antipode/io/gripper_file.hpp) for the sampler's `hand`, whose apertures
-  /// also set which objects left count as holdable ("" = the tree's gripper, Baxter's range).
+  /// also set which objects left count as holdable ("" = the tree's: its robot file's gripper,
+  /// or Baxter's range without one).
   std::string gripper_path;
 };
 

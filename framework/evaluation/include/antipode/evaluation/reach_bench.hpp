@@ -12,9 +12,9 @@
 namespace antipode::evaluation {
 
 struct ReachBenchOptions {
-  std::string robot_path = "robots/baxter/baxter.urdf";
-  std::string base_link = "base";
-  std::string tip_link = "right_hand";
+  std::string robot_path = "robots/baxter/baxter.yaml";  ///< a robot file
+  std::string base_link;   ///< the IK chain's base; "" = the URDF's root
+  std::string tip_link;    ///< its tip; "" = the robot file's gripper_from (the flange or hand)
   int ik_poses = 10000;    ///< random reachable poses
   std::uint64_t seed = 1;  ///< the poses' random stream
   std::vector<std::string> solvers{"dls", "kdl"};
@@ -23,7 +23,8 @@ struct ReachBenchOptions {
   std::string report_path;  ///< JSON report ("" = none)
 
   // Planning in clutter: the components of `scene_tree` (cell, sampler, classifier, selector,
-  // planner), the cell's scene swapped for `scene_file`; 0 scenes skips it.
+  // planner), the cell's scene swapped for `scene_file` and its `robot` setting for
+  // `robot_path`; 0 scenes skips it.
   int scenes = 0;
   std::string scene_tree = "trees/plan_reach.yaml";
   std::string scene_file = "scenes/pile_procedural.yaml";

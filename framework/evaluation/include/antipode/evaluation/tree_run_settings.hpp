@@ -29,4 +29,9 @@ std::vector<std::pair<std::string, std::string>> parse_overrides(
 /// have that name.
 void check_entries_are_read(const std::string& tree_path, const std::vector<std::string>& set);
 
+/// The robot file a pick tree runs with: the last `--set robot=FILE` of `set`, else the
+/// tree file's `robot` setting (docs/trees.md, settings), resolved as the tree resolves it;
+/// "" when it names none.
+std::string tree_robot_path(const std::string& tree_path, const std::vector<std::string>& set);
+
 }  // namespace antipode::evaluation
