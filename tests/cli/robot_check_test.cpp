@@ -58,6 +58,17 @@ TEST(RobotCheck, BaxterPassesEveryCheck) {
       << result.out;
 }
 
+// The UR5e, written by following docs/robot.md's guide from public numbers: six joints of
+// +-2 pi, and its 2F-85-like fingers match their gripper file.
+TEST(RobotCheck, TheGuidesUr5ePassesEveryCheck) {
+  const auto result = check("robots/ur5e/ur5e.yaml --configurations 200");
+  ASSERT_EQ(result.exit_code, 0) << result.out;
+  EXPECT_NE(result.out.find("arm 'base' -> 'ur5e_grasp', 6 joints"), std::string::npos)
+      << result.out;
+  EXPECT_NE(result.out.find("open aperture: URDF 0.0850 m, file 0.0850 m\n"), std::string::npos)
+      << result.out;
+}
+
 // The Panda with its upper arm's housing ten times too wide and Baxter's gripper file.
 TEST(RobotCheck, ABadShapeAndAnotherGrippersFileAreProblems) {
   const fs::path dir = scratch("bad");

@@ -113,9 +113,12 @@ TEST(RobotFileTest, ThePandaFileNamesItsArmHomeGripperAndModel) {
   // The gripper file's apertures are the fingers' stroke in the URDF: 0-40 mm each.
   EXPECT_DOUBLE_EQ(panda.gripper.max_aperture_m, 0.08);
   EXPECT_EQ(std::filesystem::path(panda.model_path).filename(), "hog_svm_franka.model");
+  EXPECT_EQ(panda.points_unchecked,
+            (std::vector<std::string>{"panda_leftfinger", "panda_rightfinger"}));
   const RobotFile baxter = read_robot_file(kSource + "/robots/baxter/baxter.yaml");
   EXPECT_EQ(baxter.arm_tip, "right_gripper");
   EXPECT_DOUBLE_EQ(baxter.gripper.max_aperture_m, 0.072);
+  EXPECT_EQ(baxter.points_unchecked, std::vector<std::string>{"right_hand"});
 }
 
 class RobotFileErrorTest : public ::testing::Test {

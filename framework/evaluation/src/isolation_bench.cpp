@@ -181,6 +181,8 @@ Json run_isolation_bench(const IsolationBenchOptions& o) {
   add_how_it_ran(report, o.jobs, settings.threads, cores, wall_s);
   report["summary"] = summary;
   report["attempts"] = std::move(attempts);
+  if (const std::string robot = tree_robot_path(o.tree_path, o.set); !robot.empty())
+    report["robot"] = {{"file", robot}, {"name", read_robot_file(robot).name}};
   if (!shard.whole()) report["shard"] = shard_json(shard, tasks.size());
   return report;
 }

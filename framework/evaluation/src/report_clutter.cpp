@@ -203,6 +203,7 @@ ReportSection clutter_section(const Json& report, const std::string& name, const
                    : protocol.name == "vgn-pile" ? std::string("VGN pile: ")
                                                  : std::string("VGN packed: ")) +
                   object_set_name(report.at("objects"));
+  if (const std::string robot = robot_words(report); !robot.empty()) section.title += ", " + robot;
   if (report.contains("gripper"))
     section.title += ", " + report.at("gripper").at("name").get<std::string>();
   if (const std::string classifier = classifier_words(report); !classifier.empty())

@@ -188,9 +188,11 @@ std::string per_variant_rows(const Json& r, const std::string& key, const std::s
 ReportSection isolation_section(const Json& report, const std::string& name,
                                 const PlotPlace& plots) {
   ReportSection section;
-  section.title = "Isolation: " + object_set_name(report.at("objects")) + ", " +
-                  setting_words(report, "trees/pick_isolated_hand.yaml", "free-floating hand",
-                                "trees/pick_isolated.yaml", "Baxter's arm");
+  const std::string robot = robot_words(report);
+  section.title =
+      "Isolation: " + object_set_name(report.at("objects")) + ", " +
+      setting_words(report, "trees/pick_isolated_hand.yaml", "free-floating hand",
+                    "trees/pick_isolated.yaml", robot.empty() ? "Baxter's arm" : robot + "'s arm");
   section.markdown = settings_text(report) + command_text(report, name) + headline(report) +
                      per_object(report, plots, name) + "Failures (attempts):\n\n" +
                      per_variant_rows(report, "reasons", "failure class", false) +

@@ -3,7 +3,11 @@
 #include <cstdio>
 #include <filesystem>
 
+#include "antipode/core/error.hpp"
+#include "antipode/core/parameters.hpp"
+#include "antipode/core/shipped_data.hpp"
 #include "antipode/evaluation/bench_report.hpp"
+#include "antipode/robot/robot_file.hpp"
 
 namespace antipode::evaluation {
 
@@ -54,6 +58,21 @@ std::string setting_words(const nlohmann::ordered_json& report, const std::strin
     words +=
         std::string(words.empty() ? "" : ", ") + (noise == "0" ? "noise-free" : "noise x" + noise);
   return words;
+}
+
+std::string robot_words(const nlohmann::ordered_json& report) {
+  std::string path;
+  for (const auto& entry : report.value("overrides", nlohmann::ordered_json::array()))
+    if (const std::string text = entry.get<std::string>(); text.rfind("robot=", 0) == 0)
+      path = text.substr(6);
+  if (path.empty()) return "";
+  if (report.contains("robot") && report.at("robot").contains("name"))
+    return report.at("robot").at("name").get<std::string>();
+  try {
+    return read_robot_file(resolve_shipped(resolve_path(path, report.value("tree", "")))).name;
+  } catch (const Error&) {
+    return std::filesystem::path(path).stem().string();  // the report outlived the file
+  }
 }
 
 std::string classifier_words(const nlohmann::ordered_json& report) {

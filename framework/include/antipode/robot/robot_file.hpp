@@ -24,8 +24,8 @@
 /// motion are planned (the fingers enclose the target's points). Without it, the whole hand
 /// (`gripper_from` and below) is left unchecked: right for a hand no wider than the gripper
 /// file's palm, which the sampler checks against the points itself. Every key but `name`,
-/// `model` and `points_unchecked` is required: a file that left one out would silently describe
-/// part of another robot.
+/// `model` and `points_unchecked` is required: a file that left one out would silently
+/// describe part of another robot.
 
 #include <string>
 #include <vector>

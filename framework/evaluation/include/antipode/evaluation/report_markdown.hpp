@@ -50,6 +50,10 @@ std::string setting_words(const nlohmann::ordered_json& report, const std::strin
 /// classifier.
 std::string classifier_words(const nlohmann::ordered_json& report);
 
+/// The robot a report's `--set robot=FILE` puts in its tree's place: the report's `robot`
+/// name, else the robot file's, else the file's stem; empty when the report keeps the tree's.
+std::string robot_words(const nlohmann::ordered_json& report);
+
 /// "procedural shapes" or the mesh folder's name ("ycb objects").
 std::string object_set_name(const std::string& objects);
 
