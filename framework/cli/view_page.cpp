@@ -11,6 +11,7 @@
 #include "antipode/evaluation/json_file.hpp"
 #include "antipode/io/gripper_file.hpp"
 #include "antipode/io/load_cloud.hpp"
+#include "antipode/robot/robot_file.hpp"
 #include "view_encode.hpp"
 #include "view_run.hpp"
 #include "view_scene_file.hpp"
@@ -42,6 +43,18 @@ Json gripper_json(const std::string& path) {
           {"height_m", g.height_m},
           {"palm_thickness_m", g.palm_thickness_m},
           {"max_aperture_m", g.max_aperture_m}};
+}
+
+// The gripper the hands are drawn with: --gripper, else the gripper of the robot a bench
+// report ran with (its `robot` file, or a --gripper it was given), else Baxter's.
+std::string gripper_path(const ViewOptions& options, const Json& report) {
+  if (!options.gripper_path.empty()) return options.gripper_path;
+  if (report.contains("gripper") && report["gripper"].contains("file"))
+    return report["gripper"]["file"].get<std::string>();
+  if (report.contains("robot") && report["robot"].contains("file"))
+    return read_robot_file(resolve_shipped(report["robot"]["file"].get<std::string>()))
+        .gripper_path;
+  return "robots/grippers/baxter_electric.yaml";
 }
 
 // The inputs sorted by kind: at most one of each, a grasps file only with a cloud, a report
@@ -117,8 +130,7 @@ Json view_data(const ViewOptions& options) {
   if (in.report.empty() && !(options.selections_dir.empty() && options.pictures_dir.empty()))
     throw Error("view: --selections and --pictures go with a bench report");
   Json data = {{"title", ""}, {"gripper", Json()}, {"scenes", Json::array()}};
-  data["gripper"] = gripper_json(
-      options.gripper_path.empty() ? "robots/grippers/baxter_electric.yaml" : options.gripper_path);
+  data["gripper"] = gripper_json(gripper_path(options, in.report.empty() ? Json() : in.document));
   if (!in.cloud.empty()) {
     data["scenes"].push_back(detection_scene(in));
     data["title"] = data["scenes"][0]["name"];

@@ -16,8 +16,8 @@ struct ViewOptions {
   /// --trace`).
   std::vector<std::string> inputs;
   std::string out_path = "view.html";
-  /// The gripper file the hands are drawn with ("" = Baxter's,
-  /// robots/grippers/baxter_electric.yaml).
+  /// The gripper file the hands are drawn with ("" = a bench report's own: its --gripper or
+  /// its robot file's; else Baxter's, robots/grippers/baxter_electric.yaml).
   std::string gripper_path;
   /// With a report: the folders its bench's --selections and --pictures filled ("" = none).
   std::string selections_dir;

@@ -25,45 +25,52 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 
+// The table and the box as the cell reads them (plugins/cells/bullet_cell/scene_spec.hpp:
+// the same defaults, the box centred on the table unless it says otherwise).
 struct Layout {
-  double top_z = 0.0;
-  Eigen::Vector2d table_centre, table_size;
+  double top_z = -0.295;
+  Eigen::Vector2d table_centre{0.725, -0.135}, table_size{0.9, 1.0};
   bool has_box = false;
-  Eigen::Vector2d box_centre, box_inner;
+  Eigen::Vector2d box_centre{0.725, -0.135}, box_inner{0.3, 0.3};
   double wall_height = 0.06, wall_thickness = 0.01;
 };
 
-Eigen::Vector2d pair_at(const YAML::Node& map, const char* key, const std::string& path) {
+void read_pair(const YAML::Node& map, const char* key, Eigen::Vector2d& value) {
   const YAML::Node node = map[key];
-  if (!node || !node.IsSequence() || node.size() != 2)
-    throw Error(path + ": '" + key + "' must be [x, y]");
-  return {node[0].as<double>(), node[1].as<double>()};
+  if (!node.IsDefined()) return;
+  if (!node.IsSequence() || node.size() != 2)
+    throw Error(std::string("'") + key + "' must be [x, y]");
+  value = {node[0].as<double>(), node[1].as<double>()};
+}
+
+void read_number(const YAML::Node& map, const char* key, double& value) {
+  if (map[key].IsDefined()) value = map[key].as<double>();
 }
 
 Layout read_layout(const std::string& path) {
-  YAML::Node scene;
-  try {
-    scene = YAML::LoadFile(path);
-  } catch (const YAML::Exception& e) {
-    throw Error("scene file '" + path + "': " + e.what());
-  }
-  const YAML::Node table = scene["table"];
-  if (!table || !table.IsMap()) throw Error("scene file '" + path + "': no 'table'");
   Layout layout;
   try {
-    layout.top_z = table["top_z_m"].as<double>();
-    layout.table_centre = pair_at(table, "center_m", path);
-    layout.table_size = pair_at(table, "size_m", path);
+    const YAML::Node scene = YAML::LoadFile(path);
+    if (!scene.IsMap()) throw Error("not a map of scene keys");
+    const YAML::Node table = scene["table"];
+    if (table.IsDefined() && table.IsMap()) {
+      read_number(table, "top_z_m", layout.top_z);
+      read_pair(table, "center_m", layout.table_centre);
+      read_pair(table, "size_m", layout.table_size);
+    }
+    layout.box_centre = layout.table_centre;
     const YAML::Node box = scene["box"];
-    if (box && box.IsMap()) {
+    if (box.IsDefined() && box.IsMap()) {
       layout.has_box = true;
-      layout.box_centre = pair_at(box, "center_m", path);
-      layout.box_inner = pair_at(box, "inner_size_m", path);
-      if (box["wall_height_m"]) layout.wall_height = box["wall_height_m"].as<double>();
-      if (box["wall_thickness_m"]) layout.wall_thickness = box["wall_thickness_m"].as<double>();
+      read_pair(box, "center_m", layout.box_centre);
+      read_pair(box, "inner_size_m", layout.box_inner);
+      read_number(box, "wall_height_m", layout.wall_height);
+      read_number(box, "wall_thickness_m", layout.wall_thickness);
     }
   } catch (const YAML::Exception& e) {
     throw Error("scene file '" + path + "': " + e.what());
+  } catch (const Error& e) {
+    throw Error("scene file '" + path + "': " + e.message());
   }
   return layout;
 }
@@ -113,8 +120,10 @@ struct Arm {
   Eigen::VectorXd home;
 };
 
+// Whether the hand alone touched the scene (not itself or the arm: that is self-collision).
 bool hand_contact(const Reach& reach, const std::vector<std::string>& hand_links) {
   if (reach.status != ReachStatus::kInCollisionAtGrasp) return false;
+  if (reach.detail.rfind("collision: ", 0) != 0) return false;
   for (const std::string& link : hand_links)
     if (reach.detail.find(": " + link + " with ") != std::string::npos) return true;
   return false;
@@ -166,8 +175,12 @@ std::vector<ReachGrid> reach_grids(const RobotFile& robot_file, const RobotCheck
   // The palm stands so that the fingertips stop 5 mm above the surface: the URDF's fingers,
   // or the gripper file's depth where they are shorter.
   double reach_m = robot_file.gripper.depth_m;
-  for (const GripperMatch& m : match_gripper(robot_file, o.tolerance_m))
-    if (m.quantity.rfind("finger reach", 0) == 0) reach_m = std::max(reach_m, m.urdf_m);
+  try {
+    for (const GripperMatch& m : match_gripper(robot_file, o.tolerance_m))
+      if (m.quantity.rfind("finger reach", 0) == 0) reach_m = std::max(reach_m, m.urdf_m);
+  } catch (const Error&) {
+    // no two fingers: the gripper file's depth (check_robot reports the fingers)
+  }
   const double palm_z = layout.top_z + 0.005 + reach_m;
   const std::vector<std::string> hand_links = shaped_links_below(robot, robot_file.gripper_from);
   const Arm on_arm{arm, world, hand_links, home};

@@ -92,7 +92,11 @@ RobotCheck check_robot(const RobotFile& file, const RobotCheckOptions& o) {
       check.problems.push_back(check.arm.joint_names()[i] + " has no velocity limit");
   }
   check_self_collision(check, robot, file, o);
-  check.gripper = match_gripper(file, o.tolerance_m);
+  try {
+    check.gripper = match_gripper(file, o.tolerance_m);
+  } catch (const Error& e) {
+    check.problems.push_back(e.message());  // no two fingers to compare
+  }
   for (const GripperMatch& m : check.gripper)
     if (m.required && !m.ok)
       check.problems.push_back(
@@ -101,7 +105,7 @@ RobotCheck check_robot(const RobotFile& file, const RobotCheckOptions& o) {
   check.reach = reach_grids(file, o);
   for (const ReachGrid& grid : check.reach)
     if (grid.region == "box floor" &&
-        10 * (grid.points_reachable + grid.points_hand_blocked) < 9 * grid.points)
+        10 * grid.points_reachable < 9 * (grid.points - grid.points_hand_blocked))
       check.problems.push_back(format(
           "the arm reaches %.0f%% of the points of the box floor from "
           "above where the hand fits (at least 90%% expected)",

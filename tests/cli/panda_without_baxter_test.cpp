@@ -39,11 +39,6 @@ class PandaWithoutBaxterTest : public ::testing::Test {
 
 fs::path PandaWithoutBaxterTest::root_;
 
-TEST_F(PandaWithoutBaxterTest, TheCopyHasNoBaxter) {
-  EXPECT_FALSE(fs::exists(root_ / "robots/baxter"));
-  EXPECT_FALSE(fs::exists(root_ / "models/hog_svm.model"));
-}
-
 TEST_F(PandaWithoutBaxterTest, ClearsASeededBoxOfFourObjects) {
   const auto r = antipode(
       "run trees/clear_box.yaml --set robot=robots/panda/panda.yaml --set cell.object_count=4 "

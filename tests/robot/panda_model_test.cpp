@@ -162,6 +162,9 @@ TEST_F(RobotFileErrorTest, BadFilesGiveOneLineNamingTheKey) {
                 .find("home_rad: panda_joint4 = 0.000000 is outside its limits [-3.071800, "
                       "-0.069800]"),
             std::string::npos);
+  EXPECT_NE(error_with("arm_tip: panda_grasp\ngripper_from: panda_link5\n" + home)
+                .find("gripper_from: joints move between 'panda_link5' and the grasp frame"),
+            std::string::npos);
   EXPECT_NE(
       error_with("arm_tip: panda_grasp\n" + home).find("missing required parameter 'gripper_from'"),
       std::string::npos);

@@ -93,6 +93,16 @@ RobotFile read_robot_file(const std::string& path) {
   const KinematicChain arm = robot.chain(robot.root_link(), file.arm_tip);
   if (arm.dof() == 0) p.fail("arm_tip", "arm_tip: no moving joint between the root and it");
   file.gripper_from = link_on_arm(p, "gripper_from", robot, arm.link_names());
+  if (robot.chain(file.gripper_from, file.arm_tip).dof() != 0) {
+    p.fail("gripper_from", "gripper_from: joints move between '" + file.gripper_from +
+                               "' and the grasp frame; name the hand's first link, past the "
+                               "arm's last joint");
+  }
+  if (robot.root_link() != "base") {
+    p.fail("urdf", "urdf: the root link of " + file.urdf_path + " is '" + robot.root_link() +
+                       "'; clouds and grasps are in the cell's frame 'base': name the root "
+                       "link base (docs/robot.md, \"Bringing your own robot\")");
+  }
   file.home_rad = home_of(p, arm);
   file.points_unchecked = p.get<std::vector<std::string>>("points_unchecked", {file.gripper_from});
   for (const std::string& link : file.points_unchecked) {

@@ -2,9 +2,9 @@
 // The robot arm of the simulated cell: it starts every attempt at its home configuration,
 // follows a joint-space trajectory kinematically (no dynamics), and reports the first
 // contact of one of its links with the true scene - the table, the box, the objects - on
-// the way ("collision with the environment", the paper's failure class). The gripper's
-// links are not checked here: the cell's gripper simulation takes over at the end of the
-// trajectory.
+// the way ("collision with the environment", the paper's failure class). Its links on the
+// chain to the grasp frame are checked (a hand's housing too); the fingers, off the chain,
+// are not: the cell's gripper simulation takes over at the end of the trajectory.
 //
 // Frames and units: the robot's base frame is the cell's base frame; radians, metres.
 

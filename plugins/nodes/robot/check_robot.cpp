@@ -126,7 +126,6 @@ class CheckRobot final : public bt::SyncActionNode {
                                      "a cell scene whose table and box the reach grids cover; "
                                      "empty = no reach grid"),
          bt::input_port<int>("configurations", 1000, "random configurations for self-collision"),
-         bt::input_port<int>("seed", 1, "their random stream"),
          bt::input_port<std::string>("report", std::string(), "JSON report file; empty = none")},
         0,
         0,
@@ -143,7 +142,8 @@ class CheckRobot final : public bt::SyncActionNode {
     options.scene_path = scene.empty() ? scene : resolve_path(scene, where().file);
     options.configurations = get_input<int>("configurations");
     if (options.configurations < 1) fail("configurations", "configurations must be at least 1");
-    options.seed = std::uint64_t(std::max(0, get_input<int>("seed")));
+    // The configurations follow the tree's seed (`--seed`), as every random stream does.
+    options.seed = std::uint64_t(random().uniform() * 9007199254740992.0);
     const RobotCheck check = collision::check_robot(file, options);
     for (const std::string& line : report_lines(check, file)) log(line);
     const std::string report = get_input<std::string>("report");
