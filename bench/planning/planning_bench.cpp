@@ -45,10 +45,12 @@ double quantile(std::vector<double> v, double q) {
   return v[k];
 }
 
-void BM_PlanNeutralToAboveTheBox(benchmark::State& state) {
+void plan_neutral_to_above_the_box(benchmark::State& state, antipode::collision::CheckMode mode) {
   const antipode::RobotModel robot = antipode::RobotModel::load(ANTIPODE_BENCH_ROBOT);
   const antipode::KinematicChain arm = robot.chain("base", "right_gripper");
-  ArmCollisionWorld world(robot, arm);
+  antipode::collision::CollisionOptions options;
+  options.mode = mode;
+  ArmCollisionWorld world(robot, arm, {}, options);
   antipode::bench::add_table_and_box(world);
   const std::vector<Eigen::VectorXd> targets = goals(arm, world, 50);
   antipode::planning::ArmPlanningProblem problem;
@@ -72,6 +74,16 @@ void BM_PlanNeutralToAboveTheBox(benchmark::State& state) {
   state.counters["shortening_median_ms"] = quantile(shortening_ms, 0.5);
 }
 
+// The collision checks as the planner makes them (spheres, then FCL where they touch), and
+// with FCL alone, side by side.
+void BM_PlanNeutralToAboveTheBox(benchmark::State& state) {
+  plan_neutral_to_above_the_box(state, antipode::collision::CheckMode::kSpheresThenExact);
+}
+void BM_PlanNeutralToAboveTheBox_Exact(benchmark::State& state) {
+  plan_neutral_to_above_the_box(state, antipode::collision::CheckMode::kExact);
+}
+
 BENCHMARK(BM_PlanNeutralToAboveTheBox)->Unit(benchmark::kMillisecond)->Iterations(50);
+BENCHMARK(BM_PlanNeutralToAboveTheBox_Exact)->Unit(benchmark::kMillisecond)->Iterations(50);
 
 }  // namespace

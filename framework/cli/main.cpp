@@ -233,6 +233,11 @@ void add_bench_reach(CLI::App& bench, antipode::evaluation::ReachBenchOptions& o
   reach->add_option("--tree", o.scene_tree, "Tree whose components detect and plan")
       ->capture_default_str();
   reach->add_option("--set", o.set, "component.key=value for the scene tree (repeatable)");
+  reach->add_option("--problems", o.problems, "Problems per planning scene (0: none)")
+      ->capture_default_str();
+  reach->add_option("--problem-scenes", o.problem_scenes, "Planning scene files")->delimiter(',');
+  reach->add_flag("--side-by-side", o.side_by_side,
+                  "Plan every problem also with FCL alone (planner.collision=exact)");
   reach->add_option("--report", o.report_path, "Write the report as JSON");
 }
 

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <set>
 #include <utility>
 
@@ -16,6 +17,8 @@
 
 #include "antipode/core/error.hpp"
 #include "collision_pairs.hpp"
+#include "distance_grid.hpp"
+#include "sphere_arm.hpp"
 
 namespace antipode::collision {
 
@@ -101,24 +104,32 @@ struct ArmCollisionWorld::Impl {
   // keep their values); a fixed one stands at X_ParentLink in the base frame.
   struct Link {
     std::string name;
+    std::vector<CollisionPrimitive> primitives;
     std::vector<Shape> shapes;
     std::size_t first_shape = 0;  // where its shapes' poses start in check()'s array
     bool moving = false;
     std::size_t arm_link = 0;
     Eigen::Isometry3d X_ParentLink = Eigen::Isometry3d::Identity();
   };
-  struct Box {
+  struct Box {  // an obstacle: a box, or a cylinder (add_cylinder)
     std::string name;
     Shape shape;
   };
 
   KinematicChain arm;
+  CollisionOptions options;
   std::vector<Link> links;
   std::size_t shape_count = 0;
   std::vector<std::pair<std::size_t, std::size_t>> pairs;  // indices into links
   std::vector<Box> boxes;
   Shape points;                        // geometry null when there are none
   std::vector<char> points_unchecked;  // per link
+  // The fast path (none in kExact mode): the spheres, the boxes as its kernels take them,
+  // the points' distance grid, and the spheres' radii against the points.
+  std::unique_ptr<SphereArm> spheres;
+  std::vector<KernelBox> kernel_boxes;
+  DistanceGrid grid;
+  std::vector<float> points_radius;
 
   // Every shape's pose with the arm's links at `arm` (KinematicChain::link_poses), link by
   // link from each link's first_shape.
@@ -144,6 +155,49 @@ struct ArmCollisionWorld::Impl {
           return true;
     return false;
   }
+
+  // The first contact of moving link i with the boxes and points that `near` names (bits as
+  // SphereArm::environment_contacts()'s), shape by shape, the boxes before the points. With
+  // `confirm` false the first named is taken for a contact without FCL.
+  template <class Poses>
+  std::optional<ContactReport> environment_contact(std::size_t i, std::uint32_t near, bool confirm,
+                                                   Poses&& fcl_poses) const {
+    const auto box_near = [near](std::size_t b) {
+      return (near >> std::min(int(b), SphereArm::kLastBoxBit) & 1U) != 0;
+    };
+    const bool points_near =
+        (near >> SphereArm::kPointsBit & 1U) && points.geometry && !points_unchecked[i];
+    const auto contact = [&](const std::string& other) {
+      return ContactReport{ContactReport::Kind::kEnvironment, links[i].name, other};
+    };
+    if (!confirm) {
+      for (std::size_t b = 0; b < boxes.size(); ++b)
+        if (box_near(b)) return contact(boxes[b].name);
+      if (points_near) return contact("points");
+      return std::nullopt;
+    }
+    const std::vector<Eigen::Isometry3d>& poses = fcl_poses();
+    const Eigen::Isometry3d identity = Eigen::Isometry3d::Identity();
+    for (std::size_t k = 0; k < links[i].shapes.size(); ++k) {
+      const Shape& s = links[i].shapes[k];
+      const Eigen::Isometry3d& X_BaseShape = poses[links[i].first_shape + k];
+      for (std::size_t b = 0; b < boxes.size(); ++b)
+        if (box_near(b) && collide(s, X_BaseShape, boxes[b].shape, boxes[b].shape.X_LinkShape))
+          return contact(boxes[b].name);
+      if (points_near && collide(s, X_BaseShape, points, identity)) return contact("points");
+    }
+    return std::nullopt;
+  }
+
+  ContactReport self_report(std::size_t pair) const {
+    const auto [a, b] = pairs[pair];
+    const bool a_moves = links[a].moving;
+    return {ContactReport::Kind::kSelf, a_moves ? links[a].name : links[b].name,
+            a_moves ? links[b].name : links[a].name};
+  }
+
+  ContactReport check_exact(const Eigen::VectorXd& q) const;
+  ContactReport check_with_spheres(const Eigen::VectorXd& q) const;
 };
 
 namespace {
@@ -180,15 +234,16 @@ ArmCollisionWorld::Impl::Link make_link(const RobotModel& robot, const Kinematic
       if (std::find(path.begin(), path.end(), arm_links[k]) != path.end()) link.arm_link = k;
     link.X_ParentLink = arm_poses[link.arm_link].inverse() * link.X_ParentLink;
   }
-  for (const CollisionPrimitive& p : robot.collision_shapes(name))
-    link.shapes.push_back(make_shape(p));
+  link.primitives = robot.collision_shapes(name);
+  for (const CollisionPrimitive& p : link.primitives) link.shapes.push_back(make_shape(p));
   return link;
 }
 
 }  // namespace
 
 ArmCollisionWorld::ArmCollisionWorld(const RobotModel& robot, const KinematicChain& arm,
-                                     const std::map<std::string, double>& joint_values)
+                                     const std::map<std::string, double>& joint_values,
+                                     const CollisionOptions& options)
     : impl_(std::make_unique<Impl>()) {
   if (arm.base_link() != robot.root_link()) {
     throw Error("collision world: the arm chain must start at the robot's root link '" +
@@ -201,6 +256,7 @@ ArmCollisionWorld::ArmCollisionWorld(const RobotModel& robot, const KinematicCha
                   did_you_mean(entry.first, joints));
   }
   impl_->arm = arm;
+  impl_->options = options;
   Eigen::VectorXd zero = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(arm.dof()));
   for (std::size_t j = 0; j < arm.dof(); ++j)
     zero(Eigen::Index(j)) = std::clamp(0.0, arm.limits()[j].lower, arm.limits()[j].upper);
@@ -223,6 +279,14 @@ ArmCollisionWorld::ArmCollisionWorld(const RobotModel& robot, const KinematicCha
       if (!impl_->links_collide(a, b, at_zero)) impl_->pairs.emplace_back(a, b);
     }
   }
+  if (options.mode == CheckMode::kExact) return;
+  std::vector<SphereArm::Link> sphere_links;
+  sphere_links.reserve(links.size());
+  for (const Impl::Link& link : links)
+    sphere_links.push_back(
+        {link.primitives, link.moving ? int(link.arm_link) : -1, link.X_ParentLink});
+  impl_->spheres =
+      std::make_unique<SphereArm>(arm, sphere_links, impl_->pairs, options.sphere_overshoot_m);
 }
 
 ArmCollisionWorld::~ArmCollisionWorld() = default;
@@ -237,6 +301,21 @@ void ArmCollisionWorld::add_box(const std::string& name, const Eigen::Isometry3d
   p.size_m = size_m;
   p.X_LinkShape = X_BaseBox;
   impl_->boxes.push_back({name, make_shape(p)});
+  impl_->kernel_boxes.push_back(kernel_box(X_BaseBox, size_m));
+}
+
+void ArmCollisionWorld::add_cylinder(const std::string& name,
+                                     const Eigen::Isometry3d& X_BaseCylinder, double radius_m,
+                                     double length_m) {
+  if (!(radius_m > 0.0 && length_m > 0.0 && std::isfinite(radius_m) && std::isfinite(length_m)))
+    throw Error("collision world: cylinder '" + name + "' needs a positive radius and length");
+  CollisionPrimitive p;
+  p.kind = CollisionPrimitive::Kind::kCylinder;
+  p.size_m = Eigen::Vector3d(radius_m, length_m, 0.0);
+  p.X_LinkShape = X_BaseCylinder;
+  impl_->boxes.push_back({name, make_shape(p)});
+  impl_->kernel_boxes.push_back(
+      kernel_box(X_BaseCylinder, Eigen::Vector3d(2 * radius_m, 2 * radius_m, length_m)));
 }
 
 void ArmCollisionWorld::set_points(const std::vector<Eigen::Vector3f>& points_m,
@@ -255,7 +334,13 @@ void ArmCollisionWorld::set_points(const std::vector<Eigen::Vector3f>& points_m,
   }
   impl_->points_unchecked = std::move(unchecked);
   impl_->points = {};
+  impl_->grid = DistanceGrid();
   if (points_m.empty()) return;
+  if (impl_->spheres) {
+    // The grid reaches past the largest sphere, so that beyond it every sphere is clear.
+    impl_->grid = DistanceGrid(points_m, resolution_m, impl_->spheres->max_radius_m() + 0.02);
+    impl_->points_radius = impl_->spheres->points_radii(impl_->points_unchecked);
+  }
   auto tree = std::make_shared<octomap::OcTree>(resolution_m);
   for (const Eigen::Vector3f& p : points_m)
     if (p.allFinite()) tree->updateNode(octomap::point3d(p.x(), p.y(), p.z()), true);
@@ -268,30 +353,66 @@ ContactReport ArmCollisionWorld::check(const Eigen::VectorXd& q) const {
     throw Error("collision check: " + std::to_string(q.size()) + " joint values for the " +
                 std::to_string(impl_->arm.dof()) + " joints of the arm (all finite)");
   }
-  const auto& links = impl_->links;
-  const std::vector<Eigen::Isometry3d> poses = impl_->shape_poses(impl_->arm.link_poses(q));
-  for (const auto& [a, b] : impl_->pairs) {
-    if (impl_->links_collide(a, b, poses)) {
-      const bool a_moves = links[a].moving;
-      return {ContactReport::Kind::kSelf, a_moves ? links[a].name : links[b].name,
-              a_moves ? links[b].name : links[a].name};
-    }
-  }
-  const Eigen::Isometry3d identity = Eigen::Isometry3d::Identity();
-  for (std::size_t i = 0; i < links.size(); ++i) {
-    if (!links[i].moving) continue;
-    const bool check_points = impl_->points.geometry && !impl_->points_unchecked[i];
-    for (std::size_t k = 0; k < links[i].shapes.size(); ++k) {
-      const Shape& s = links[i].shapes[k];
-      const Eigen::Isometry3d& X_BaseShape = poses[links[i].first_shape + k];
-      for (const Impl::Box& box : impl_->boxes)
-        if (collide(s, X_BaseShape, box.shape, box.shape.X_LinkShape))
-          return {ContactReport::Kind::kEnvironment, links[i].name, box.name};
-      if (check_points && collide(s, X_BaseShape, impl_->points, identity))
-        return {ContactReport::Kind::kEnvironment, links[i].name, "points"};
-    }
-  }
+  return impl_->spheres ? impl_->check_with_spheres(q) : impl_->check_exact(q);
+}
+
+ContactReport ArmCollisionWorld::Impl::check_exact(const Eigen::VectorXd& q) const {
+  const std::vector<Eigen::Isometry3d> poses = shape_poses(arm.link_poses(q));
+  for (std::size_t k = 0; k < pairs.size(); ++k)
+    if (links_collide(pairs[k].first, pairs[k].second, poses)) return self_report(k);
+  const auto given = [&poses]() -> const std::vector<Eigen::Isometry3d>& { return poses; };
+  for (std::size_t i = 0; i < links.size(); ++i)
+    if (links[i].moving)
+      if (auto contact = environment_contact(i, ~std::uint32_t(0), true, given)) return *contact;
   return {};
+}
+
+// The same contacts, in the same order, as check_exact(); FCL runs only where the spheres
+// touch (and not at all in kSpheres mode).
+ContactReport ArmCollisionWorld::Impl::check_with_spheres(const Eigen::VectorXd& q) const {
+  thread_local SphereArm::Placement placement;
+  thread_local std::vector<int> self_hits;
+  thread_local std::vector<std::uint32_t> near;
+  spheres->place(q.data(), placement);
+  const bool exact = options.mode == CheckMode::kSpheresThenExact;
+  std::vector<Eigen::Isometry3d> poses;  // FCL's, made when first needed
+  const auto fcl_poses = [&]() -> const std::vector<Eigen::Isometry3d>& {
+    if (poses.empty()) poses = shape_poses(arm.link_poses(q));  // double, as check_exact()
+    return poses;
+  };
+  spheres->contacts(placement, kernel_boxes, grid, points_radius, self_hits, near);
+  for (const int k : self_hits) {
+    const auto [a, b] = pairs[std::size_t(k)];
+    if (!exact || links_collide(a, b, fcl_poses())) return self_report(std::size_t(k));
+  }
+  for (std::size_t i = 0; i < links.size(); ++i)
+    if (links[i].moving && near[i] != 0)
+      if (auto contact = environment_contact(i, near[i], exact, fcl_poses)) return *contact;
+  return {};
+}
+
+std::size_t ArmCollisionWorld::first_contact(const std::vector<Eigen::VectorXd>& qs) const {
+  for (const Eigen::VectorXd& q : qs)
+    if (static_cast<std::size_t>(q.size()) != impl_->arm.dof() || !q.allFinite()) (void)check(q);
+  if (!impl_->spheres) {
+    for (std::size_t i = 0; i < qs.size(); ++i)
+      if (!impl_->check_exact(qs[i]).free()) return i;
+    return qs.size();
+  }
+  const double* lanes[kBatchLanes];
+  for (std::size_t first = 0; first < qs.size(); first += kBatchLanes) {
+    const int count = int(std::min<std::size_t>(kBatchLanes, qs.size() - first));
+    for (int l = 0; l < count; ++l) lanes[l] = qs[first + std::size_t(l)].data();
+    const std::uint32_t flagged = impl_->spheres->contacts_batch(lanes, count, impl_->kernel_boxes,
+                                                                 impl_->grid, impl_->points_radius);
+    for (int l = 0; l < count; ++l) {
+      if (!(flagged >> l & 1U)) continue;
+      if (impl_->options.mode == CheckMode::kSpheres ||
+          !impl_->check_exact(qs[first + std::size_t(l)]).free())
+        return first + std::size_t(l);
+    }
+  }
+  return qs.size();
 }
 
 std::vector<std::pair<std::string, std::string>> ArmCollisionWorld::self_pairs() const {
@@ -306,5 +427,13 @@ std::vector<std::string> ArmCollisionWorld::arm_links() const {
     if (link.moving) names.push_back(link.name);
   return names;
 }
+
+std::size_t ArmCollisionWorld::spheres() const {
+  return impl_->spheres ? impl_->spheres->spheres() : 0;
+}
+double ArmCollisionWorld::overshoot_m() const {
+  return impl_->spheres ? impl_->spheres->overshoot_m() : 0.0;
+}
+CheckMode ArmCollisionWorld::mode() const { return impl_->options.mode; }
 
 }  // namespace antipode::collision

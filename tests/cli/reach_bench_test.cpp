@@ -57,10 +57,46 @@ TEST(ReachBench, PlansToTheGraspsSelectedInClutterScenes) {
   EXPECT_GT(p["collision_checks_per_s"].get<double>(), 0.0);
 }
 
+TEST(ReachBench, PlansTheMotionBenchMakerProblemsBesideFclAlone) {
+  const fs::path file = fs::temp_directory_path() /
+                        ("antipode_reach_problems_" + std::to_string(::getpid()) + ".json");
+  const auto result = reach(
+      "--robot robots/panda/panda.yaml --ik-poses 0 --problems 3 --side-by-side "
+      "--problem-scenes scenes/planning/mbm_bookshelf_small.yaml,scenes/planning/mbm_box.yaml "
+      "--report " +
+      file.string());
+  ASSERT_EQ(result.exit_code, 0) << result.out;
+  std::ifstream in(file);
+  const nlohmann::json r = nlohmann::json::parse(in)["problems"];
+  fs::remove(file);
+  ASSERT_EQ(r["scenes"].size(), 2U) << r.dump(1);
+  for (const auto& scene : r["scenes"]) {
+    EXPECT_EQ(scene["attempts"], 3);
+    EXPECT_EQ(scene["with_ik"], 3);  // draws without a collision-free goal are set aside
+    EXPECT_GE(scene["draws"].get<int>(), 3);
+    EXPECT_GE(scene["successes"].get<int>(), 2) << scene.dump(1);
+    EXPECT_EQ(scene["exact"]["attempts"], 3);
+    EXPECT_GE(scene["exact"]["successes"].get<int>(), 2) << scene.dump(1);
+  }
+  EXPECT_EQ(r["all"]["attempts"], 6);
+  EXPECT_NE(result.out.find("the same with FCL alone"), std::string::npos) << result.out;
+}
+
 TEST(ReachBench, BadOptionsGiveOneLineAndExitCode2) {
-  auto r = reach("--ik-poses 0");
+  auto r = reach("--ik-poses -1");
   EXPECT_EQ(r.exit_code, 2);
-  EXPECT_NE(r.out.find("--ik-poses must be at least 1"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("--ik-poses must be at least 0"), std::string::npos) << r.out;
+  r = reach("--ik-poses 0");
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.out.find("nothing to measure (give --ik-poses, --scenes or --problems)"),
+            std::string::npos)
+      << r.out;
+  r = reach(
+      "--ik-poses 0 --problems 1 --problem-scenes scenes/planning/mbm_box.yaml "
+      "--robot robots/ur5e/ur5e.yaml");
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.out.find("places no robot 'ur5e' (it places panda, baxter)"), std::string::npos)
+      << r.out;
   r = reach("--solvers trac");
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(r.out.find("unknown IK solver 'trac'"), std::string::npos) << r.out;

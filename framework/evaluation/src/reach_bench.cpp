@@ -76,12 +76,15 @@ nlohmann::ordered_json to_json(const SolverFigures& f) {
 
 void check(const ReachBenchOptions& o) {
   if (!o.report_path.empty()) check_output_path(o.report_path);
-  if (o.ik_poses < 1) throw Error("bench reach: --ik-poses must be at least 1");
+  if (o.ik_poses < 0) throw Error("bench reach: --ik-poses must be at least 0");
   if (!(o.timeout_ms > 0.0)) throw Error("bench reach: --timeout-ms must be positive");
   if (!(o.tolerance > 0.0 && o.tolerance < 1.0))
     throw Error("bench reach: --tolerance must be in (0, 1)");
   if (o.solvers.empty()) throw Error("bench reach: --solvers names no solver (use dls, kdl)");
   if (o.scenes < 0) throw Error("bench reach: --scenes must be at least 0");
+  if (o.problems < 0) throw Error("bench reach: --problems must be at least 0");
+  if (o.ik_poses == 0 && o.scenes == 0 && o.problems == 0)
+    throw Error("bench reach: nothing to measure (give --ik-poses, --scenes or --problems)");
   for (const std::string& s : o.solvers) ik_solver(s);  // throws for an unknown name
 }
 
@@ -99,26 +102,30 @@ nlohmann::ordered_json run_reach_bench(const ReachBenchOptions& o) {
                                    {"chain", {base, tip}},    {"ik_poses", o.ik_poses},
                                    {"seed", o.seed},          {"timeout_ms", o.timeout_ms},
                                    {"tolerance", o.tolerance}};
-  std::cout << robot_file.name << ": IK, " << chain.dof() << " joints from '" << base << "' to '"
-            << tip << "', " << o.ik_poses
-            << " random reachable poses, seed at mid-range, tolerance " << o.tolerance
-            << ", timeout " << o.timeout_ms << " ms\n";
-  std::cout << std::left << std::setw(8) << "solver" << std::setw(22) << "success" << std::setw(12)
-            << "median ms" << std::setw(12) << "mean ms"
-            << "p90 ms\n";
-  for (const std::string& name : o.solvers) {
-    const IkSolver solver = ik_solver(name);
-    const SolverFigures f = measure(chain, targets, solver, o);
-    std::ostringstream rate;
-    rate << f.successes << "/" << f.attempts << " " << std::fixed << std::setprecision(2)
-         << 100.0 * f.successes / f.attempts << "%";
-    std::cout << std::left << std::setw(8) << name << std::setw(22) << rate.str() << std::fixed
-              << std::setprecision(4) << std::setw(12) << f.median_ms << std::setw(12) << f.mean_ms
-              << f.p90_ms << "\n";
-    // "ik" is the project's solver; the others are reported beside it by name.
-    report[solver == IkSolver::kDampedLeastSquares ? "ik" : std::string("ik_") + name] = to_json(f);
+  if (o.ik_poses > 0) {
+    std::cout << robot_file.name << ": IK, " << chain.dof() << " joints from '" << base << "' to '"
+              << tip << "', " << o.ik_poses
+              << " random reachable poses, seed at mid-range, tolerance " << o.tolerance
+              << ", timeout " << o.timeout_ms << " ms\n";
+    std::cout << std::left << std::setw(8) << "solver" << std::setw(22) << "success"
+              << std::setw(12) << "median ms" << std::setw(12) << "mean ms"
+              << "p90 ms\n";
+    for (const std::string& name : o.solvers) {
+      const IkSolver solver = ik_solver(name);
+      const SolverFigures f = measure(chain, targets, solver, o);
+      std::ostringstream rate;
+      rate << f.successes << "/" << f.attempts << " " << std::fixed << std::setprecision(2)
+           << 100.0 * f.successes / f.attempts << "%";
+      std::cout << std::left << std::setw(8) << name << std::setw(22) << rate.str() << std::fixed
+                << std::setprecision(4) << std::setw(12) << f.median_ms << std::setw(12)
+                << f.mean_ms << f.p90_ms << "\n";
+      // "ik" is the project's solver; the others are reported beside it by name.
+      report[solver == IkSolver::kDampedLeastSquares ? "ik" : std::string("ik_") + name] =
+          to_json(f);
+    }
   }
   if (o.scenes > 0) report["planning"] = bench_planning_scenes(o);
+  if (o.problems > 0) report["problems"] = bench_planning_problems(o);
   return report;
 }
 

@@ -4,6 +4,7 @@
 #include <iostream>
 #include <map>
 #include <memory>
+#include <optional>
 
 #include "antipode/core/error.hpp"
 #include "antipode/evaluation/bench_report.hpp"
@@ -15,6 +16,7 @@
 #include "antipode/interfaces/grasp_selector.hpp"
 #include "antipode/interfaces/motion_planner.hpp"
 #include "antipode/interfaces/sampler.hpp"
+#include "reach_figures.hpp"
 
 namespace antipode::evaluation {
 namespace {
@@ -30,18 +32,6 @@ std::shared_ptr<C> component_of(const bt::Tree& tree, const std::string& name,
                 name + "' is missing or of another kind");
   }
   return component;
-}
-
-// The figures of one planning call.
-struct PlanFigures {
-  PlanningStatus status;
-  double goal_ms, search_ms, simplify_ms;
-  long checks;
-};
-
-bool has_goal(PlanningStatus s) {
-  return s == PlanningStatus::kSolved || s == PlanningStatus::kTimedOut ||
-         s == PlanningStatus::kCancelled;
 }
 
 }  // namespace
@@ -61,8 +51,16 @@ nlohmann::ordered_json bench_planning_scenes(const ReachBenchOptions& o) {
   const auto classifier = component_of<Classifier>(tree, "classifier", o);
   const auto selector = component_of<GraspSelector>(tree, "selector", o);
   const auto planner = component_of<MotionPlanner>(tree, "planner", o);
+  // Side by side: the same problems with FCL alone.
+  std::optional<bt::Tree> exact_tree;
+  std::shared_ptr<MotionPlanner> exact;
+  if (o.side_by_side) {
+    settings.set.push_back("planner.collision=exact");
+    exact_tree.emplace(load_tree_for(session, o.scene_tree, {}, settings));
+    exact = component_of<MotionPlanner>(*exact_tree, "planner", o);
+  }
 
-  std::vector<PlanFigures> plans;
+  std::vector<PlanFigures> plans, exact_plans;
   int scenes_with_grasps = 0;
   for (int s = 0; s < o.scenes; ++s) {
     const std::uint64_t seed = o.seed + std::uint64_t(s);
@@ -88,9 +86,8 @@ nlohmann::ordered_json bench_planning_scenes(const ReachBenchOptions& o) {
       problem.start = cell->arm_state();
       problem.scene = cloud;
       problem.seed = seed;
-      const PlanningResult r = planner->plan(problem);
-      plans.push_back(
-          {r.status, 1e3 * r.goal_s, 1e3 * r.search_s, 1e3 * r.simplify_s, r.collision_checks});
+      plans.push_back(figures_of(planner->plan(problem)));
+      if (exact) exact_plans.push_back(figures_of(exact->plan(problem)));
     }
     scenes_with_grasps += any ? 1 : 0;
     std::cerr << "\rscene " << s + 1 << "/" << o.scenes << ", " << plans.size() << " grasps"
@@ -98,36 +95,12 @@ nlohmann::ordered_json bench_planning_scenes(const ReachBenchOptions& o) {
   }
   std::cerr << "\n";
 
-  std::map<std::string, int> statuses;
-  std::vector<double> goal_ms, search_ms, simplify_ms;
-  int with_goal = 0, solved = 0;
-  double checks = 0.0, search_total_s = 0.0;
-  for (const PlanFigures& p : plans) {
-    ++statuses[to_string(p.status)];
-    goal_ms.push_back(p.goal_ms);
-    if (!has_goal(p.status)) continue;
-    ++with_goal;
-    checks += double(p.checks);
-    search_total_s += p.search_ms / 1e3;
-    search_ms.push_back(p.search_ms);
-    if (p.status != PlanningStatus::kSolved) continue;
-    ++solved;
-    simplify_ms.push_back(p.simplify_ms);
-  }
-  nlohmann::ordered_json out = {
-      {"scenes", o.scenes},
-      {"scene_file", o.scene_file},
-      {"scenes_with_grasps", scenes_with_grasps},
-      {"attempts", int(plans.size())},
-      {"with_ik", with_goal},
-      {"successes", solved},
-      {"median_ms", percentile(search_ms, 0.5)},
-      {"p90_ms", percentile(search_ms, 0.9)},
-      {"goal_median_ms", percentile(goal_ms, 0.5)},
-      {"goal_p90_ms", percentile(goal_ms, 0.9)},
-      {"simplify_median_ms", percentile(simplify_ms, 0.5)},
-      {"collision_checks_per_s", search_total_s > 0.0 ? checks / search_total_s : 0.0},
-      {"statuses", statuses}};
+  nlohmann::ordered_json out = {{"scenes", o.scenes},
+                                {"scene_file", o.scene_file},
+                                {"scenes_with_grasps", scenes_with_grasps}};
+  out.update(planning_summary(plans));
+  const int with_goal = out["with_ik"], solved = out["successes"];
+  if (exact) out["exact"] = planning_summary(exact_plans);
   const auto pct = [](int n, int d) { return d ? 100.0 * n / d : 0.0; };
   std::cout << std::fixed << std::setprecision(2) << "planning, " << o.scenes << " scenes of "
             << o.scene_file << ": " << plans.size() << " selected grasps, " << with_goal
@@ -139,6 +112,7 @@ nlohmann::ordered_json bench_planning_scenes(const ReachBenchOptions& o) {
             << out["simplify_median_ms"].get<double>() << " ms; " << std::setprecision(0)
             << out["collision_checks_per_s"].get<double>()
             << " arm states checked per second of search\n";
+  if (exact) std::cout << planning_line("  the same with FCL alone", out["exact"]) << "\n";
   return out;
 }
 

@@ -21,6 +21,7 @@
 #include <ompl/util/Console.h>
 
 #include "antipode/core/error.hpp"
+#include "batched_motion_validator.hpp"
 #include "path_shortcut.hpp"
 
 namespace antipode::planning {
@@ -130,10 +131,9 @@ const char* to_string(PlanStatus status) {
 bool segment_is_free(const collision::ArmCollisionWorld& world, const Eigen::VectorXd& a,
                      const Eigen::VectorXd& b, double resolution_rad) {
   const int steps = std::max(1, static_cast<int>(std::ceil((b - a).norm() / resolution_rad)));
-  for (int i = 0; i <= steps; ++i) {
-    if (!world.check(a + (b - a) * (double(i) / steps)).free()) return false;
-  }
-  return true;
+  std::vector<Eigen::VectorXd> states;
+  for (int i = 0; i <= steps; ++i) states.push_back(a + (b - a) * (double(i) / steps));
+  return world.first_contact(states) == states.size();
 }
 
 ArmPlan plan_arm_motion(const ArmPlanningProblem& p) {
@@ -161,6 +161,8 @@ ArmPlan plan_arm_motion(const ArmPlanningProblem& p) {
   });
   setup.getSpaceInformation()->setStateValidityCheckingResolution(p.resolution_rad /
                                                                   space->getMaximumExtent());
+  setup.getSpaceInformation()->setMotionValidator(std::make_shared<BatchedMotionValidator>(
+      setup.getSpaceInformation(), world, p.resolution_rad, checks));
   setup.setPlanner(make_planner(p.planner, setup.getSpaceInformation()));
   ob::ScopedState<> start(space), goal(space);
   for (std::size_t i = 0; i < dof; ++i) {

@@ -3,10 +3,12 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <map>
 
 #include "antipode/core/error.hpp"
 #include "antipode/robot/robot_file.hpp"
 #include "arm_planner.hpp"
+#include "collision_options.hpp"
 #include "collision_pairs.hpp"
 #include "reach_check.hpp"
 
@@ -22,6 +24,7 @@ OmplPlannerOptions read_options(const Parameters& p) {
   o.arm_tip = robot.arm_tip;
   o.points_unchecked = robot.points_unchecked;
   o.points_resolution_m = p.get<double>("points_resolution_m", o.points_resolution_m);
+  o.collision = collision::collision_options(p);
   o.planner = p.get<std::string>("planner", o.planner);
   o.time_limit_s = p.get<double>("time_limit_s", o.time_limit_s);
   o.resolution_rad = p.get<double>("resolution_rad", o.resolution_rad);
@@ -92,12 +95,28 @@ std::shared_ptr<const collision::ArmCollisionWorld> OmplPlanner::world_for(
     const CloudPtr& scene) const {
   const std::lock_guard<std::mutex> lock(cache_mutex_);
   if (!cached_world_ || scene != cached_scene_) {
-    auto world = std::make_shared<collision::ArmCollisionWorld>(robot_, arm_);
+    auto world = std::make_shared<collision::ArmCollisionWorld>(
+        robot_, arm_, std::map<std::string, double>{}, options_.collision);
     if (scene) world->set_points(scene->points_m, options_.points_resolution_m, gripper_links_);
     cached_scene_ = scene;  // held, so that its address is not reused while cached
     cached_world_ = std::move(world);
   }
   return cached_world_;
+}
+
+std::shared_ptr<const collision::ArmCollisionWorld> OmplPlanner::world_with_obstacles(
+    const PlanningProblem& problem) const {
+  auto world = std::make_shared<collision::ArmCollisionWorld>(
+      robot_, arm_, std::map<std::string, double>{}, options_.collision);
+  for (const Obstacle& o : problem.obstacles) {
+    if (o.shape == Obstacle::Shape::kBox)
+      world->add_box(o.name, o.X_BaseObstacle, o.size_m);
+    else
+      world->add_cylinder(o.name, o.X_BaseObstacle, o.size_m.x(), o.size_m.y());
+  }
+  if (problem.scene)
+    world->set_points(problem.scene->points_m, options_.points_resolution_m, gripper_links_);
+  return world;
 }
 
 std::vector<Eigen::VectorXd> OmplPlanner::find_goal(const collision::ArmCollisionWorld& world,
@@ -143,7 +162,8 @@ PlanningResult OmplPlanner::plan(const PlanningProblem& problem) const {
     return result;
   }
   const Eigen::VectorXd start = joint_vector(problem.start.positions_rad);
-  const std::shared_ptr<const collision::ArmCollisionWorld> shared_world = world_for(problem.scene);
+  const std::shared_ptr<const collision::ArmCollisionWorld> shared_world =
+      problem.obstacles.empty() ? world_for(problem.scene) : world_with_obstacles(problem);
   const collision::ArmCollisionWorld& world = *shared_world;
   if (const collision::ContactReport contact = world.check(start); !contact.free()) {
     result.status = PlanningStatus::kStartInCollision;

@@ -25,6 +25,7 @@ struct OmplPlannerOptions {
   std::string arm_tip;                        ///< the grasp frame (RobotFile::arm_tip)
   std::vector<std::string> points_unchecked;  ///< RobotFile::points_unchecked
   double points_resolution_m = 0.01;
+  collision::CollisionOptions collision;  ///< how the arm's states are checked
   std::string planner = "RRTConnect";
   double time_limit_s = 1.0;
   double resolution_rad = 0.02;
@@ -49,6 +50,9 @@ class OmplPlanner final : public MotionPlanner {
  private:
   /// The robot and `scene`'s points (none: the robot alone), built once per scene.
   std::shared_ptr<const collision::ArmCollisionWorld> world_for(const CloudPtr& scene) const;
+  /// The robot, the problem's points and its obstacles, built for it alone.
+  std::shared_ptr<const collision::ArmCollisionWorld> world_with_obstacles(
+      const PlanningProblem& problem) const;
 
   /// The states of the straight approach, pre-grasp first, for the grasp as given or
   /// half-turned; empty, with result.status and result.detail saying why, when neither has one.

@@ -18,7 +18,7 @@ collision::ArmCollisionWorld ArmReach::world_for(const Cloud& cloud) const {
                     "', but the robot's base is '" + robot_.root_link() + "'",
                 {}, "give the selector clouds in the robot's base frame");
   }
-  collision::ArmCollisionWorld world(robot_, arm_);
+  collision::ArmCollisionWorld world(robot_, arm_, {}, options_.collision);
   world.set_points(cloud.points_m, options_.points_resolution_m, gripper_links_);
   return world;
 }

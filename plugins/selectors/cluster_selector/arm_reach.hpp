@@ -26,6 +26,7 @@ struct ArmReachOptions {
   std::string arm_tip;                        ///< the grasp frame; the chain starts at the root
   std::vector<std::string> points_unchecked;  ///< RobotFile::points_unchecked
   double points_resolution_m = 0.01;          ///< the octree of the observed points
+  collision::CollisionOptions collision;      ///< how the arm's states are checked
   int ik_solutions = 12;                      ///< distinct IK solutions tried at a grasp
 };
 

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "antipode/robot/robot_file.hpp"
+#include "collision_options.hpp"
 
 namespace antipode::selectors {
 namespace {
@@ -78,6 +79,7 @@ SelectionOptions read_selection_options(const Parameters& params) {
   o.arm.points_resolution_m =
       params.number_in("points_resolution_m", o.arm.points_resolution_m, 0.001, 0.1);
   o.arm.ik_solutions = int(params.number_in("ik_solutions", o.arm.ik_solutions, 1, 100));
+  o.arm.collision = collision::collision_options(params);
   params.reject_unknown();
   return o;
 }

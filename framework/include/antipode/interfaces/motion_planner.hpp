@@ -10,6 +10,7 @@
 #include <cstdint>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include <Eigen/Geometry>
 
@@ -21,14 +22,28 @@
 
 namespace antipode {
 
+/// A solid the scene is known to hold, in the base frame: a box of `size_m` (full lengths
+/// along its x, y, z) or a cylinder (radius size_m.x(), length size_m.y(), along its z),
+/// centred at X_BaseObstacle.
+struct Obstacle {
+  enum class Shape : std::uint8_t { kBox, kCylinder };
+  std::string name;  ///< for contact reports
+  Shape shape = Shape::kBox;
+  Eigen::Isometry3d X_BaseObstacle = Eigen::Isometry3d::Identity();
+  Eigen::Vector3d size_m = Eigen::Vector3d::Zero();
+};
+
 /// What to plan: from `start` to the grasp, through the pre-grasp `standoff_m` back along
-/// the approach.
+/// the approach (0: the grasp pose is itself the goal).
 struct PlanningProblem {
   Hand grasp;        ///< frame "base"
   JointState start;  ///< the arm's joints now (Cell::arm_state())
   /// Observed points (base frame); null = none known. A planner may keep the cloud for the
   /// next call on the same one: do not modify it once given.
   std::shared_ptr<const Cloud> scene;
+  /// Known solids besides the points (a planning benchmark's scene, fixtures); every link
+  /// of the arm, the hand's included, stays clear of them.
+  std::vector<Obstacle> obstacles;
   double standoff_m = 0.10;   ///< where the straight approach starts
   double time_limit_s = 1.0;  ///< for the search; <= 0: the planner's default
   std::uint64_t seed = 0;     ///< the same problem and seed give the same motion

@@ -23,7 +23,7 @@ namespace bt {
 class NodeRegistry;
 }
 
-constexpr std::uint32_t kAbiMajor = 11;
+constexpr std::uint32_t kAbiMajor = 12;
 constexpr std::uint32_t kAbiMinor = 0;
 
 /// One thing a plugin can make. For a component kind ("sampler", "classifier", "selector",

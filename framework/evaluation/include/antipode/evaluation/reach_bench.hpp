@@ -30,6 +30,17 @@ struct ReachBenchOptions {
   std::string scene_file = "scenes/pile_procedural.yaml";
   std::vector<std::string> views{"left", "right"};  ///< the cell's views to capture
   std::vector<std::string> set;  ///< "component.key=value" overrides for the scene tree
+
+  // Planning problems drawn from planning scenes (planning_problems.hpp): `problems` per scene
+  // file (seeds `seed`, `seed` + 1, ...), planned by the scene tree's planner; 0 skips it.
+  int problems = 0;
+  std::vector<std::string> problem_scenes{
+      "scenes/planning/mbm_table_pick.yaml",     "scenes/planning/mbm_box.yaml",
+      "scenes/planning/mbm_cage.yaml",           "scenes/planning/mbm_bookshelf_tall.yaml",
+      "scenes/planning/mbm_bookshelf_thin.yaml", "scenes/planning/mbm_bookshelf_small.yaml"};
+  /// Plan every problem (clutter scenes and planning scenes) twice: with the planner as the
+  /// tree sets it and with `collision: exact` (FCL alone), reported side by side.
+  bool side_by_side = false;
 };
 
 /// Draws `ik_poses` joint vectors uniformly within the limits, takes their forward
@@ -46,5 +57,12 @@ nlohmann::ordered_json run_reach_bench(const ReachBenchOptions& options);
 /// them as the report's "planning" object. Throws antipode::Error for a tree without the
 /// five components.
 nlohmann::ordered_json bench_planning_scenes(const ReachBenchOptions& options);
+
+/// The planning-scene part: `problems` problems per file of `problem_scenes`, each from the
+/// robot file's home to the query's hand pose, planned by the scene tree's planner (and its
+/// FCL-only twin with `side_by_side`). Prints the figures per scene and in all, and returns
+/// them as the report's "problems" object. Throws antipode::Error for a bad scene file or one
+/// that does not place the robot.
+nlohmann::ordered_json bench_planning_problems(const ReachBenchOptions& options);
 
 }  // namespace antipode::evaluation

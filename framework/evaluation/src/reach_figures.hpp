@@ -1,0 +1,33 @@
+#pragma once
+// The figures of planning calls, summed up for `antipode bench reach`'s reports: the clutter
+// scenes (reach_scenes.cpp) and the planning scenes' problems (reach_problems.cpp).
+
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "antipode/interfaces/motion_planner.hpp"
+
+namespace antipode::evaluation {
+
+/// The figures of one planning call.
+struct PlanFigures {
+  PlanningStatus status;
+  double goal_ms, search_ms, simplify_ms;
+  long checks;
+};
+
+PlanFigures figures_of(const PlanningResult& r);
+
+/// Whether a call got as far as the search (a goal was found).
+bool has_goal(PlanningStatus s);
+
+/// Attempts, those with a goal, successes, search median / 90th / 99th percentile, goal and
+/// shortcutting medians, states checked per second of search, and the statuses.
+nlohmann::ordered_json planning_summary(const std::vector<PlanFigures>& plans);
+
+/// One line of those figures for standard output, after `label`.
+std::string planning_line(const std::string& label, const nlohmann::ordered_json& summary);
+
+}  // namespace antipode::evaluation

@@ -1,0 +1,35 @@
+#include "collision_options.hpp"
+
+#include <string>
+
+namespace antipode::collision {
+
+const char* to_string(CheckMode mode) {
+  switch (mode) {
+    case CheckMode::kSpheresThenExact:
+      return "spheres_then_exact";
+    case CheckMode::kExact:
+      return "exact";
+    case CheckMode::kSpheres:
+      return "spheres";
+  }
+  return "?";
+}
+
+CollisionOptions collision_options(const Parameters& params) {
+  CollisionOptions o;
+  const std::string mode = params.get<std::string>("collision", to_string(o.mode));
+  bool known = false;
+  for (const CheckMode m : {CheckMode::kSpheresThenExact, CheckMode::kExact, CheckMode::kSpheres})
+    if (mode == to_string(m)) {
+      o.mode = m;
+      known = true;
+    }
+  if (!known)
+    params.fail("collision",
+                "'collision' must be spheres_then_exact, exact or spheres, got '" + mode + "'");
+  o.sphere_overshoot_m = params.number_in("sphere_overshoot_m", o.sphere_overshoot_m, 0.001, 0.1);
+  return o;
+}
+
+}  // namespace antipode::collision

@@ -1,0 +1,281 @@
+#include "sphere_arm.hpp"
+
+#include <algorithm>
+#include <atomic>
+#include <iterator>
+#include <numeric>
+#include <string>
+
+#include "antipode/core/error.hpp"
+#include "sphere_cover.hpp"
+
+namespace antipode::collision {
+
+namespace {
+
+// Float rounding of the placed centres (float forward kinematics over a metre or two): radii
+// grow by this to stay safe.
+constexpr double kRounding_m = 1e-4;
+// The widest kernels' lanes (AVX-512, 16 floats): loops over spheres run in whole multiples.
+constexpr std::size_t kLanes = 16;
+const Eigen::Vector3d kFarAway_m = Eigen::Vector3d::Constant(1e6);
+
+}  // namespace
+
+KernelBox kernel_box(const Eigen::Isometry3d& X_BaseBox, const Eigen::Vector3d& size_m) {
+  KernelBox box{};
+  for (int i = 0; i < 3; ++i) {
+    box.center[i] = float(X_BaseBox.translation()(i));
+    box.half[i] = float(0.5 * size_m(i));
+    for (int j = 0; j < 3; ++j) box.rows[i][j] = float(X_BaseBox.linear()(j, i));
+  }
+  return box;
+}
+
+SphereArm::SphereArm(const KinematicChain& arm, const std::vector<Link>& links,
+                     const std::vector<std::pair<std::size_t, std::size_t>>& self_pairs,
+                     double max_overshoot_m)
+    : links_(links.size()), chain_(arm) {
+  static std::atomic<std::uint64_t> next_id{1};
+  id_ = next_id++;
+  for (const Link& link : links)
+    if (link.frame >= int(arm.link_names().size()))
+      throw Error("sphere arm: link frame " + std::to_string(link.frame) + " is off the arm");
+  // A link hangs from the joint frame before its chain link (-1: it does not move).
+  link_joint_.assign(links.size(), -1);
+  for (std::size_t i = 0; i < links.size(); ++i)
+    if (links[i].frame >= 0) link_joint_[i] = chain_.joint_of(std::size_t(links[i].frame));
+  // Moving links first, by joint; then the fixed ones.
+  std::vector<int> order(links.size());
+  std::iota(order.begin(), order.end(), 0);
+  const int last = int(chain_.dof());
+  const auto joint = [&](int i) {
+    return link_joint_[std::size_t(i)] < 0 ? last : link_joint_[std::size_t(i)];
+  };
+  std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return joint(a) < joint(b); });
+  joint_spheres_.assign(chain_.dof(), {0, 0});
+  bool padded = false;
+  for (const int i : order) {
+    if (link_joint_[std::size_t(i)] < 0 && !padded) {
+      pad(kLanes);
+      moving_ = int(owner_.size());
+      padded = true;
+    }
+    add_link(i, links[std::size_t(i)], max_overshoot_m);
+  }
+  if (!padded) {
+    pad(kLanes);
+    moving_ = int(owner_.size());
+  }
+  pad(kLanes);
+  allow_pairs(self_pairs);
+  for (std::size_t j = 0; j < chain_.dof(); ++j) {
+    const Pose3f& C = chain_.constant(j);
+    joint_constants_.insert(joint_constants_.end(), C.R, C.R + 9);
+    joint_constants_.insert(joint_constants_.end(), C.t, C.t + 3);
+    joint_prismatic_.push_back(chain_.prismatic(j) ? 1 : 0);
+  }
+  for (int k = 0; k < moving_; ++k)
+    sphere_joint_.push_back(
+        owner_[std::size_t(k)] < 0 ? -1 : link_joint_[std::size_t(owner_[std::size_t(k)])]);
+}
+
+void SphereArm::add_sphere(const Eigen::Vector3d& centre_m, double radius_m, int owner) {
+  lx_.push_back(float(centre_m.x()));
+  ly_.push_back(float(centre_m.y()));
+  lz_.push_back(float(centre_m.z()));
+  r_.push_back(float(radius_m));
+  owner_.push_back(owner);
+}
+
+void SphereArm::pad(std::size_t multiple) {
+  while (owner_.size() % multiple != 0) add_sphere(kFarAway_m, -1.0, -1);
+}
+
+void SphereArm::add_link(int i, const Link& link, double max_overshoot_m) {
+  const int joint = link_joint_[std::size_t(i)];
+  // Where the link's shapes are: in its joint's frame, or in the base frame.
+  const Eigen::Isometry3d X_Link =
+      link.frame < 0 ? link.X_FrameLink
+                     : chain_.X_JointLink(std::size_t(link.frame)) * link.X_FrameLink;
+  const int first = int(owner_.size());
+  for (const CollisionPrimitive& shape : link.shapes) {
+    if (joint < 0 && shape.kind == CollisionPrimitive::Kind::kBox) {  // stays a box
+      fixed_boxes_.push_back(kernel_box(X_Link * shape.X_LinkShape, shape.size_m));
+      fixed_box_owner_.push_back(i);
+      continue;
+    }
+    const SphereCover cover = cover_with_spheres(shape, max_overshoot_m);
+    if (joint >= 0) overshoot_m_ = std::max(overshoot_m_, cover.overshoot_m);
+    for (const Sphere& s : cover.spheres)
+      add_sphere(X_Link * s.center_m, s.radius_m + kRounding_m, i);
+    spheres_ += cover.spheres.size();
+  }
+  if (joint >= 0) {
+    auto& range = joint_spheres_[std::size_t(joint)];
+    if (range.first == range.second) range.first = first;
+    range.second = int(owner_.size());
+  }
+}
+
+void SphereArm::allow_pairs(const std::vector<std::pair<std::size_t, std::size_t>>& self_pairs) {
+  pair_of_.assign(links_ * links_, -1);
+  for (std::size_t k = 0; k < self_pairs.size(); ++k) {
+    const auto [a, b] = self_pairs[k];
+    pair_of_[a * links_ + b] = pair_of_[b * links_ + a] = int(k);
+  }
+  const std::size_t all = owner_.size(), rows = std::size_t(moving_);
+  allowed_.assign(all * rows, 0);
+  allowed_boxes_.assign(rows, 0);
+  allowed_rows_.assign(all, {});
+  row_begin_.assign(all, 0);
+  row_end_.assign(all, 0);
+  for (std::size_t j = 0; j < all; ++j) {
+    if (owner_[j] < 0) continue;
+    for (std::size_t i = 0; i < std::min(j, rows); ++i) {
+      if (owner_[i] < 0 || pair_of_[std::size_t(owner_[i]) * links_ + std::size_t(owner_[j])] < 0)
+        continue;
+      allowed_[j * rows + i] = -1;
+      allowed_rows_[i].push_back(int(j));
+      batch_a_.push_back(std::int32_t(i));
+      batch_b_.push_back(std::int32_t(j));
+      if (row_end_[j] == 0) row_begin_[j] = std::int32_t(i / kLanes * kLanes);
+      row_end_[j] = std::int32_t((i / kLanes + 1) * kLanes);
+    }
+  }
+  for (std::size_t i = 0; i < rows; ++i)
+    for (std::size_t k = 0; owner_[i] >= 0 && k < fixed_boxes_.size(); ++k)
+      if (pair_of_[std::size_t(owner_[i]) * links_ + std::size_t(fixed_box_owner_[k])] >= 0) {
+        allowed_boxes_[i] |= std::uint32_t(1) << std::min(int(k), kLastBoxBit);
+        box_sphere_.push_back(std::int32_t(i));
+        box_index_.push_back(std::int32_t(k));
+      }
+}
+
+double SphereArm::max_radius_m() const {
+  return r_.empty() ? 0.0 : double(*std::max_element(r_.begin(), r_.end()));
+}
+
+void SphereArm::place(const double* q_rad, Placement& p) const {
+  p.X_BaseJoint.resize(chain_.dof());
+  chain_.joint_poses(q_rad, p.X_BaseJoint.data());
+  if (p.arm != id_) {  // the fixed spheres, once per arm
+    p.x = lx_;
+    p.y = ly_;
+    p.z = lz_;
+    p.arm = id_;
+  }
+  for (std::size_t j = 0; j < joint_spheres_.size(); ++j) {
+    const auto [first, end] = joint_spheres_[j];
+    if (first == end) continue;
+    const Pose3f& X = p.X_BaseJoint[j];
+    transform_points(X.R, X.t, lx_.data() + first, ly_.data() + first, lz_.data() + first,
+                     end - first, p.x.data() + first, p.y.data() + first, p.z.data() + first);
+  }
+}
+
+void SphereArm::contacts(Placement& p, const std::vector<KernelBox>& boxes,
+                         const DistanceGrid& grid, const std::vector<float>& points_radius,
+                         std::vector<int>& self, std::vector<std::uint32_t>& near) const {
+  // Per moving sphere, the robot's fixed boxes and the scene's boxes it meets.
+  p.robot_bits.resize(std::size_t(moving_));
+  p.box_bits.resize(std::size_t(moving_));
+  mark_in_boxes(fixed_boxes_.data(), int(fixed_boxes_.size()), p.x.data(), p.y.data(), p.z.data(),
+                r_.data(), moving_, p.robot_bits.data());
+  mark_in_boxes(boxes.data(), int(boxes.size()), p.x.data(), p.y.data(), p.z.data(), r_.data(),
+                moving_, p.box_bits.data());
+  self_contacts(p, self);
+  near.assign(links_, 0);
+  const auto owner = [this](int k) { return owner_[std::size_t(k)]; };
+  for (int k = 0; k < moving_; ++k)
+    if (owner(k) >= 0) near[std::size_t(owner(k))] |= p.box_bits[std::size_t(k)];
+  if (grid.empty() || points_radius.size() != std::size_t(moving_)) return;
+  p.marks.resize(std::size_t(moving_));
+  grid.mark_touching(p.x.data(), p.y.data(), p.z.data(), points_radius.data(), moving_,
+                     p.marks.data());
+  for (int k = 0; k < moving_; ++k)
+    if (p.marks[std::size_t(k)] && owner(k) >= 0)
+      near[std::size_t(owner(k))] |= std::uint32_t(1) << kPointsBit;
+}
+
+// One dense pass finds the moving spheres that touch anything of a self pair; the pairs
+// themselves are then named from those spheres alone.
+void SphereArm::self_contacts(Placement& p, std::vector<int>& out) const {
+  out.clear();
+  p.hits.resize(std::size_t(moving_));
+  mark_overlaps(p.x.data(), p.y.data(), p.z.data(), r_.data(), moving_, int(owner_.size()),
+                allowed_.data(), row_begin_.data(), row_end_.data(), p.hits.data());
+  p.pairs.clear();
+  for (std::size_t i = 0; i < std::size_t(moving_); ++i) {
+    const bool box = (p.robot_bits[i] & allowed_boxes_[i]) != 0;
+    if (!p.hits[i] && !box) continue;
+    const std::size_t a = std::size_t(owner_[i]);
+    for (std::size_t n = 0; p.hits[i] && n < allowed_rows_[i].size(); ++n) {
+      const std::size_t j = std::size_t(allowed_rows_[i][n]);
+      const float dx = p.x[i] - p.x[j], dy = p.y[i] - p.y[j], dz = p.z[i] - p.z[j];
+      const float reach = r_[i] + r_[j];
+      if (dx * dx + dy * dy + dz * dz <= reach * reach)
+        p.pairs.push_back(pair_of_[a * links_ + std::size_t(owner_[j])]);
+    }
+    for (std::size_t k = 0; box && k < fixed_boxes_.size(); ++k)
+      if (p.robot_bits[i] & allowed_boxes_[i] & (std::uint32_t(1) << std::min(int(k), kLastBoxBit)))
+        p.pairs.push_back(pair_of_[a * links_ + std::size_t(fixed_box_owner_[k])]);
+  }
+  std::sort(p.pairs.begin(), p.pairs.end());
+  std::unique_copy(p.pairs.begin(), p.pairs.end(), std::back_inserter(out));
+}
+
+std::uint32_t SphereArm::contacts_batch(const double* const* q_rad, int count,
+                                        const std::vector<KernelBox>& boxes,
+                                        const DistanceGrid& grid,
+                                        const std::vector<float>& points_radius) const {
+  KernelArm a{};
+  a.dof = int(chain_.dof());
+  a.C = joint_constants_.data();
+  a.prismatic = joint_prismatic_.data();
+  a.moving = moving_;
+  a.joint = sphere_joint_.data();
+  a.lx = lx_.data();
+  a.ly = ly_.data();
+  a.lz = lz_.data();
+  a.r = r_.data();
+  a.points_r = points_radius.data();
+  a.fx = lx_.data() + moving_;
+  a.fy = ly_.data() + moving_;
+  a.fz = lz_.data() + moving_;
+  a.fr = r_.data() + moving_;
+  a.pairs = int(batch_a_.size());
+  a.pair_a = batch_a_.data();
+  a.pair_b = batch_b_.data();
+  a.box_pairs = int(box_sphere_.size());
+  a.box_sphere = box_sphere_.data();
+  a.box_index = box_index_.data();
+  a.robot_boxes = fixed_boxes_.data();
+  // Joint values lane by lane, the last configuration repeated in unused lanes.
+  thread_local std::vector<float> q;
+  thread_local std::vector<float> scratch;
+  q.resize(chain_.dof() * kBatchLanes);
+  for (std::size_t j = 0; j < chain_.dof(); ++j)
+    for (int l = 0; l < kBatchLanes; ++l)
+      q[j * kBatchLanes + std::size_t(l)] = float(q_rad[std::min(l, count - 1)][j]);
+  scratch.resize(batch_scratch_floats(a));
+  KernelGrid g{};
+  const bool points = !grid.empty() && points_radius.size() == std::size_t(moving_);
+  if (points) g = grid.kernel();
+  const std::uint32_t lanes = mark_batch(a, boxes.data(), int(boxes.size()), points ? &g : nullptr,
+                                         q.data(), scratch.data());
+  return count >= kBatchLanes ? lanes : lanes & ((std::uint32_t(1) << count) - 1);
+}
+
+std::vector<float> SphereArm::points_radii(const std::vector<char>& unchecked) const {
+  std::vector<float> radii(static_cast<std::size_t>(moving_));
+  for (int k = 0; k < moving_; ++k) {
+    const int owner = owner_[std::size_t(k)];
+    const bool skip =
+        owner < 0 || (std::size_t(owner) < unchecked.size() && unchecked[std::size_t(owner)]);
+    radii[std::size_t(k)] = skip ? -1.0f : r_[std::size_t(k)];
+  }
+  return radii;
+}
+
+}  // namespace antipode::collision
