@@ -119,6 +119,25 @@ void BM_CheckInCell_Spheres_Batch16_Baseline(benchmark::State& s) {
   check_batches(s, SimdLevel::kBaseline);
 }
 
+// Building the world of one capture: the robot, the cell's boxes and its 20,000 points (FCL's
+// octree; with spheres also their model and the points' distance grid).
+void build_world(benchmark::State& state, CheckMode mode) {
+  const antipode::KinematicChain arm = robot().chain("base", "right_gripper");
+  antipode::collision::CollisionOptions options;
+  options.mode = mode;
+  for (auto _ : state) {
+    ArmCollisionWorld world(robot(), arm, {}, options);
+    add_cell(world);
+    benchmark::DoNotOptimize(world);
+  }
+}
+void BM_BuildWorldInCell_Exact(benchmark::State& s) { build_world(s, CheckMode::kExact); }
+void BM_BuildWorldInCell_SpheresThenExact(benchmark::State& s) {
+  build_world(s, CheckMode::kSpheresThenExact);
+}
+
+BENCHMARK(BM_BuildWorldInCell_Exact)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_BuildWorldInCell_SpheresThenExact)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_CheckRobotOnly_Exact)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_CheckRobotOnly_SpheresThenExact)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_CheckRobotOnly_Spheres)->Unit(benchmark::kMicrosecond);

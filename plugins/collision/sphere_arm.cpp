@@ -153,7 +153,7 @@ void SphereArm::allow_pairs(const std::vector<std::pair<std::size_t, std::size_t
 }
 
 double SphereArm::max_radius_m() const {
-  return r_.empty() ? 0.0 : double(*std::max_element(r_.begin(), r_.end()));
+  return moving_ == 0 ? 0.0 : double(*std::max_element(r_.begin(), r_.begin() + moving_));
 }
 
 void SphereArm::place(const double* q_rad, Placement& p) const {

@@ -91,7 +91,8 @@ class SphereArm {
   std::size_t spheres() const { return spheres_; }
   /// The largest overshoot of any moving link's cover.
   double overshoot_m() const { return overshoot_m_; }
-  /// The largest sphere's radius.
+  /// The largest radius of a sphere that moves with the arm (the farthest the points test
+  /// ever looks).
   double max_radius_m() const;
 
  private:

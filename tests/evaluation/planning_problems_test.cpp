@@ -60,6 +60,27 @@ TEST(PlanningScene, EveryShippedSceneReadsWithItsObjectsAndTargets) {
   }
 }
 
+TEST(PlanningScene, TheExampleInRobotMdReads) {
+  std::ifstream in(source("docs/robot.md"));
+  std::string line, text;
+  bool after = false, inside = false;
+  while (std::getline(in, line)) {
+    if (line == "A planning scene file:") after = true;
+    if (after && !inside && line == "```yaml") {
+      inside = true;
+    } else if (inside && line == "```") {
+      break;
+    } else if (inside) {
+      text += line + "\n";
+    }
+  }
+  ASSERT_FALSE(text.empty());
+  const PlanningScene scene = read_planning_scene(scene_file(text));
+  EXPECT_EQ(scene.objects.size(), 2U);
+  EXPECT_TRUE(scene.approach_down);
+  EXPECT_EQ(planning_frame(scene, "panda"), "panda_link0");
+}
+
 TEST(PlanningScene, TheGoalIsTheHandAtTheStandoffFromItsTarget) {
   const PlanningScene scene = read_planning_scene(scene_file(kBox));
   Eigen::Isometry3d X_BaseFrame = Eigen::Isometry3d::Identity();
