@@ -337,8 +337,10 @@ void ArmCollisionWorld::set_points(const std::vector<Eigen::Vector3f>& points_m,
   impl_->grid = DistanceGrid();
   if (points_m.empty()) return;
   if (impl_->spheres) {
-    // The grid reaches past the largest sphere, so that beyond it every sphere is clear.
-    impl_->grid = DistanceGrid(points_m, resolution_m, impl_->spheres->max_radius_m() + 0.02);
+    // The grid's distances reach past the largest sphere and the grid's margin (sqrt(3)
+    // cells), so that a sphere clear of the points by a cell or more is called clear.
+    impl_->grid = DistanceGrid(points_m, resolution_m,
+                               impl_->spheres->max_radius_m() + 3.0 * resolution_m + 1e-4);
     impl_->points_radius = impl_->spheres->points_radii(impl_->points_unchecked);
   }
   auto tree = std::make_shared<octomap::OcTree>(resolution_m);

@@ -12,7 +12,9 @@
 // box, or link and points whose spheres touch: the same answer as FCL alone, since the
 // spheres hold the shapes, in a fraction of the time where most of the arm is clear.
 // CheckMode::kSpheres answers from the spheres alone: never free where FCL finds a contact,
-// but in contact where the spheres overlap and the shapes are up to overshoot_m() apart.
+// but in contact where the spheres overlap and the shapes are apart (by up to overshoot_m()
+// against a box, twice it between two links, and the points' grid margin, sqrt(3) cells,
+// more against the points; a cylinder added to the scene counts as its bounding box).
 //
 // Threads: check() is const and keeps no state between calls (beyond per-thread scratch
 // memory); concurrent checks on one world are safe. add_box() and set_points() must not run
@@ -90,9 +92,11 @@ class ArmCollisionWorld {
   ContactReport check(const Eigen::VectorXd& q) const;
 
   /// The index of the first of `qs` (in their order) in contact, or qs.size() when every one
-  /// is free: the same answers as check(), with the spheres testing 16 configurations at a
-  /// time (FCL confirming, in order, the ones they flag in kSpheresThenExact mode). Throws
-  /// like check().
+  /// is free, with the spheres testing 16 configurations at a time (FCL confirming, in order,
+  /// the ones they flag in kSpheresThenExact mode): check()'s answers in kExact and
+  /// kSpheresThenExact mode; in kSpheres mode as conservative as check(), though a state at
+  /// the edge of a sphere may come out otherwise (the batch computes its sines apart).
+  /// Throws like check().
   std::size_t first_contact(const std::vector<Eigen::VectorXd>& qs) const;
 
   /// Link pairs checked for self-collision: an arm link with a robot link three or more

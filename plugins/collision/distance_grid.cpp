@@ -70,8 +70,9 @@ DistanceGrid::DistanceGrid(const std::vector<Eigen::Vector3f>& points_m, double 
   cubes.reserve(points_m.size());
   for (const Eigen::Vector3f& p : points_m) {
     const Eigen::Array3d key = (p.cast<double>() * per_metre).array().floor();
-    // octomap skips points beyond its keys' range (2^15 leaves each way), and so does this.
-    if (key.allFinite() && (key.abs() < 32768.0).all()) cubes.push_back(key.cast<int>());
+    // octomap skips points beyond its keys' range ([-2^15, 2^15) leaves), and so does this.
+    if (key.allFinite() && (key >= -32768.0).all() && (key < 32768.0).all())
+      cubes.push_back(key.cast<int>());
   }
   if (cubes.empty()) return;
   Eigen::Vector3i lo = cubes.front(), hi = cubes.front();

@@ -12,7 +12,7 @@ namespace {
 
 constexpr double kProbe = 1.0;       // how far each joint is moved to read its motion (rad or m)
 constexpr double kMoves = 1e-9;      // a link that moves less than this did not move
-constexpr double kAgreement = 1e-4;  // float forward kinematics against the chain's
+constexpr double kAgreement = 1e-5;  // float forward kinematics against the chain's
 
 Eigen::VectorXd probe(std::size_t dof, int joint) {
   Eigen::VectorXd q = Eigen::VectorXd::Zero(Eigen::Index(dof));
@@ -111,7 +111,7 @@ ScrewChain::ScrewChain(const KinematicChain& arm) {
   bool agree = joints_.size() == dof;
   RandomStream random(7);
   std::vector<Pose3f> mine(dof);
-  for (int trial = 0; trial < 8 && agree; ++trial) {
+  for (int trial = 0; trial < 64 && agree; ++trial) {
     const Eigen::VectorXd q = arm.random_configuration(random);
     const std::vector<Eigen::Isometry3d> theirs = arm.link_poses(q);
     joint_poses(q.data(), mine.data());
@@ -131,7 +131,7 @@ void ScrewChain::joint_poses(const double* q_rad, Pose3f* X_BaseJoint) const {
   Pose3f X{{1, 0, 0, 0, 1, 0, 0, 0, 1}, {0, 0, 0}};
   for (std::size_t j = 0; j < joints_.size(); ++j) {
     X = compose(X, joints_[j].C);
-    const float q = float(q_rad[j]);
+    const float q = float(reduced(j, q_rad[j]));
     if (joints_[j].prismatic) {
       for (int i = 0; i < 3; ++i) X.t[i] += q * X.R[3 * i + 2];  // X * Tz(q)
     } else {

@@ -18,6 +18,7 @@
 // Frames and units as KinematicChain: metres, radians. Threads: immutable after
 // construction; joint_poses() may run concurrently.
 
+#include <cmath>
 #include <vector>
 
 #include <Eigen/Core>
@@ -47,6 +48,11 @@ class ScrewChain {
   /// The joint frame link `link` of KinematicChain::link_names() hangs from (-1: the base),
   /// and the pose of the link in it.
   int joint_of(std::size_t link) const { return links_[link].joint; }
+  /// q_rad for joint j as the float kinematics take it: a revolute joint's angle reduced to
+  /// [-pi, pi] in double (float keeps a large angle too coarsely), a prismatic joint's as is.
+  double reduced(std::size_t j, double q_rad) const {
+    return joints_[j].prismatic ? q_rad : std::remainder(q_rad, 2.0 * M_PI);
+  }
   /// Joint j's frame at q = 0 in joint j - 1's (or the base's), and whether it slides.
   const Pose3f& constant(std::size_t j) const { return joints_[j].C; }
   bool prismatic(std::size_t j) const { return joints_[j].prismatic; }

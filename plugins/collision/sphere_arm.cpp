@@ -217,9 +217,13 @@ void SphereArm::self_contacts(Placement& p, std::vector<int>& out) const {
       if (dx * dx + dy * dy + dz * dz <= reach * reach)
         p.pairs.push_back(pair_of_[a * links_ + std::size_t(owner_[j])]);
     }
-    for (std::size_t k = 0; box && k < fixed_boxes_.size(); ++k)
-      if (p.robot_bits[i] & allowed_boxes_[i] & (std::uint32_t(1) << std::min(int(k), kLastBoxBit)))
-        p.pairs.push_back(pair_of_[a * links_ + std::size_t(fixed_box_owner_[k])]);
+    for (std::size_t k = 0; box && k < fixed_boxes_.size(); ++k) {
+      // Boxes from kLastBoxBit on share a bit: name only those of links paired with this one.
+      const int pair = pair_of_[a * links_ + std::size_t(fixed_box_owner_[k])];
+      if (pair >= 0 && (p.robot_bits[i] & allowed_boxes_[i] &
+                        (std::uint32_t(1) << std::min(int(k), kLastBoxBit))))
+        p.pairs.push_back(pair);
+    }
   }
   std::sort(p.pairs.begin(), p.pairs.end());
   std::unique_copy(p.pairs.begin(), p.pairs.end(), std::back_inserter(out));
@@ -229,6 +233,8 @@ std::uint32_t SphereArm::contacts_batch(const double* const* q_rad, int count,
                                         const std::vector<KernelBox>& boxes,
                                         const DistanceGrid& grid,
                                         const std::vector<float>& points_radius) const {
+  if (count < 1 || count > kBatchLanes)
+    throw InternalError("sphere arm: a batch of " + std::to_string(count) + " configurations");
   KernelArm a{};
   a.dof = int(chain_.dof());
   a.C = joint_constants_.data();
@@ -257,7 +263,8 @@ std::uint32_t SphereArm::contacts_batch(const double* const* q_rad, int count,
   q.resize(chain_.dof() * kBatchLanes);
   for (std::size_t j = 0; j < chain_.dof(); ++j)
     for (int l = 0; l < kBatchLanes; ++l)
-      q[j * kBatchLanes + std::size_t(l)] = float(q_rad[std::min(l, count - 1)][j]);
+      q[j * kBatchLanes + std::size_t(l)] =
+          float(chain_.reduced(j, q_rad[std::min(l, count - 1)][j]));
   scratch.resize(batch_scratch_floats(a));
   KernelGrid g{};
   const bool points = !grid.empty() && points_radius.size() == std::size_t(moving_);

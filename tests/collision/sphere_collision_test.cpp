@@ -234,6 +234,21 @@ TEST(ScrewChain, AgreesWithTheChainsForwardKinematics) {
   }
 }
 
+TEST(ScrewChain, TurnsByWholeTurnsAsTheChainDoes) {
+  // Far outside any limit (a continuous joint's angle can be): reduced in double first.
+  const RobotFile robot_file = read_robot_file(source("robots/baxter/baxter.yaml"));
+  const RobotModel robot = RobotModel::load(robot_file.urdf_path);
+  const ScrewChain fast(robot.chain(robot.root_link(), robot_file.arm_tip));
+  Eigen::VectorXd q(7), turned(7);
+  q << 0.3, -0.5, 1.1, 1.2, -0.4, 0.9, 2.0;
+  turned = q.array() + 2.0 * M_PI * 1e5;
+  std::vector<Pose3f> a(fast.dof()), b(fast.dof());
+  fast.joint_poses(q.data(), a.data());
+  fast.joint_poses(turned.data(), b.data());
+  for (std::size_t j = 0; j < fast.dof(); ++j)
+    for (int i = 0; i < 3; ++i) EXPECT_NEAR(a[j].t[i], b[j].t[i], 1e-5) << "joint " << j;
+}
+
 // A robot's arm in a scene, in the three check modes.
 struct Scene {
   std::vector<std::pair<Eigen::Isometry3d, Eigen::Vector3d>> boxes;
