@@ -4,7 +4,10 @@
 // three check modes (FCL alone, spheres then FCL, spheres alone), and the spheres alone at
 // each SIMD level, side by side:
 //   build/bench/collision/collision_bench --benchmark_filter=Check
+// Also the octree of a capture's points, built per leaf and point by point, and the reach
+// check of grasps over the box with its two searches (--benchmark_filter='Octree|Reach').
 
+#include <cmath>
 #include <vector>
 
 #include <benchmark/benchmark.h>
@@ -12,6 +15,8 @@
 #include "antipode/core/random.hpp"
 #include "antipode/robot/robot_model.hpp"
 #include "arm_collision_world.hpp"
+#include "points_octree.hpp"
+#include "reach_check.hpp"
 #include "sphere_kernels.hpp"
 #include "support/cell_world.hpp"
 
@@ -44,6 +49,7 @@ void add_cell(ArmCollisionWorld& world) {
 std::vector<Eigen::VectorXd> random_configurations(const antipode::KinematicChain& arm, int n) {
   antipode::RandomStream random(1);
   std::vector<Eigen::VectorXd> qs;
+  qs.reserve(std::size_t(n));
   for (int i = 0; i < n; ++i) qs.push_back(arm.random_configuration(random));
   return qs;
 }
@@ -136,6 +142,87 @@ void BM_BuildWorldInCell_SpheresThenExact(benchmark::State& s) {
   build_world(s, CheckMode::kSpheresThenExact);
 }
 
+// A capture's size: 460,800 points (a 640 x 720 image) in rows over the table and a mound
+// in the box, as a depth camera lists them, in a 1 cm octree.
+std::vector<Eigen::Vector3f> capture_points() {
+  std::vector<Eigen::Vector3f> points;
+  for (int row = 0; row < 720; ++row) {
+    for (int col = 0; col < 640; ++col) {
+      const double x = 0.3 + 0.9 * col / 640.0, y = -0.7 + 1.0 * row / 720.0;
+      const double r = std::hypot(x - antipode::bench::kBoxX, y - antipode::bench::kBoxY);
+      const double z = antipode::bench::kTableZ + (r < 0.15 ? 0.1 * (1.0 - r / 0.15) : 0.0);
+      points.emplace_back(float(x), float(y), float(z));
+    }
+  }
+  return points;
+}
+
+void BM_PointsOctree(benchmark::State& s) {
+  const std::vector<Eigen::Vector3f> points = capture_points();
+  std::size_t leaves = 0;
+  for (auto _ : s) leaves = antipode::collision::points_octree(points, 0.01)->getNumLeafNodes();
+  s.counters["leaves"] = double(leaves);
+}
+void BM_PointsOctree_PointByPoint(benchmark::State& s) {
+  const std::vector<Eigen::Vector3f> points = capture_points();
+  std::size_t leaves = 0;
+  for (auto _ : s)
+    leaves = antipode::collision::points_octree_point_by_point(points, 0.01)->getNumLeafNodes();
+  s.counters["leaves"] = double(leaves);
+}
+
+// The selector's reach check (reach_check.hpp) of grasps over the box: a 13 x 7 grid from
+// x = 0.45 to 1.05 m (beyond the arm's reach from above past about 0.75) at the height of the
+// pile, each from above and tilted 45 degrees, round-robin. The default search (the first
+// free pair, spheres then FCL) beside the exhaustive one with FCL alone.
+std::vector<Eigen::Isometry3d> grasps_over_the_box() {
+  std::vector<Eigen::Isometry3d> grasps;
+  for (int i = 0; i < 13; ++i) {
+    for (int j = 0; j < 7; ++j) {
+      for (const Eigen::Vector3d& approach :
+           {Eigen::Vector3d(0, 0, -1), Eigen::Vector3d(1, 0, -1)}) {
+        Eigen::Isometry3d X = Eigen::Isometry3d::Identity();
+        X.linear().col(0) = approach.normalized();
+        X.linear().col(1) = Eigen::Vector3d::UnitY();
+        X.linear().col(2) = X.linear().col(0).cross(X.linear().col(1));
+        X.translation() = Eigen::Vector3d(0.45 + 0.05 * i, -0.35 + 0.05 * j, -0.08);
+        grasps.push_back(X);
+      }
+    }
+  }
+  return grasps;
+}
+
+void reach_checks(benchmark::State& state, antipode::collision::ReachSearch search,
+                  CheckMode mode) {
+  const antipode::KinematicChain arm = robot().chain("base", "right_gripper");
+  antipode::collision::CollisionOptions options;
+  options.mode = mode;
+  ArmCollisionWorld world(robot(), arm, {}, options);
+  add_cell(world);
+  const std::vector<Eigen::Isometry3d> grasps = grasps_over_the_box();
+  antipode::collision::ReachOptions reach;
+  reach.search = search;
+  std::size_t i = 0, reachable = 0, checks = 0;
+  for (auto _ : state) {
+    const auto r = antipode::collision::check_reach(arm, world, grasps[i], arm.mid_range(), reach);
+    reachable += r.status == antipode::collision::ReachStatus::kReachable ? 1 : 0;
+    i = (i + 1) % grasps.size();
+    ++checks;
+  }
+  state.counters["reachable_share"] = double(reachable) / double(checks);
+}
+void BM_ReachCheck_FirstFree(benchmark::State& s) {
+  reach_checks(s, antipode::collision::ReachSearch::kFirstFree, CheckMode::kSpheresThenExact);
+}
+void BM_ReachCheck_Exhaustive_Exact(benchmark::State& s) {
+  reach_checks(s, antipode::collision::ReachSearch::kExhaustive, CheckMode::kExact);
+}
+
+BENCHMARK(BM_ReachCheck_FirstFree)->Unit(benchmark::kMillisecond)->Iterations(364);
+BENCHMARK(BM_ReachCheck_Exhaustive_Exact)->Unit(benchmark::kMillisecond)->Iterations(364);
+BENCHMARK(BM_PointsOctree)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_PointsOctree_PointByPoint)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_BuildWorldInCell_Exact)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_BuildWorldInCell_SpheresThenExact)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_CheckRobotOnly_Exact)->Unit(benchmark::kMicrosecond);

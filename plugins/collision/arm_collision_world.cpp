@@ -18,6 +18,7 @@
 #include "antipode/core/error.hpp"
 #include "collision_pairs.hpp"
 #include "distance_grid.hpp"
+#include "points_octree.hpp"
 #include "sphere_arm.hpp"
 
 namespace antipode::collision {
@@ -343,11 +344,8 @@ void ArmCollisionWorld::set_points(const std::vector<Eigen::Vector3f>& points_m,
                                impl_->spheres->max_radius_m() + 3.0 * resolution_m + 1e-4);
     impl_->points_radius = impl_->spheres->points_radii(impl_->points_unchecked);
   }
-  auto tree = std::make_shared<octomap::OcTree>(resolution_m);
-  for (const Eigen::Vector3f& p : points_m)
-    if (p.allFinite()) tree->updateNode(octomap::point3d(p.x(), p.y(), p.z()), true);
-  impl_->points.geometry =
-      std::make_shared<fcl::OcTreed>(std::shared_ptr<const octomap::OcTree>(tree));
+  impl_->points.geometry = std::make_shared<fcl::OcTreed>(
+      std::shared_ptr<const octomap::OcTree>(points_octree(points_m, resolution_m)));
 }
 
 ContactReport ArmCollisionWorld::check(const Eigen::VectorXd& q) const {

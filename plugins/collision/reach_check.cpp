@@ -1,6 +1,7 @@
 #include "reach_check.hpp"
 
 #include <algorithm>
+#include <optional>
 
 #include "antipode/core/error.hpp"
 
@@ -29,47 +30,107 @@ Eigen::Isometry3d half_turned(const Eigen::Isometry3d& X_BaseHand) {
   return turned;
 }
 
+namespace {
+
+// The pre-grasp pose: `X_BaseHand` moved back along its approach.
+Eigen::Isometry3d pregrasp_of(const Eigen::Isometry3d& X_BaseHand, double pregrasp_m) {
+  Eigen::Isometry3d X_BasePreGrasp = X_BaseHand;
+  X_BasePreGrasp.translation() -= pregrasp_m * X_BaseHand.linear().col(0);
+  return X_BasePreGrasp;
+}
+
+// A free pre-grasp solution for the free grasp solution `q`, chosen as `options.search`
+// says; none when there is none, with `reach`'s status and detail saying why.
+std::optional<Eigen::VectorXd> free_pregrasp(const KinematicChain& arm,
+                                             const ArmCollisionWorld& world,
+                                             const Eigen::Isometry3d& X_BasePreGrasp,
+                                             const Eigen::VectorXd& q, const ReachOptions& options,
+                                             Reach& reach) {
+  IkOptions at_pregrasp = options.ik;  // a long first descent: it starts near the answer
+  at_pregrasp.max_solutions = options.grasp_solutions;
+  at_pregrasp.iterations_per_descent = std::max(at_pregrasp.iterations_per_descent, 100);
+  std::optional<Eigen::VectorXd> found;
+  const auto free = [&](const Eigen::VectorXd& p) {
+    if (const ContactReport c = world.check(p); !c.free()) {
+      reach.status = ReachStatus::kInCollisionAtPreGrasp;
+      reach.detail = c.str();
+      return false;
+    }
+    found = p;
+    return true;
+  };
+  IkResult pre;
+  if (options.search == ReachSearch::kFirstFree) {
+    pre = solve_ik(arm, X_BasePreGrasp, q, at_pregrasp,
+                   [&](const Eigen::VectorXd& p) { return !free(p); });
+  } else {
+    pre = solve_ik(arm, X_BasePreGrasp, q, at_pregrasp);
+    // The free solution nearest the grasp one (the straight approach between them).
+    std::sort(pre.solutions.begin(), pre.solutions.end(),
+              [&](const Eigen::VectorXd& a, const Eigen::VectorXd& b) {
+                return (a - q).squaredNorm() < (b - q).squaredNorm();
+              });
+    for (const Eigen::VectorXd& p : pre.solutions)
+      if (free(p)) break;
+  }
+  if (pre.status != IkStatus::kSolved && reach.status == ReachStatus::kInCollisionAtGrasp) {
+    reach.status = ReachStatus::kNoIkAtPreGrasp;
+    reach.detail.clear();
+  }
+  return found;
+}
+
+}  // namespace
+
+const char* to_string(ReachSearch search) {
+  switch (search) {
+    case ReachSearch::kFirstFree:
+      return "first_free";
+    case ReachSearch::kNearestPreGrasp:
+      return "nearest_pregrasp";
+    case ReachSearch::kExhaustive:
+      return "exhaustive";
+  }
+  return "?";
+}
+
+ReachSearch reach_search(const std::string& name) {
+  for (ReachSearch s :
+       {ReachSearch::kFirstFree, ReachSearch::kNearestPreGrasp, ReachSearch::kExhaustive})
+    if (name == to_string(s)) return s;
+  throw Error("unknown reach search '" + name + "'" +
+              did_you_mean(name, {"first_free", "nearest_pregrasp", "exhaustive"}) +
+              " (use first_free, nearest_pregrasp or exhaustive)");
+}
+
 Reach check_reach(const KinematicChain& arm, const ArmCollisionWorld& world,
                   const Eigen::Isometry3d& X_BaseHand, const Eigen::VectorXd& q_seed,
                   const ReachOptions& options) {
   if (!(options.pregrasp_m >= 0.0) || options.grasp_solutions < 1)
     throw Error("reach check: pregrasp_m must be >= 0 and grasp_solutions at least 1");
-  IkOptions at_grasp = options.ik;
-  at_grasp.max_solutions = options.grasp_solutions;
-  const IkResult grasp = solve_ik(arm, X_BaseHand, q_seed, at_grasp);
-  Reach reach;
-  if (grasp.status != IkStatus::kSolved) return reach;  // kNoIkAtGrasp
-  Eigen::Isometry3d X_BasePreGrasp = X_BaseHand;
-  X_BasePreGrasp.translation() -= options.pregrasp_m * X_BaseHand.linear().col(0);
-  IkOptions at_pregrasp = options.ik;  // a long first descent: it starts near the answer
-  at_pregrasp.max_solutions = options.grasp_solutions;
-  at_pregrasp.iterations_per_descent = std::max(at_pregrasp.iterations_per_descent, 100);
-  reach.status = ReachStatus::kInCollisionAtGrasp;
-  for (const Eigen::VectorXd& q : grasp.solutions) {
+  const Eigen::Isometry3d X_BasePreGrasp = pregrasp_of(X_BaseHand, options.pregrasp_m);
+  Reach reach;  // kNoIkAtGrasp until a solution is found
+  // One grasp solution: whether to search on.
+  const auto try_grasp = [&](const Eigen::VectorXd& q) {
+    if (reach.status == ReachStatus::kNoIkAtGrasp) reach.status = ReachStatus::kInCollisionAtGrasp;
     if (const ContactReport c = world.check(q); !c.free()) {
       if (reach.status == ReachStatus::kInCollisionAtGrasp && reach.detail.empty())
         reach.detail = c.str();
-      continue;
+      return true;
     }
-    IkResult pre = solve_ik(arm, X_BasePreGrasp, q, at_pregrasp);
-    if (pre.status != IkStatus::kSolved) {
-      if (reach.status == ReachStatus::kInCollisionAtGrasp)
-        reach.status = ReachStatus::kNoIkAtPreGrasp, reach.detail.clear();
-      continue;
+    if (auto p = free_pregrasp(arm, world, X_BasePreGrasp, q, options, reach)) {
+      reach = {ReachStatus::kReachable, q, std::move(*p), ""};
+      return false;
     }
-    // The free pre-grasp solution nearest the grasp one (the straight approach between them).
-    std::sort(pre.solutions.begin(), pre.solutions.end(),
-              [&](const Eigen::VectorXd& a, const Eigen::VectorXd& b) {
-                return (a - q).squaredNorm() < (b - q).squaredNorm();
-              });
-    for (const Eigen::VectorXd& p : pre.solutions) {
-      if (const ContactReport c = world.check(p); !c.free()) {
-        reach.status = ReachStatus::kInCollisionAtPreGrasp;
-        reach.detail = c.str();
-        continue;
-      }
-      return {ReachStatus::kReachable, q, p, ""};
-    }
+    return true;
+  };
+  IkOptions at_grasp = options.ik;
+  at_grasp.max_solutions = options.grasp_solutions;
+  if (options.search == ReachSearch::kExhaustive) {
+    for (const Eigen::VectorXd& q : solve_ik(arm, X_BaseHand, q_seed, at_grasp).solutions)
+      if (!try_grasp(q)) break;
+  } else {
+    solve_ik(arm, X_BaseHand, q_seed, at_grasp, try_grasp);
   }
   return reach;
 }

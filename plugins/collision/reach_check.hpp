@@ -30,10 +30,30 @@ enum class ReachStatus {
 
 const char* to_string(ReachStatus status);
 
+/// How check_reach searches. Every mode gives the same status: they differ in which free
+/// pre-grasp solution they return and in how much IK they solve to find it.
+enum class ReachSearch {
+  /// Solutions at the grasp one at a time, each checked as it is found; for a free one, the
+  /// pre-grasp's likewise; the first free pair is the answer. Whether, not how: the
+  /// selector's check, which solves as little IK as a reachable grasp needs.
+  kFirstFree,
+  /// Solutions at the grasp one at a time; for a free one, every pre-grasp solution, and
+  /// the free one nearest it (the straight approach between them): the planner's goal.
+  kNearestPreGrasp,
+  /// Every solution at the grasp first, then as kNearestPreGrasp: the same answer as
+  /// kNearestPreGrasp after more IK, kept as the baseline the reach bench measures against.
+  kExhaustive,
+};
+
+const char* to_string(ReachSearch search);
+/// "first_free", "nearest_pregrasp" or "exhaustive"; throws antipode::Error for another name.
+ReachSearch reach_search(const std::string& name);
+
 struct ReachOptions {
   double pregrasp_m = 0.10;  ///< how far back along the approach the pre-grasp is
-  int grasp_solutions = 12;  ///< distinct IK solutions tried at the grasp
-  IkOptions ik;              ///< tolerance, budget and seed of each IK call
+  int grasp_solutions = 12;  ///< distinct IK solutions tried at the grasp (and the pre-grasp)
+  ReachSearch search = ReachSearch::kNearestPreGrasp;
+  IkOptions ik;  ///< tolerance, budget and seed of each IK call
 };
 
 struct Reach {
@@ -47,12 +67,11 @@ struct Reach {
 /// hand axis reversed): the fingers swap places, the wrist stands elsewhere.
 Eigen::Isometry3d half_turned(const Eigen::Isometry3d& X_BaseHand);
 
-/// Tries up to `grasp_solutions` distinct IK solutions at the grasp (from `q_seed`); for each
-/// free one, solves the pre-grasp from it (as many solutions) and takes the free one nearest
-/// to it. Returns the
-/// first pair that is free, else the status of the attempt that came farthest (pre-grasp
-/// statuses before grasp ones). Throws antipode::Error for a seed or target IK refuses, or
-/// invalid options.
+/// Tries up to `grasp_solutions` distinct IK solutions at the grasp (from `q_seed`), in the
+/// order IK finds them; for each free one, solves the pre-grasp from it (as many solutions)
+/// and takes a free one (`options.search`). Returns the first pair that is free, else the
+/// status of the attempt that came farthest (pre-grasp statuses before grasp ones). Throws
+/// antipode::Error for a seed or target IK refuses, or invalid options.
 Reach check_reach(const KinematicChain& arm, const ArmCollisionWorld& world,
                   const Eigen::Isometry3d& X_BaseHand, const Eigen::VectorXd& q_seed,
                   const ReachOptions& options = {});

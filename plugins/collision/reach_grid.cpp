@@ -131,10 +131,12 @@ bool hand_contact(const Reach& reach, const std::vector<std::string>& hand_links
 
 Outcome try_grasp(ReachGrid& grid, const Arm& arm, const Eigen::Isometry3d& X) {
   ++grid.grasps;
-  Reach reach = check_reach(arm.chain, arm.world, X, arm.home);
+  ReachOptions options;  // whether, not how: as the selector
+  options.search = ReachSearch::kFirstFree;
+  Reach reach = check_reach(arm.chain, arm.world, X, arm.home, options);
   bool hand_only = hand_contact(reach, arm.hand_links);
   if (reach.status != ReachStatus::kReachable) {
-    const Reach other = check_reach(arm.chain, arm.world, half_turned(X), arm.home);
+    const Reach other = check_reach(arm.chain, arm.world, half_turned(X), arm.home, options);
     if (other.status == ReachStatus::kReachable) reach = other;
     hand_only = hand_only && hand_contact(other, arm.hand_links);
   }

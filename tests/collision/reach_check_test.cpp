@@ -2,10 +2,12 @@
 // reachable, one whose approach passes through the box's near wall is rejected with the
 // wall named, and the same grasp is reachable once the wall is gone.
 
+#include <map>
 #include <string>
 
 #include <gtest/gtest.h>
 
+#include "antipode/core/error.hpp"
 #include "antipode/robot/robot_model.hpp"
 #include "reach_check.hpp"
 
@@ -113,6 +115,60 @@ TEST(ReachCheck, OverTheIsolationRegionFromAboveAndFromTheNearSideOnly) {
   EXPECT_TRUE(reachable(arm, world, object, Eigen::Vector3d::UnitX()));    // away from the robot
   EXPECT_FALSE(reachable(arm, world, object, -Eigen::Vector3d::UnitX()));  // towards it
   EXPECT_FALSE(reachable(arm, world, object, Eigen::Vector3d::UnitY()));   // from its right
+}
+
+// The three searches give the same status for every grasp over the box, near its walls and
+// beyond the arm's reach; nearest_pregrasp and exhaustive give the same joint values, and
+// first_free the same grasp solution (the first free one that has a free pre-grasp).
+TEST(ReachCheck, EverySearchGivesTheSameAnswer) {
+  const KinematicChain arm = baxter().chain("base", "right_gripper");
+  ArmCollisionWorld world(baxter(), arm);
+  add_table_and_near_wall(world);
+  std::map<ReachStatus, int> statuses;
+  for (double x = 0.5; x <= 1.1; x += 0.1) {
+    for (double z = -0.25; z <= -0.05; z += 0.1) {
+      for (const Eigen::Vector3d& approach :
+           {Eigen::Vector3d(0, 0, -1), Eigen::Vector3d(1, 0, 0), Eigen::Vector3d(1, 0, -1)}) {
+        const Eigen::Isometry3d X = hand_at({x, -0.2, z}, approach);
+        ReachOptions options;
+        options.search = ReachSearch::kExhaustive;
+        const Reach exhaustive = check_reach(arm, world, X, arm.mid_range(), options);
+        options.search = ReachSearch::kNearestPreGrasp;
+        const Reach nearest = check_reach(arm, world, X, arm.mid_range(), options);
+        options.search = ReachSearch::kFirstFree;
+        const Reach first = check_reach(arm, world, X, arm.mid_range(), options);
+        const std::string at = "at x " + std::to_string(x) + ", z " + std::to_string(z);
+        EXPECT_EQ(first.status, exhaustive.status) << at;
+        EXPECT_EQ(nearest.status, exhaustive.status) << at;
+        EXPECT_EQ(nearest.q_grasp, exhaustive.q_grasp) << at;
+        EXPECT_EQ(nearest.q_pregrasp, exhaustive.q_pregrasp) << at;
+        EXPECT_EQ(first.q_grasp, exhaustive.q_grasp) << at;
+        if (first.status == ReachStatus::kReachable) {
+          EXPECT_TRUE(world.check(first.q_pregrasp).free()) << at;
+          Eigen::Isometry3d pre = X;
+          pre.translation() -= 0.10 * X.linear().col(0);
+          expect_at(arm, first.q_pregrasp, pre);
+        }
+        ++statuses[exhaustive.status];
+      }
+    }
+  }
+  // The grid holds reachable grasps and each way of failing but one.
+  EXPECT_GE(statuses.size(), 3u);
+  EXPECT_GT(statuses[ReachStatus::kReachable], 5);
+}
+
+TEST(ReachCheck, SearchNamesReadAndAnUnknownOneIsRefused) {
+  for (ReachSearch s :
+       {ReachSearch::kFirstFree, ReachSearch::kNearestPreGrasp, ReachSearch::kExhaustive})
+    EXPECT_EQ(reach_search(to_string(s)), s);
+  try {
+    reach_search("first_fre");
+    FAIL() << "no error";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("did you mean 'first_free'"), std::string::npos)
+        << e.what();
+  }
 }
 
 TEST(ReachCheck, AGraspBeyondTheArmHasNoIk) {

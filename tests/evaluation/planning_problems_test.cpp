@@ -23,12 +23,23 @@ std::string source(const std::string& path) {
   return std::string(ANTIPODE_TEST_SOURCE_DIR) + "/" + path;
 }
 
-// A scene file in a fresh temporary folder.
-std::string scene_file(const std::string& text) {
-  const fs::path dir =
+// This process's scratch folder, removed with its files when the tests end.
+struct ScratchFolder {
+  fs::path path =
       fs::temp_directory_path() / ("antipode_planning_scene_" + std::to_string(::getpid()));
-  fs::create_directories(dir);
-  const fs::path path = dir / "scene.yaml";
+  ScratchFolder() { fs::create_directories(path); }
+  ~ScratchFolder() {
+    std::error_code ignored;
+    fs::remove_all(path, ignored);
+  }
+  ScratchFolder(const ScratchFolder&) = delete;
+  ScratchFolder& operator=(const ScratchFolder&) = delete;
+};
+
+// A scene file in the scratch folder (each call replaces the last).
+std::string scene_file(const std::string& text) {
+  static const ScratchFolder folder;
+  const fs::path path = folder.path / "scene.yaml";
   std::ofstream(path) << text;
   return path.string();
 }

@@ -89,6 +89,33 @@ TEST(InverseKinematics, SameSeedSameSolution) {
   EXPECT_EQ(a.iterations, b.iterations);
 }
 
+// The visitor sees the solutions solve_ik returns, in its order, and stopping it early
+// leaves the first ones found and spends fewer iterations.
+TEST(InverseKinematics, TheVisitorSeesTheSolutionsAsFoundAndCanStopTheSearch) {
+  const KinematicChain arm = right_arm();
+  RandomStream random(5);
+  const Eigen::Isometry3d target = arm.forward(arm.random_configuration(random));
+  const IkOptions options = several(5, 7);
+  const IkResult all = solve_ik(arm, target, arm.mid_range(), options);
+  ASSERT_EQ(all.solutions.size(), 5u);
+  std::vector<Eigen::VectorXd> seen;
+  const IkResult visited =
+      solve_ik(arm, target, arm.mid_range(), options, [&](const Eigen::VectorXd& q) {
+        seen.push_back(q);
+        return true;
+      });
+  EXPECT_EQ(seen, all.solutions);
+  EXPECT_EQ(visited.solutions, all.solutions);
+  EXPECT_EQ(visited.iterations, all.iterations);
+  const IkResult first_two = solve_ik(arm, target, arm.mid_range(), options,
+                                      [n = 0](const Eigen::VectorXd&) mutable { return ++n < 2; });
+  ASSERT_EQ(first_two.status, IkStatus::kSolved);
+  ASSERT_EQ(first_two.solutions.size(), 2u);
+  EXPECT_EQ(first_two.solutions[0], all.solutions[0]);
+  EXPECT_EQ(first_two.solutions[1], all.solutions[1]);
+  EXPECT_LT(first_two.iterations, all.iterations);
+}
+
 TEST(InverseKinematics, AnUnreachablePoseHasNoSolution) {
   const KinematicChain arm = right_arm();
   Eigen::Isometry3d far = Eigen::Isometry3d::Identity();

@@ -61,4 +61,17 @@ std::string planning_line(const std::string& label, const nlohmann::ordered_json
   return out.str();
 }
 
+nlohmann::ordered_json selection_summary(const std::vector<double>& select_ms) {
+  return {{"selection_median_ms", percentile(select_ms, 0.5)},
+          {"selection_p90_ms", percentile(select_ms, 0.9)}};
+}
+
+std::string selection_line(const std::string& label, const nlohmann::ordered_json& s) {
+  std::ostringstream out;
+  out << std::fixed << std::setprecision(2) << label << " per scene: median "
+      << s["selection_median_ms"].get<double>() << " ms, p90 "
+      << s["selection_p90_ms"].get<double>() << " ms";
+  return out.str();
+}
+
 }  // namespace antipode::evaluation

@@ -1,5 +1,6 @@
 // `antipode bench reach --scenes N`: motion planning from the arm's home to the grasps
 // selected in seeded clutter scenes, through the plugin components a pick tree declares.
+#include <chrono>
 #include <iomanip>
 #include <iostream>
 #include <map>
@@ -34,6 +35,29 @@ std::shared_ptr<C> component_of(const bt::Tree& tree, const std::string& name,
   return component;
 }
 
+// `selector`'s selection from `hands`, its time appended to `ms`.
+HandSet timed_selection(const GraspSelector& selector, const HandSet& hands,
+                        const SelectionContext& context, std::vector<double>& ms) {
+  const auto t0 = std::chrono::steady_clock::now();
+  HandSet selection = selector.select(hands, context);
+  ms.push_back(
+      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count());
+  return selection;
+}
+
+// Whether two selections chose the same grasps in the same order.
+bool same_grasps(const HandSet& a, const HandSet& b) {
+  const auto grasps = [](const HandSet& s) {
+    std::vector<Eigen::Matrix4d> poses;
+    for (const Hand& h : s.hands) {
+      if (h.rejection != Rejection::kNone) break;
+      poses.push_back(h.X_FrameHand.matrix());
+    }
+    return poses;
+  };
+  return grasps(a) == grasps(b);
+}
+
 }  // namespace
 
 nlohmann::ordered_json bench_planning_scenes(const ReachBenchOptions& o) {
@@ -51,17 +75,23 @@ nlohmann::ordered_json bench_planning_scenes(const ReachBenchOptions& o) {
   const auto classifier = component_of<Classifier>(tree, "classifier", o);
   const auto selector = component_of<GraspSelector>(tree, "selector", o);
   const auto planner = component_of<MotionPlanner>(tree, "planner", o);
-  // Side by side: the same problems with FCL alone.
+  // Side by side, the baseline: the same problems with FCL alone, and a selector that
+  // solves every IK solution of a grasp before it checks any.
   std::optional<bt::Tree> exact_tree;
   std::shared_ptr<MotionPlanner> exact;
+  std::shared_ptr<GraspSelector> exact_selector;
   if (o.side_by_side) {
-    settings.set.push_back("planner.collision=exact");
+    for (const char* entry : {"planner.collision=exact", "selector.collision=exact",
+                              "selector.reach_search=exhaustive"})
+      settings.set.push_back(entry);
     exact_tree.emplace(load_tree_for(session, o.scene_tree, {}, settings));
     exact = component_of<MotionPlanner>(*exact_tree, "planner", o);
+    exact_selector = component_of<GraspSelector>(*exact_tree, "selector", o);
   }
 
   std::vector<PlanFigures> plans, exact_plans;
-  int scenes_with_grasps = 0;
+  std::vector<double> select_ms, exact_select_ms;
+  int scenes_with_grasps = 0, same_selections = 0;
   for (int s = 0; s < o.scenes; ++s) {
     const std::uint64_t seed = o.seed + std::uint64_t(s);
     cell->reset(seed);
@@ -76,7 +106,11 @@ nlohmann::ordered_json bench_planning_scenes(const ReachBenchOptions& o) {
     SelectionContext context;
     context.scene = cloud;  // the whole capture: the arm passes outside the workspace
     context.start = cell->arm_state();
-    const HandSet selection = selector->select(hands, context);
+    const HandSet selection = timed_selection(*selector, hands, context, select_ms);
+    if (exact_selector) {
+      const HandSet baseline = timed_selection(*exact_selector, hands, context, exact_select_ms);
+      same_selections += same_grasps(selection, baseline) ? 1 : 0;
+    }
     bool any = false;
     for (const Hand& grasp : selection.hands) {
       if (grasp.rejection != Rejection::kNone) break;  // the grasps come first
@@ -99,8 +133,13 @@ nlohmann::ordered_json bench_planning_scenes(const ReachBenchOptions& o) {
                                 {"scene_file", o.scene_file},
                                 {"scenes_with_grasps", scenes_with_grasps}};
   out.update(planning_summary(plans));
+  out.update(selection_summary(select_ms));
   const int with_goal = out["with_ik"], solved = out["successes"];
-  if (exact) out["exact"] = planning_summary(exact_plans);
+  if (exact) {
+    out["exact"] = planning_summary(exact_plans);
+    out["exact"].update(selection_summary(exact_select_ms));
+    out["same_selections"] = same_selections;
+  }
   const auto pct = [](int n, int d) { return d ? 100.0 * n / d : 0.0; };
   std::cout << std::fixed << std::setprecision(2) << "planning, " << o.scenes << " scenes of "
             << o.scene_file << ": " << plans.size() << " selected grasps, " << with_goal
@@ -112,7 +151,14 @@ nlohmann::ordered_json bench_planning_scenes(const ReachBenchOptions& o) {
             << out["simplify_median_ms"].get<double>() << " ms; " << std::setprecision(0)
             << out["collision_checks_per_s"].get<double>()
             << " arm states checked per second of search\n";
-  if (exact) std::cout << planning_line("  the same with FCL alone", out["exact"]) << "\n";
+  std::cout << selection_line("  selection", out) << "\n";
+  if (exact) {
+    std::cout << planning_line("  the same with FCL alone", out["exact"]) << "\n"
+              << selection_line("  selection with FCL alone and every IK solution first",
+                                out["exact"])
+              << "; the same grasps in " << same_selections << " of " << select_ms.size()
+              << " scenes\n";
+  }
   return out;
 }
 

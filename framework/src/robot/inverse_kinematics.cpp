@@ -171,7 +171,8 @@ bool is_distinct(const std::vector<Eigen::VectorXd>& found, const Eigen::VectorX
 }
 
 IkResult solve_damped(const KinematicChain& chain, const Eigen::Isometry3d& target,
-                      const Eigen::VectorXd& q_seed, const IkOptions& options, Budget& budget) {
+                      const Eigen::VectorXd& q_seed, const IkOptions& options, Budget& budget,
+                      const IkVisitor& visit) {
   IkResult result;
   Kinematics kin(*ChainAccess::of(chain));
   RandomStream random(options.seed);
@@ -181,6 +182,7 @@ IkResult solve_damped(const KinematicChain& chain, const Eigen::Isometry3d& targ
     if (descend(chain, kin, target, options, budget, q, result.iterations) &&
         is_distinct(result.solutions, q, options.distinct)) {
       result.solutions.push_back(q);
+      if (visit && !visit(q)) break;
     }
     if (budget.left <= 0 || budget.timed_out) break;
     q = chain.random_configuration(random);
@@ -191,7 +193,8 @@ IkResult solve_damped(const KinematicChain& chain, const Eigen::Isometry3d& targ
 // KDL's Newton-Raphson solver one iteration per call, continuing from where the last call
 // stopped, until it converges or the budget runs out (TRAC-IK's protocol for KDL).
 IkResult solve_kdl(const KinematicChain& chain, const Eigen::Isometry3d& target,
-                   const Eigen::VectorXd& q_seed, const IkOptions& options, Budget& budget) {
+                   const Eigen::VectorXd& q_seed, const IkOptions& options, Budget& budget,
+                   const IkVisitor& visit) {
   const KDL::Chain& kdl_chain = ChainAccess::of(chain)->chain;
   const unsigned n = kdl_chain.getNrOfJoints();
   KDL::JntArray lower(n), upper(n), q(n), out(n);
@@ -211,6 +214,7 @@ IkResult solve_kdl(const KinematicChain& chain, const Eigen::Isometry3d& target,
     q = out;
     if (solver.CartToJnt(q, frame, out) >= 0) {
       result.solutions.push_back(out.data);
+      if (visit) visit(out.data);
       break;
     }
   }
@@ -221,6 +225,11 @@ IkResult solve_kdl(const KinematicChain& chain, const Eigen::Isometry3d& target,
 
 IkResult solve_ik(const KinematicChain& chain, const Eigen::Isometry3d& X_BaseTip,
                   const Eigen::VectorXd& q_seed, const IkOptions& options) {
+  return solve_ik(chain, X_BaseTip, q_seed, options, IkVisitor());
+}
+
+IkResult solve_ik(const KinematicChain& chain, const Eigen::Isometry3d& X_BaseTip,
+                  const Eigen::VectorXd& q_seed, const IkOptions& options, const IkVisitor& visit) {
   check_inputs(chain, X_BaseTip, q_seed, options);
   if (chain.dof() == 0)
     throw Error("IK: the chain from '" + chain.base_link() + "' to '" + chain.tip_link() +
@@ -230,8 +239,8 @@ IkResult solve_ik(const KinematicChain& chain, const Eigen::Isometry3d& X_BaseTi
                                    std::chrono::duration<double>(options.timeout_s)),
                 options.timeout_s > 0.0};
   IkResult result = options.solver == IkSolver::kKdl
-                        ? solve_kdl(chain, X_BaseTip, q_seed, options, budget)
-                        : solve_damped(chain, X_BaseTip, q_seed, options, budget);
+                        ? solve_kdl(chain, X_BaseTip, q_seed, options, budget, visit)
+                        : solve_damped(chain, X_BaseTip, q_seed, options, budget, visit);
   if (!result.solutions.empty())
     result.status = IkStatus::kSolved;
   else

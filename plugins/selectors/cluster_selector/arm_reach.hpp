@@ -28,6 +28,8 @@ struct ArmReachOptions {
   double points_resolution_m = 0.01;          ///< the octree of the observed points
   collision::CollisionOptions collision;      ///< how the arm's states are checked
   int ik_solutions = 12;                      ///< distinct IK solutions tried at a grasp
+  /// How the IK solutions are searched (the same answers; exhaustive is the slow baseline).
+  collision::ReachSearch search = collision::ReachSearch::kFirstFree;
 };
 
 class ArmReach {

@@ -79,6 +79,11 @@ SelectionOptions read_selection_options(const Parameters& params) {
   o.arm.points_resolution_m =
       params.number_in("points_resolution_m", o.arm.points_resolution_m, 0.001, 0.1);
   o.arm.ik_solutions = int(params.number_in("ik_solutions", o.arm.ik_solutions, 1, 100));
+  const std::string search = params.get<std::string>("reach_search", "first_free");
+  if (search != "first_free" && search != "exhaustive")
+    params.fail("reach_search",
+                "'reach_search' must be first_free or exhaustive, got '" + search + "'");
+  o.arm.search = collision::reach_search(search);
   o.arm.collision = collision::collision_options(params);
   params.reject_unknown();
   return o;

@@ -24,6 +24,7 @@
 /// Threads: a call uses only its arguments; concurrent calls are safe.
 
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -73,6 +74,17 @@ struct IkResult {
 /// or not finite, a target that is not a finite rigid transform, or invalid options.
 IkResult solve_ik(const KinematicChain& chain, const Eigen::Isometry3d& X_BaseTip,
                   const Eigen::VectorXd& q_seed, const IkOptions& options = {});
+
+/// Called with each solution as it is found; returns whether to search on.
+using IkVisitor = std::function<bool(const Eigen::VectorXd& q_rad)>;
+
+/// solve_ik, handing each solution to `visit` as it is found, first found first, and
+/// stopping when `visit` returns false. The solutions handed over, and the result, are the
+/// first ones solve_ik finds with the same options: a caller that wants the first solution
+/// with some property (free of collision) stops there and skips the search for the rest.
+/// `visit` is called on this thread; an exception it throws leaves the call.
+IkResult solve_ik(const KinematicChain& chain, const Eigen::Isometry3d& X_BaseTip,
+                  const Eigen::VectorXd& q_seed, const IkOptions& options, const IkVisitor& visit);
 
 /// The pose error of `X_Actual` against `X_Target` in the base frame: position difference
 /// (target - actual, m) then the angle-axis vector of R_target R_actual^T (rad).
