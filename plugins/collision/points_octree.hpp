@@ -6,9 +6,9 @@
 // The points' leaf keys are counted first (a capture lists neighbouring points together, so
 // runs of one key are counted before they reach the hash map); each leaf then gets the
 // log-odds its hits sum to, clamped after every hit as octomap clamps it, and the inner
-// nodes are updated and pruned once at the end. A clutter capture of 457,000 points in
-// 11,700 leaves at 1 cm took 32 ms point by point (measured: collision_bench
-// --benchmark_filter=PointsOctree gives both, side by side).
+// nodes are updated and pruned once at the end: a capture's 460,800 points at 1 cm in
+// 3.8 ms against 28.6 ms point by point (collision_bench --benchmark_filter=PointsOctree,
+// both side by side).
 //
 // Units: metres. Points outside octomap's key range, or not finite, are left out, as
 // updateNode leaves them out. Threads: a call uses only its arguments.
