@@ -713,6 +713,13 @@ TEST_F(ClusterSelectorTest, RejectsBadParameters) {
             std::string::npos);
   EXPECT_NE(creation_error("threads: 300").find("'threads' must be in [0, 256]"),
             std::string::npos);
+  EXPECT_NE(creation_error("reach_search: first_fre")
+                .find("'reach_search' must be first_free or exhaustive, got 'first_fre' (did "
+                      "you mean 'first_free'?)"),
+            std::string::npos);
+  EXPECT_NE(creation_error("reach_search: nearest_pregrasp").find("'reach_search' must be"),
+            std::string::npos);
+  EXPECT_EQ(creation_error("reach_search: exhaustive"), "");
   const HandSet no_cloud;
   EXPECT_THROW(create("{}")->select(no_cloud, {}), Error);
   EXPECT_THROW(create("{}")->screen(no_cloud, {}), Error);

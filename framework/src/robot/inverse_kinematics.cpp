@@ -170,6 +170,15 @@ bool is_distinct(const std::vector<Eigen::VectorXd>& found, const Eigen::VectorX
   return true;
 }
 
+// `visit(q)`, its time left out of the budget's wall clock: what the caller does with a
+// solution is not the solver's work.
+bool visit_outside_budget(const IkVisitor& visit, const Eigen::VectorXd& q, Budget& budget) {
+  const Clock::time_point start = Clock::now();
+  const bool search_on = visit(q);
+  budget.deadline += Clock::now() - start;
+  return search_on;
+}
+
 IkResult solve_damped(const KinematicChain& chain, const Eigen::Isometry3d& target,
                       const Eigen::VectorXd& q_seed, const IkOptions& options, Budget& budget,
                       const IkVisitor& visit) {
@@ -182,7 +191,7 @@ IkResult solve_damped(const KinematicChain& chain, const Eigen::Isometry3d& targ
     if (descend(chain, kin, target, options, budget, q, result.iterations) &&
         is_distinct(result.solutions, q, options.distinct)) {
       result.solutions.push_back(q);
-      if (visit && !visit(q)) break;
+      if (visit && !visit_outside_budget(visit, q, budget)) break;
     }
     if (budget.left <= 0 || budget.timed_out) break;
     q = chain.random_configuration(random);

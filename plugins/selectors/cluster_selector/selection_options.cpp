@@ -4,6 +4,7 @@
 #include <string>
 #include <vector>
 
+#include "antipode/core/error.hpp"
 #include "antipode/robot/robot_file.hpp"
 #include "collision_options.hpp"
 
@@ -79,10 +80,12 @@ SelectionOptions read_selection_options(const Parameters& params) {
   o.arm.points_resolution_m =
       params.number_in("points_resolution_m", o.arm.points_resolution_m, 0.001, 0.1);
   o.arm.ik_solutions = int(params.number_in("ik_solutions", o.arm.ik_solutions, 1, 100));
+  // nearest_pregrasp would give the selector the same answers as first_free at more cost:
+  // it chooses among pre-grasps, and the selector keeps only whether there is one.
   const std::string search = params.get<std::string>("reach_search", "first_free");
   if (search != "first_free" && search != "exhaustive")
-    params.fail("reach_search",
-                "'reach_search' must be first_free or exhaustive, got '" + search + "'");
+    params.fail("reach_search", "'reach_search' must be first_free or exhaustive, got '" + search +
+                                    "'" + did_you_mean(search, {"first_free", "exhaustive"}));
   o.arm.search = collision::reach_search(search);
   o.arm.collision = collision::collision_options(params);
   params.reject_unknown();

@@ -82,7 +82,8 @@ using IkVisitor = std::function<bool(const Eigen::VectorXd& q_rad)>;
 /// stopping when `visit` returns false. The solutions handed over, and the result, are the
 /// first ones solve_ik finds with the same options: a caller that wants the first solution
 /// with some property (free of collision) stops there and skips the search for the rest.
-/// `visit` is called on this thread; an exception it throws leaves the call.
+/// `visit` is called on this thread, and its own time does not count against `timeout_s`;
+/// an exception it throws leaves the call.
 IkResult solve_ik(const KinematicChain& chain, const Eigen::Isometry3d& X_BaseTip,
                   const Eigen::VectorXd& q_seed, const IkOptions& options, const IkVisitor& visit);
 
