@@ -16,8 +16,9 @@ const char* to_string(CheckMode mode) {
   return "?";
 }
 
-CollisionOptions collision_options(const Parameters& params) {
+CollisionOptions collision_options(const Parameters& params, CheckMode default_mode) {
   CollisionOptions o;
+  o.mode = default_mode;
   const std::string mode = params.get<std::string>("collision", to_string(o.mode));
   bool known = false;
   for (const CheckMode m : {CheckMode::kSpheresThenExact, CheckMode::kExact, CheckMode::kSpheres})

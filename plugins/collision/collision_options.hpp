@@ -11,8 +11,10 @@ namespace antipode::collision {
 /// "spheres_then_exact", "exact" or "spheres".
 const char* to_string(CheckMode mode);
 
-/// The options `params` give (the defaults where absent). Fails through `params` (a located
-/// error naming the choices) for an unknown mode or an overshoot outside [0.001, 0.1] m.
-CollisionOptions collision_options(const Parameters& params);
+/// The options `params` give (`default_mode` and the other defaults where absent). Fails
+/// through `params` (a located error naming the choices) for an unknown mode or an overshoot
+/// outside [0.001, 0.1] m.
+CollisionOptions collision_options(const Parameters& params,
+                                   CheckMode default_mode = CheckMode::kSpheresThenExact);
 
 }  // namespace antipode::collision

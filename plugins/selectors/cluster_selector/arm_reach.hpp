@@ -26,8 +26,11 @@ struct ArmReachOptions {
   std::string arm_tip;                        ///< the grasp frame; the chain starts at the root
   std::vector<std::string> points_unchecked;  ///< RobotFile::points_unchecked
   double points_resolution_m = 0.01;          ///< the octree of the observed points
-  collision::CollisionOptions collision;      ///< how the arm's states are checked
-  int ik_solutions = 12;                      ///< distinct IK solutions tried at a grasp
+  /// How the arm's states are checked: FCL alone by default. A selection builds the world of
+  /// its capture and checks a few hundred states in it, too few for the spheres' distance
+  /// grid to pay for its building (docs/selection.md).
+  collision::CollisionOptions collision{collision::CheckMode::kExact};
+  int ik_solutions = 12;  ///< distinct IK solutions tried at a grasp
   /// How the IK solutions are searched (the same answers; exhaustive is the slow baseline).
   collision::ReachSearch search = collision::ReachSearch::kFirstFree;
 };

@@ -87,7 +87,7 @@ SelectionOptions read_selection_options(const Parameters& params) {
     params.fail("reach_search", "'reach_search' must be first_free or exhaustive, got '" + search +
                                     "'" + did_you_mean(search, {"first_free", "exhaustive"}));
   o.arm.search = collision::reach_search(search);
-  o.arm.collision = collision::collision_options(params);
+  o.arm.collision = collision::collision_options(params, o.arm.collision.mode);
   params.reject_unknown();
   return o;
 }
