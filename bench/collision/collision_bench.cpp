@@ -4,8 +4,9 @@
 // three check modes (FCL alone, spheres then FCL, spheres alone), and the spheres alone at
 // each SIMD level, side by side:
 //   build/bench/collision/collision_bench --benchmark_filter=Check
-// Also the octree of a capture's points, built per leaf and point by point, and the reach
-// check of grasps over the box with its two searches (--benchmark_filter='Octree|Reach').
+// Also the octree of a capture's points, built per leaf and point by point, the reach check
+// of grasps over the box with its searches, and the arm's inverse kinematics with its two
+// kinematics (--benchmark_filter='Octree|Reach|Ik').
 
 #include <cmath>
 #include <vector>
@@ -13,6 +14,7 @@
 #include <benchmark/benchmark.h>
 
 #include "antipode/core/random.hpp"
+#include "antipode/robot/inverse_kinematics.hpp"
 #include "antipode/robot/robot_model.hpp"
 #include "arm_collision_world.hpp"
 #include "points_octree.hpp"
@@ -173,9 +175,10 @@ void BM_PointsOctree_PointByPoint(benchmark::State& s) {
 
 // The selector's reach check (reach_check.hpp) of grasps over the box: a 13 x 7 grid from
 // x = 0.45 to 1.05 m (beyond the arm's reach from above past about 0.75) at the height of the
-// pile, each from above and tilted 45 degrees, round-robin. The default search (the first
-// free pair, spheres then FCL) beside the exhaustive one, with spheres then FCL and with FCL
-// alone (the reach bench's baseline).
+// pile, each from above and tilted 45 degrees, round-robin. The selector's default (the
+// first free pair of IK solutions, FCL alone, the one-pass kinematics) beside the same with
+// orocos-kdl's kinematics, and the reach bench's baseline (every IK solution at the grasp
+// first, FCL alone, orocos-kdl's kinematics); also the first free pair with spheres then FCL.
 std::vector<Eigen::Isometry3d> grasps_over_the_box() {
   std::vector<Eigen::Isometry3d> grasps;
   for (int i = 0; i < 13; ++i) {
@@ -194,8 +197,8 @@ std::vector<Eigen::Isometry3d> grasps_over_the_box() {
   return grasps;
 }
 
-void reach_checks(benchmark::State& state, antipode::collision::ReachSearch search,
-                  CheckMode mode) {
+void reach_checks(benchmark::State& state, antipode::collision::ReachSearch search, CheckMode mode,
+                  antipode::IkSolver solver) {
   const antipode::KinematicChain arm = robot().chain("base", "right_gripper");
   antipode::collision::CollisionOptions options;
   options.mode = mode;
@@ -204,6 +207,7 @@ void reach_checks(benchmark::State& state, antipode::collision::ReachSearch sear
   const std::vector<Eigen::Isometry3d> grasps = grasps_over_the_box();
   antipode::collision::ReachOptions reach;
   reach.search = search;
+  reach.ik.solver = solver;
   std::size_t i = 0, reachable = 0, checks = 0;
   for (auto _ : state) {
     const auto r = antipode::collision::check_reach(arm, world, grasps[i], arm.mid_range(), reach);
@@ -213,19 +217,64 @@ void reach_checks(benchmark::State& state, antipode::collision::ReachSearch sear
   }
   state.counters["reachable_share"] = double(reachable) / double(checks);
 }
+using antipode::IkSolver;
+using antipode::collision::ReachSearch;
 void BM_ReachCheck_FirstFree(benchmark::State& s) {
-  reach_checks(s, antipode::collision::ReachSearch::kFirstFree, CheckMode::kSpheresThenExact);
+  reach_checks(s, ReachSearch::kFirstFree, CheckMode::kExact, IkSolver::kDampedLeastSquares);
 }
-void BM_ReachCheck_Exhaustive(benchmark::State& s) {
-  reach_checks(s, antipode::collision::ReachSearch::kExhaustive, CheckMode::kSpheresThenExact);
+void BM_ReachCheck_FirstFree_KdlKinematics(benchmark::State& s) {
+  reach_checks(s, ReachSearch::kFirstFree, CheckMode::kExact, IkSolver::kDampedLeastSquaresKdl);
 }
-void BM_ReachCheck_Exhaustive_Exact(benchmark::State& s) {
-  reach_checks(s, antipode::collision::ReachSearch::kExhaustive, CheckMode::kExact);
+void BM_ReachCheck_FirstFree_SpheresThenExact(benchmark::State& s) {
+  reach_checks(s, ReachSearch::kFirstFree, CheckMode::kSpheresThenExact,
+               IkSolver::kDampedLeastSquares);
+}
+void BM_ReachCheck_Baseline(benchmark::State& s) {
+  reach_checks(s, ReachSearch::kExhaustive, CheckMode::kExact, IkSolver::kDampedLeastSquaresKdl);
+}
+
+// Inverse kinematics of the right arm (inverse_kinematics.hpp): the damped solver with its own
+// kinematics and with orocos-kdl's (dls_kdl), at the
+// poses of random joint vectors, seeded at mid-range: the first solution (what a reachable
+// grasp costs), and solutions until the whole budget is spent (2,000 iterations: what a
+// grasp the arm cannot take costs when it lies within the arm's reach bound).
+void ik(benchmark::State& state, IkSolver solver, bool first_only) {
+  const antipode::KinematicChain arm = robot().chain("base", "right_gripper");
+  antipode::RandomStream random(3);
+  std::vector<Eigen::Isometry3d> targets;
+  for (int i = 0; i < 200; ++i) targets.push_back(arm.forward(arm.random_configuration(random)));
+  antipode::IkOptions options;
+  options.solver = solver;
+  if (!first_only) options.max_solutions = options.max_iterations;
+  std::size_t i = 0, solved = 0, calls = 0;
+  double iterations = 0.0;
+  for (auto _ : state) {
+    const antipode::IkResult r = antipode::solve_ik(arm, targets[i], arm.mid_range(), options);
+    solved += r.status == antipode::IkStatus::kSolved ? 1 : 0;
+    iterations += r.iterations;
+    i = (i + 1) % targets.size();
+    ++calls;
+  }
+  state.counters["solved_share"] = double(solved) / double(calls);
+  state.counters["iterations"] = iterations / double(calls);
+}
+void BM_Ik_First(benchmark::State& s) { ik(s, IkSolver::kDampedLeastSquares, true); }
+void BM_Ik_First_KdlKinematics(benchmark::State& s) {
+  ik(s, IkSolver::kDampedLeastSquaresKdl, true);
+}
+void BM_Ik_WholeBudget(benchmark::State& s) { ik(s, IkSolver::kDampedLeastSquares, false); }
+void BM_Ik_WholeBudget_KdlKinematics(benchmark::State& s) {
+  ik(s, IkSolver::kDampedLeastSquaresKdl, false);
 }
 
 BENCHMARK(BM_ReachCheck_FirstFree)->Unit(benchmark::kMillisecond)->Iterations(364);
-BENCHMARK(BM_ReachCheck_Exhaustive)->Unit(benchmark::kMillisecond)->Iterations(364);
-BENCHMARK(BM_ReachCheck_Exhaustive_Exact)->Unit(benchmark::kMillisecond)->Iterations(364);
+BENCHMARK(BM_ReachCheck_FirstFree_KdlKinematics)->Unit(benchmark::kMillisecond)->Iterations(364);
+BENCHMARK(BM_ReachCheck_FirstFree_SpheresThenExact)->Unit(benchmark::kMillisecond)->Iterations(364);
+BENCHMARK(BM_ReachCheck_Baseline)->Unit(benchmark::kMillisecond)->Iterations(364);
+BENCHMARK(BM_Ik_First)->Unit(benchmark::kMicrosecond)->Iterations(1000);
+BENCHMARK(BM_Ik_First_KdlKinematics)->Unit(benchmark::kMicrosecond)->Iterations(1000);
+BENCHMARK(BM_Ik_WholeBudget)->Unit(benchmark::kMillisecond)->Iterations(200);
+BENCHMARK(BM_Ik_WholeBudget_KdlKinematics)->Unit(benchmark::kMillisecond)->Iterations(200);
 BENCHMARK(BM_PointsOctree)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_PointsOctree_PointByPoint)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_BuildWorldInCell_Exact)->Unit(benchmark::kMillisecond);

@@ -222,7 +222,7 @@ void add_bench_reach(CLI::App& bench, antipode::evaluation::ReachBenchOptions& o
   reach->add_option("--tip", o.tip_link, "Tip link of the IK chain (default: the hand's link)");
   reach->add_option("--ik-poses", o.ik_poses, "Random reachable poses")->capture_default_str();
   reach->add_option("--seed", o.seed, "Seed of the poses")->capture_default_str()->check(kSeed);
-  reach->add_option("--solvers", o.solvers, "Any of dls,kdl")->delimiter(',');
+  reach->add_option("--solvers", o.solvers, "Any of dls,kdl,dls_kdl")->delimiter(',');
   reach->add_option("--timeout-ms", o.timeout_ms, "Time limit per pose")->capture_default_str();
   reach->add_option("--tolerance", o.tolerance, "m and rad per component")->capture_default_str();
   reach->add_option("--scenes", o.scenes, "Clutter scenes to plan in (0: none)")

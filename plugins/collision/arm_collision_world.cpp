@@ -344,8 +344,9 @@ void ArmCollisionWorld::set_points(const std::vector<Eigen::Vector3f>& points_m,
                                impl_->spheres->max_radius_m() + 3.0 * resolution_m + 1e-4);
     impl_->points_radius = impl_->spheres->points_radii(impl_->points_unchecked);
   }
-  impl_->points.geometry = std::make_shared<fcl::OcTreed>(
-      std::shared_ptr<const octomap::OcTree>(points_octree(points_m, resolution_m)));
+  impl_->points.geometry = std::make_shared<fcl::OcTreed>(std::shared_ptr<const octomap::OcTree>(
+      impl_->options.octree_point_by_point ? points_octree_point_by_point(points_m, resolution_m)
+                                           : points_octree(points_m, resolution_m)));
 }
 
 ContactReport ArmCollisionWorld::check(const Eigen::VectorXd& q) const {

@@ -56,6 +56,10 @@ struct CollisionOptions {
   /// How far the spheres may reach beyond a link's shapes where the cover can keep to it
   /// (sphere_cover.hpp; a fat short cylinder's one sphere reaches farther).
   double sphere_overshoot_m = 0.01;
+  /// How set_points builds the points' octree: once per occupied leaf (default), or one
+  /// point at a time as octomap inserts them - the same tree, about ten times slower, kept
+  /// as the baseline the reach benchmark compares with (points_octree.hpp).
+  bool octree_point_by_point = false;
 };
 
 class ArmCollisionWorld {

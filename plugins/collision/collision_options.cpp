@@ -2,6 +2,8 @@
 
 #include <string>
 
+#include "antipode/core/error.hpp"
+
 namespace antipode::collision {
 
 const char* to_string(CheckMode mode) {
@@ -30,6 +32,12 @@ CollisionOptions collision_options(const Parameters& params, CheckMode default_m
     params.fail("collision",
                 "'collision' must be spheres_then_exact, exact or spheres, got '" + mode + "'");
   o.sphere_overshoot_m = params.number_in("sphere_overshoot_m", o.sphere_overshoot_m, 0.001, 0.1);
+  const std::string octree = params.get<std::string>("points_octree", "per_leaf");
+  if (octree != "per_leaf" && octree != "point_by_point")
+    params.fail("points_octree", "'points_octree' must be per_leaf or point_by_point, got '" +
+                                     octree + "'" +
+                                     did_you_mean(octree, {"per_leaf", "point_by_point"}));
+  o.octree_point_by_point = octree == "point_by_point";
   return o;
 }
 

@@ -1,7 +1,8 @@
 #pragma once
 // The collision checks' settings as component parameters: `collision` (spheres_then_exact,
-// exact or spheres: arm_collision_world.hpp's CheckMode) and `sphere_overshoot_m`, shared by
-// the plugins that build an ArmCollisionWorld (the OMPL planner, the cluster selector).
+// exact or spheres: arm_collision_world.hpp's CheckMode), `sphere_overshoot_m` and
+// `points_octree` (per_leaf or point_by_point), shared by the plugins that build an
+// ArmCollisionWorld (the OMPL planner, the cluster selector).
 
 #include "antipode/core/parameters.hpp"
 #include "arm_collision_world.hpp"
@@ -12,8 +13,8 @@ namespace antipode::collision {
 const char* to_string(CheckMode mode);
 
 /// The options `params` give (`default_mode` and the other defaults where absent). Fails
-/// through `params` (a located error naming the choices) for an unknown mode or an overshoot
-/// outside [0.001, 0.1] m.
+/// through `params` (a located error naming the choices) for an unknown mode or octree build,
+/// or an overshoot outside [0.001, 0.1] m.
 CollisionOptions collision_options(const Parameters& params,
                                    CheckMode default_mode = CheckMode::kSpheresThenExact);
 

@@ -55,6 +55,9 @@ TEST(ReachBench, PlansToTheGraspsSelectedInClutterScenes) {
   EXPECT_GT(p["median_ms"].get<double>(), 0.0);
   EXPECT_GE(p["p90_ms"].get<double>(), p["median_ms"].get<double>());
   EXPECT_GT(p["collision_checks_per_s"].get<double>(), 0.0);
+  // The selection's reach checks are part of it.
+  EXPECT_GT(p["reach_check_median_ms"].get<double>(), 0.0) << p.dump(1);
+  EXPECT_LE(p["reach_check_median_ms"].get<double>(), p["selection_median_ms"].get<double>());
 }
 
 TEST(ReachBench, PlansTheMotionBenchMakerProblemsBesideFclAlone) {

@@ -11,6 +11,7 @@
 
 #include "antipode/core/random.hpp"
 #include "points_octree.hpp"
+#include "sphere_kernels.hpp"
 
 namespace antipode::collision {
 namespace {
@@ -45,13 +46,32 @@ std::vector<Eigen::Vector3f> capture_like(std::uint64_t seed) {
   return points;
 }
 
+// The leaf keys are computed by a loop built for AVX2 and for the baseline instruction set:
+// both, whichever this CPU has.
 TEST(PointsOctree, SameTreeAsPointByPointInsertion) {
-  for (std::uint64_t seed : {1u, 2u, 3u}) {
-    SCOPED_TRACE(seed);
-    const std::vector<Eigen::Vector3f> points = capture_like(seed);
-    expect_same_tree(points, 0.01);
-    expect_same_tree(points, 0.005);
+  const SimdLevel widest = simd_level();
+  for (const SimdLevel level : {widest, SimdLevel::kBaseline}) {
+    SCOPED_TRACE(to_string(set_simd_level(level)));
+    for (std::uint64_t seed : {1u, 2u, 3u}) {
+      SCOPED_TRACE(seed);
+      const std::vector<Eigen::Vector3f> points = capture_like(seed);
+      expect_same_tree(points, 0.01);
+      expect_same_tree(points, 0.005);
+    }
   }
+  set_simd_level(widest);
+}
+
+// Points spread thinly over a large space (more blocks of leaves than the counts may take)
+// are counted leaf by leaf: the same tree.
+TEST(PointsOctree, SparseCloudsGiveTheSameTree) {
+  RandomStream random(9);
+  std::vector<Eigen::Vector3f> points;
+  for (int i = 0; i < 3000; ++i)
+    points.emplace_back(float(random.uniform(-5.0, 5.0)), float(random.uniform(-5.0, 5.0)),
+                        float(random.uniform(0.0, 3.0)));
+  expect_same_tree(points, 0.01);
+  expect_same_tree(points, 0.002);
 }
 
 TEST(PointsOctree, LeavesOutWhatOctomapLeavesOut) {
@@ -60,7 +80,18 @@ TEST(PointsOctree, LeavesOutWhatOctomapLeavesOut) {
   points.insert(points.begin() + 10, Eigen::Vector3f(nan, 0.0f, 0.0f));
   points.emplace_back(std::numeric_limits<float>::infinity(), 0.0f, 0.0f);
   points.emplace_back(1e6f, 0.0f, 0.0f);  // beyond the key range at 1 cm (about 327 m)
-  expect_same_tree(points, 0.01);
+  points.emplace_back(0.0f, -std::numeric_limits<float>::infinity(), 0.0f);
+  points.emplace_back(0.0f, nan, 0.0f);
+  points.emplace_back(0.0f, 0.0f, nan);
+  points.emplace_back(-327.68f, 0.0f, 0.0f);  // the first key at 1 cm
+  points.emplace_back(0.0f, 327.675f, 0.0f);  // the last
+  points.emplace_back(0.0f, 0.0f, -327.69f);  // just outside
+  for (const SimdLevel level : {simd_level(), SimdLevel::kBaseline}) {
+    const SimdLevel widest = simd_level();
+    SCOPED_TRACE(to_string(set_simd_level(level)));
+    expect_same_tree(points, 0.01);
+    set_simd_level(widest);
+  }
   EXPECT_EQ(points_octree({}, 0.01)->size(), 0u);
 }
 

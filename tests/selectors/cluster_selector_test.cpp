@@ -720,6 +720,16 @@ TEST_F(ClusterSelectorTest, RejectsBadParameters) {
   EXPECT_NE(creation_error("reach_search: nearest_pregrasp").find("'reach_search' must be"),
             std::string::npos);
   EXPECT_EQ(creation_error("reach_search: exhaustive"), "");
+  EXPECT_NE(creation_error("ik_kinematics: one-pass")
+                .find("'ik_kinematics' must be one_pass or kdl, got 'one-pass' (did you mean "
+                      "'one_pass'?)"),
+            std::string::npos);
+  EXPECT_EQ(creation_error("ik_kinematics: kdl"), "");
+  EXPECT_NE(creation_error("points_octree: per-leaf")
+                .find("'points_octree' must be per_leaf or point_by_point, got 'per-leaf' (did "
+                      "you mean 'per_leaf'?)"),
+            std::string::npos);
+  EXPECT_EQ(creation_error("points_octree: point_by_point"), "");
   const HandSet no_cloud;
   EXPECT_THROW(create("{}")->select(no_cloud, {}), Error);
   EXPECT_THROW(create("{}")->screen(no_cloud, {}), Error);
@@ -766,7 +776,15 @@ TEST_F(ClusterSelectorTest, WithARobotTheArmMustReachTheGrasp) {
   ASSERT_EQ(grasp_count(free_hand), 2u);
   EXPECT_NEAR(free_hand.hands[0].position_m().x(), 1.5, 1e-9) << "the higher score first";
 
-  const HandSet on_arm = create("min_cluster_size: 1\nrobot: " + robot)->select(set, {});
+  SelectionTimes times;
+  SelectionContext timed;
+  timed.times = &times;
+  const HandSet on_arm = create("min_cluster_size: 1\nrobot: " + robot)->select(set, timed);
+  EXPECT_GT(times.reach_s, 0.0) << "the reach checks' time is kept when asked for";
+  SelectionTimes no_arm;
+  timed.times = &no_arm;
+  create("min_cluster_size: 1")->select(set, timed);
+  EXPECT_EQ(no_arm.reach_s, 0.0);
   ASSERT_EQ(grasp_count(on_arm), 1u);
   EXPECT_NEAR(on_arm.hands[0].position_m().x(), 0.72, 1e-9);
   EXPECT_EQ(on_arm.hands[1].rejection, Rejection::kNoIk);

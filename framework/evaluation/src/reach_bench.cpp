@@ -80,7 +80,8 @@ void check(const ReachBenchOptions& o) {
   if (!(o.timeout_ms > 0.0)) throw Error("bench reach: --timeout-ms must be positive");
   if (!(o.tolerance > 0.0 && o.tolerance < 1.0))
     throw Error("bench reach: --tolerance must be in (0, 1)");
-  if (o.solvers.empty()) throw Error("bench reach: --solvers names no solver (use dls, kdl)");
+  if (o.solvers.empty())
+    throw Error("bench reach: --solvers names no solver (use dls, kdl, dls_kdl)");
   if (o.scenes < 0) throw Error("bench reach: --scenes must be at least 0");
   if (o.problems < 0) throw Error("bench reach: --problems must be at least 0");
   if (o.ik_poses == 0 && o.scenes == 0 && o.problems == 0)

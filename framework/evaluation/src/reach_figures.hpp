@@ -30,11 +30,15 @@ nlohmann::ordered_json planning_summary(const std::vector<PlanFigures>& plans);
 /// One line of those figures for standard output, after `label`.
 std::string planning_line(const std::string& label, const nlohmann::ordered_json& summary);
 
-/// The median and 90th percentile of the selections' times (`select_ms`, one per scene),
-/// as `selection_median_ms` and `selection_p90_ms`.
-nlohmann::ordered_json selection_summary(const std::vector<double>& select_ms);
+/// The median and 90th percentile of the selections' times (`select_ms`, one per scene) and
+/// of their reach checks' (`reach_ms`, SelectionTimes::reach_s in ms), as
+/// `selection_median_ms`, `selection_p90_ms`, `reach_check_median_ms` and
+/// `reach_check_p90_ms`.
+nlohmann::ordered_json selection_summary(const std::vector<double>& select_ms,
+                                         const std::vector<double>& reach_ms);
 
-/// "LABEL per scene: median M ms, p90 P ms" from a summary holding selection_summary's figures.
+/// "LABEL per scene: median M ms, p90 P ms; its reach checks: median R ms, p90 Q ms" from a
+/// summary holding selection_summary's figures.
 std::string selection_line(const std::string& label, const nlohmann::ordered_json& summary);
 
 }  // namespace antipode::evaluation

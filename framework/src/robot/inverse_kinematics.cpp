@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <string>
 
 #include <Eigen/Cholesky>
@@ -14,6 +15,7 @@
 
 #include "antipode/core/error.hpp"
 #include "antipode/core/random.hpp"
+#include "chain_evaluator.hpp"
 #include "kinematic_chain_impl.hpp"
 
 namespace antipode {
@@ -30,13 +32,24 @@ const char* to_string(IkStatus status) {
   return "?";
 }
 
-const char* to_string(IkSolver solver) { return solver == IkSolver::kKdl ? "kdl" : "dls"; }
+const char* to_string(IkSolver solver) {
+  switch (solver) {
+    case IkSolver::kDampedLeastSquares:
+      return "dls";
+    case IkSolver::kKdl:
+      return "kdl";
+    case IkSolver::kDampedLeastSquaresKdl:
+      return "dls_kdl";
+  }
+  return "?";
+}
 
 IkSolver ik_solver(const std::string& name) {
-  if (name == "dls") return IkSolver::kDampedLeastSquares;
-  if (name == "kdl") return IkSolver::kKdl;
-  throw Error("unknown IK solver '" + name + "'" + did_you_mean(name, {"dls", "kdl"}) +
-              " (use dls or kdl)");
+  for (const IkSolver s :
+       {IkSolver::kDampedLeastSquares, IkSolver::kKdl, IkSolver::kDampedLeastSquaresKdl})
+    if (name == to_string(s)) return s;
+  throw Error("unknown IK solver '" + name + "'" + did_you_mean(name, {"dls", "kdl", "dls_kdl"}) +
+              " (use dls, kdl or dls_kdl)");
 }
 
 void IkOptions::validate() const {
@@ -92,75 +105,140 @@ struct Budget {
   }
 };
 
-// Forward kinematics and Jacobian with the solvers and arrays of one solve.
+// The tip pose and Jacobian of one solve: the chain's one-pass evaluator, or orocos-kdl's
+// solvers (kDampedLeastSquaresKdl).
 class Kinematics {
  public:
-  explicit Kinematics(const KinematicChain::Impl& impl)
-      : fk_(impl.chain),
-        jac_(impl.chain),
-        q_(impl.chain.getNrOfJoints()),
-        j_(impl.chain.getNrOfJoints()) {}
-
-  Eigen::Matrix<double, 6, 1> error(const Eigen::Isometry3d& target, const Eigen::VectorXd& q) {
-    q_.data = q;
-    KDL::Frame f;
-    fk_.JntToCart(q_, f);
-    return pose_error(target, to_eigen(f));
+  Kinematics(const KinematicChain& chain, IkSolver solver)
+      : one_pass_(ChainEvaluator::of(chain)),
+        kdl_(solver == IkSolver::kDampedLeastSquaresKdl ? ChainAccess::of(chain) : nullptr) {
+    if (kdl_ == nullptr) return;
+    fk_.emplace(kdl_->chain);
+    jac_.emplace(kdl_->chain);
+    q_.resize(kdl_->chain.getNrOfJoints());
+    j_.resize(kdl_->chain.getNrOfJoints());
   }
 
-  const Eigen::Matrix<double, 6, Eigen::Dynamic>& jacobian(const Eigen::VectorXd& q) {
+  // False when the target is certainly beyond the chain's reach (the one-pass kinematics
+  // only: the KDL baseline searches regardless). The margin covers the tolerance: up to
+  // sqrt(3) tolerance in position, and the orientation's acting on the last joint's lever.
+  bool may_reach(const Eigen::Isometry3d& target, double tolerance) const {
+    if (kdl_ != nullptr) return true;
+    const double margin = 1e-3 + std::sqrt(3.0) * tolerance * (1.0 + one_pass_.lever_m());
+    return one_pass_.may_reach(target, margin);
+  }
+
+  void evaluate(const Eigen::VectorXd& q, Eigen::Isometry3d& X_BaseTip,
+                ChainEvaluator::Jacobian& J) {
+    if (kdl_ == nullptr) return one_pass_.evaluate(q, X_BaseTip, J);
     q_.data = q;
-    jac_.JntToJac(q_, j_);
-    return j_.data;
+    KDL::Frame f;
+    fk_->JntToCart(q_, f);
+    X_BaseTip = to_eigen(f);
+    jac_->JntToJac(q_, j_);
+    J = j_.data;
   }
 
  private:
-  KDL::ChainFkSolverPos_recursive fk_;
-  KDL::ChainJntToJacSolver jac_;
+  const ChainEvaluator& one_pass_;
+  const KinematicChain::Impl* kdl_;
+  std::optional<KDL::ChainFkSolverPos_recursive> fk_;
+  std::optional<KDL::ChainJntToJacSolver> jac_;
   KDL::JntArray q_;
   KDL::Jacobian j_;
 };
 
-Eigen::VectorXd clamp(const KinematicChain& chain, Eigen::VectorXd q) {
-  for (std::size_t i = 0; i < chain.dof(); ++i) {
-    const auto k = static_cast<Eigen::Index>(i);
-    q(k) = std::clamp(q(k), chain.limits()[i].lower, chain.limits()[i].upper);
-  }
-  return q;
+// The pose error, its squared norm and the Jacobian at one joint vector.
+struct Evaluation {
+  Eigen::VectorXd q;
+  Eigen::Matrix<double, 6, 1> e;
+  ChainEvaluator::Jacobian J;
+  double cost = 0.0;
+};
+
+void evaluate(Kinematics& kin, const Eigen::Isometry3d& target, Evaluation& at) {
+  Eigen::Isometry3d X_BaseTip;
+  kin.evaluate(at.q, X_BaseTip, at.J);
+  at.e = pose_error(target, X_BaseTip);
+  at.cost = at.e.squaredNorm();
 }
+
+// x = A^-1 b for the damped system A (symmetric, positive definite by lambda > 0): Cholesky,
+// or LDLT with pivoting where rounding leaves A not numerically positive definite.
+template <typename Matrix, typename Vector>
+Vector solve_spd(const Matrix& a, const Vector& b) {
+  const Eigen::LLT<Matrix> llt(a);
+  if (llt.info() == Eigen::Success) return llt.solve(b);
+  return a.ldlt().solve(b);
+}
+
+// dq = (J^T J + lambda I)^-1 J^T e, without allocating. From six joints on, the same step
+// as J^T (J J^T + lambda I)^-1 e, which factors a 6 x 6 matrix whatever the chain's length.
+void damped_step(const ChainEvaluator::Jacobian& J, const Eigen::Matrix<double, 6, 1>& e,
+                 double lambda, Eigen::VectorXd& dq) {
+  if (J.cols() >= 6) {
+    Eigen::Matrix<double, 6, 6> a = J.lazyProduct(J.transpose());
+    a.diagonal().array() += lambda;
+    const Eigen::Matrix<double, 6, 1> y = solve_spd(a, e);
+    dq.noalias() = J.transpose() * y;
+    return;
+  }
+  using Small = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, 6, 6>;
+  using SmallVector = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, 6, 1>;
+  Small a = J.transpose().lazyProduct(J);
+  a.diagonal().array() += lambda;
+  const SmallVector b = J.transpose() * e;
+  dq = solve_spd(a, b);
+}
+
+// The joint limits as two vectors, for clamping every step.
+struct Limits {
+  Eigen::VectorXd lower, upper;
+  explicit Limits(const KinematicChain& chain)
+      : lower(static_cast<Eigen::Index>(chain.dof())),
+        upper(static_cast<Eigen::Index>(chain.dof())) {
+    for (std::size_t i = 0; i < chain.dof(); ++i) {
+      lower(static_cast<Eigen::Index>(i)) = chain.limits()[i].lower;
+      upper(static_cast<Eigen::Index>(i)) = chain.limits()[i].upper;
+    }
+  }
+  void clamp(Eigen::VectorXd& q) const { q = q.cwiseMax(lower).cwiseMin(upper); }
+};
 
 bool converged(const Eigen::Matrix<double, 6, 1>& e, double tolerance) {
   return e.cwiseAbs().maxCoeff() <= tolerance;
 }
 
-// One Levenberg-Marquardt descent from q: returns true with q at a solution, false when it
-// stalls, reaches the per-descent limit or the budget runs out.
-bool descend(const KinematicChain& chain, Kinematics& kin, const Eigen::Isometry3d& target,
-             const IkOptions& options, Budget& budget, Eigen::VectorXd& q, int& iterations) {
-  Eigen::Matrix<double, 6, 1> e = kin.error(target, q);
-  double cost = e.squaredNorm();
+// The arrays of one solve's descents, sized once.
+struct Workspace {
+  Evaluation at;     // the descent's current joint values
+  Evaluation trial;  // the step's
+  Eigen::VectorXd dq;
+};
+
+// One Levenberg-Marquardt descent from `work.at.q`: returns true with it at a solution,
+// false when it stalls, reaches the per-descent limit or the budget runs out.
+bool descend(const Limits& limits, Kinematics& kin, const Eigen::Isometry3d& target,
+             const IkOptions& options, Budget& budget, Workspace& work, int& iterations) {
+  evaluate(kin, target, work.at);
   double lambda = 1e-3;
-  const auto n = static_cast<Eigen::Index>(chain.dof());
   for (int step = 0; step < options.iterations_per_descent; ++step) {
-    if (converged(e, options.tolerance)) return true;
+    if (converged(work.at.e, options.tolerance)) return true;
     if (!budget.spend()) return false;
     ++iterations;
-    const auto& j = kin.jacobian(q);
-    // The step of the normal equations (J^T J + lambda I) dq = J^T e.
-    const Eigen::VectorXd dq = (j.transpose() * j + lambda * Eigen::MatrixXd::Identity(n, n))
-                                   .ldlt()
-                                   .solve(j.transpose() * e);
-    const Eigen::VectorXd trial = clamp(chain, q + dq);
-    const Eigen::Matrix<double, 6, 1> trial_e = kin.error(target, trial);
-    if (trial_e.squaredNorm() < cost) {
-      q = trial, e = trial_e, cost = e.squaredNorm();
+    damped_step(work.at.J, work.at.e, lambda, work.dq);
+    work.trial.q = work.at.q + work.dq;
+    limits.clamp(work.trial.q);
+    evaluate(kin, target, work.trial);
+    if (work.trial.cost < work.at.cost) {
+      std::swap(work.at, work.trial);
       lambda = std::max(lambda / 3.0, 1e-9);
     } else {
       lambda *= 4.0;
       if (lambda > 1e6) return false;  // stuck at a limit or a local minimum
     }
   }
-  return converged(e, options.tolerance);
+  return converged(work.at.e, options.tolerance);
 }
 
 bool is_distinct(const std::vector<Eigen::VectorXd>& found, const Eigen::VectorXd& q,
@@ -183,18 +261,21 @@ IkResult solve_damped(const KinematicChain& chain, const Eigen::Isometry3d& targ
                       const Eigen::VectorXd& q_seed, const IkOptions& options, Budget& budget,
                       const IkVisitor& visit) {
   IkResult result;
-  Kinematics kin(*ChainAccess::of(chain));
+  Kinematics kin(chain, options.solver);
   RandomStream random(options.seed);
-  Eigen::VectorXd q = q_seed;
+  if (!kin.may_reach(target, options.tolerance)) return result;
+  const Limits limits(chain);
+  Workspace work;
+  work.at.q = q_seed;
   while (static_cast<int>(result.solutions.size()) < options.max_solutions) {
     ++result.descents;
-    if (descend(chain, kin, target, options, budget, q, result.iterations) &&
-        is_distinct(result.solutions, q, options.distinct)) {
-      result.solutions.push_back(q);
-      if (visit && !visit_outside_budget(visit, q, budget)) break;
+    if (descend(limits, kin, target, options, budget, work, result.iterations) &&
+        is_distinct(result.solutions, work.at.q, options.distinct)) {
+      result.solutions.push_back(work.at.q);
+      if (visit && !visit_outside_budget(visit, work.at.q, budget)) break;
     }
     if (budget.left <= 0 || budget.timed_out) break;
-    q = chain.random_configuration(random);
+    work.at.q = chain.random_configuration(random);
   }
   return result;
 }

@@ -2,6 +2,7 @@
 // The shared description behind KinematicChain: an orocos-kdl chain (fixed joints folded
 // into segments) with its names and limits.
 
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -9,6 +10,7 @@
 #include <kdl/frames.hpp>
 
 #include "antipode/robot/kinematic_chain.hpp"
+#include "chain_evaluator.hpp"
 
 namespace antipode {
 
@@ -18,6 +20,8 @@ struct KinematicChain::Impl {
   std::vector<std::string> joint_names;
   std::vector<JointLimits> limits;
   KDL::Chain chain;
+  /// The IK's kinematics of `chain`, built once the chain is complete (RobotModel::chain).
+  std::shared_ptr<const ChainEvaluator> evaluator;
 };
 
 /// The description of a chain, for the kinematics solvers; nullptr for an empty chain.

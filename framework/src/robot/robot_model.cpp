@@ -190,6 +190,7 @@ KinematicChain RobotModel::chain(const std::string& base, const std::string& tip
     impl->joint_names.push_back(joint.name);
     impl->limits.push_back(limits_of(joint, impl_->source));
   }
+  impl->evaluator = std::make_shared<const ChainEvaluator>(impl->chain, impl->limits);
   return KinematicChain(std::move(impl));
 }
 

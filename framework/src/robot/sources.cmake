@@ -5,6 +5,7 @@ find_package(urdfdom REQUIRED)
 find_package(orocos_kdl REQUIRED)
 find_package(tinyxml2 REQUIRED)
 list(APPEND ANTIPODE_SOURCES
+  ${CMAKE_CURRENT_LIST_DIR}/chain_evaluator.cpp
   ${CMAKE_CURRENT_LIST_DIR}/inverse_kinematics.cpp
   ${CMAKE_CURRENT_LIST_DIR}/kinematic_chain.cpp
   ${CMAKE_CURRENT_LIST_DIR}/robot_file.cpp

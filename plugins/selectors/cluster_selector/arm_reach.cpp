@@ -31,6 +31,7 @@ Rejection ArmReach::check(const collision::ArmCollisionWorld& world, const Hand&
   options.pregrasp_m = standoff_m;
   options.grasp_solutions = options_.ik_solutions;
   options.search = options_.search;
+  options.ik.solver = options_.ik_solver;
   collision::Reach reach = collision::check_reach(arm_, world, grasp.X_FrameHand, seed, options);
   if (reach.status != collision::ReachStatus::kReachable) {
     // A parallel gripper turned half a turn about its approach takes the same grasp.

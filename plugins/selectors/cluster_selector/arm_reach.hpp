@@ -33,6 +33,9 @@ struct ArmReachOptions {
   int ik_solutions = 12;  ///< distinct IK solutions tried at a grasp
   /// How the IK solutions are searched (the same answers; exhaustive is the slow baseline).
   collision::ReachSearch search = collision::ReachSearch::kFirstFree;
+  /// The IK solver: the damped solver (kDampedLeastSquares), or the same with orocos-kdl's
+  /// kinematics (kDampedLeastSquaresKdl: the slow baseline).
+  IkSolver ik_solver = IkSolver::kDampedLeastSquares;
 };
 
 class ArmReach {

@@ -1,6 +1,7 @@
 #include "cluster_selector.hpp"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <limits>
 #include <map>
@@ -251,8 +252,13 @@ HandSet choose(std::vector<Hand> hands, const std::vector<double>& held, const H
   std::optional<collision::ArmCollisionWorld> arm_world;
   const auto arm_rejection = [&](const Hand& grasp) {
     if (!arm) return Rejection::kNone;
+    const auto start = std::chrono::steady_clock::now();
     if (!arm_world) arm_world.emplace(arm->world_for(context.scene ? *context.scene : *in.cloud));
-    return arm->check(*arm_world, grasp, o.standoff_m, context.start);
+    const Rejection why = arm->check(*arm_world, grasp, o.standoff_m, context.start);
+    if (context.times != nullptr)
+      context.times->reach_s +=
+          std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return why;
   };
 
   const std::int32_t target = object_of_interest(in, o);

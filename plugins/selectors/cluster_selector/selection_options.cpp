@@ -87,6 +87,12 @@ SelectionOptions read_selection_options(const Parameters& params) {
     params.fail("reach_search", "'reach_search' must be first_free or exhaustive, got '" + search +
                                     "'" + did_you_mean(search, {"first_free", "exhaustive"}));
   o.arm.search = collision::reach_search(search);
+  const std::string kinematics = params.get<std::string>("ik_kinematics", "one_pass");
+  if (kinematics != "one_pass" && kinematics != "kdl")
+    params.fail("ik_kinematics", "'ik_kinematics' must be one_pass or kdl, got '" + kinematics +
+                                     "'" + did_you_mean(kinematics, {"one_pass", "kdl"}));
+  o.arm.ik_solver =
+      kinematics == "kdl" ? IkSolver::kDampedLeastSquaresKdl : IkSolver::kDampedLeastSquares;
   o.arm.collision = collision::collision_options(params, o.arm.collision.mode);
   params.reject_unknown();
   return o;

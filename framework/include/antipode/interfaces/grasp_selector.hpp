@@ -12,6 +12,14 @@
 
 namespace antipode {
 
+/// Where a selection's time went, for benchmarks and diagnostics: a selector adds what it
+/// measures and leaves the rest at zero. Seconds of wall time on the calling thread.
+struct SelectionTimes {
+  /// The arm's reach checks (inverse kinematics and collision checks at the grasps and
+  /// their pre-grasps), the building of their collision world included.
+  double reach_s = 0.0;
+};
+
 /// What a selector may know besides the hands. Everything is optional: a selector for a
 /// free-floating hand needs none of it.
 struct SelectionContext {
@@ -22,6 +30,9 @@ struct SelectionContext {
   /// the selector's own choice.
   JointState start;
   StopToken stop;  ///< cancellation
+  /// Where the selector adds its times; null: none are kept. Not shared between concurrent
+  /// selections.
+  SelectionTimes* times = nullptr;
 };
 
 /// Whether a selector may choose `hand`: no rejection, labelled positive or not yet labelled

@@ -24,7 +24,7 @@ class NodeRegistry;
 }
 
 constexpr std::uint32_t kAbiMajor = 12;
-constexpr std::uint32_t kAbiMinor = 0;
+constexpr std::uint32_t kAbiMinor = 1;
 
 /// One thing a plugin can make. For a component kind ("sampler", "classifier", "selector",
 /// "planner", "cell") `create` is set and `register_node` is null; for kind "node" it is the

@@ -3,14 +3,25 @@
 /// Inverse kinematics of a KinematicChain: joint values, within the joint limits, that put
 /// the tip at a target pose X_BaseTip.
 ///
-/// Two solvers:
+/// Three solvers:
 /// - kDampedLeastSquares (default): Levenberg-Marquardt steps on the pose error (position
 ///   in m, orientation as an angle-axis vector in rad) with the damping adapted to
 ///   progress, each step clamped to the joint limits; a descent that stalls restarts from
-///   joint values drawn uniformly within the limits from a stream seeded by `seed`.
+///   joint values drawn uniformly within the limits from a stream seeded by `seed`. Each
+///   step's tip pose and Jacobian come from one pass down the chain, without allocating.
+///   A target that no joint values reach by the triangle inequality (the last joint's axis
+///   point, which the target fixes up to the last joint's stroke, farther from the first
+///   joint's than the links between them span) is refused before any step: kNoSolution
+///   with no iterations and no descents.
 /// - kKdl: orocos-kdl's ChainIkSolverPos_NR_JL (Newton-Raphson with joint-limit clamping)
 ///   from the seed only, no restarts: the library's own solver, kept as the baseline the
 ///   reach benchmark compares with.
+/// - kDampedLeastSquaresKdl: the damped solver with each step's tip pose and Jacobian from
+///   orocos-kdl's forward-kinematics and Jacobian solvers, and without the reach bound: the
+///   baseline the reach benchmarks compare the damped solver's kinematics with (about 2.8
+///   times the cost per step on Baxter's arm). The two passes agree to rounding; rounding
+///   can change which of two nearly equal steps a descent takes, so the solutions the two
+///   find can differ.
 ///
 /// A solution meets the target within `tolerance` (m for each position component, rad for
 /// each component of the orientation error). With `max_solutions` > 1 the damped solver
@@ -35,16 +46,17 @@
 
 namespace antipode {
 
-enum class IkSolver { kDampedLeastSquares, kKdl };
+enum class IkSolver { kDampedLeastSquares, kKdl, kDampedLeastSquaresKdl };
 
 enum class IkStatus {
   kSolved,      ///< at least one solution
-  kNoSolution,  ///< the iteration budget ran out without one
+  kNoSolution,  ///< the iteration budget ran out without one, or the target is out of reach
   kTimedOut,    ///< the wall-clock bound ran out without one
 };
 
 const char* to_string(IkStatus status);
-/// "dls" or "kdl"; ik_solver() reads them, throwing antipode::Error for another name.
+/// "dls", "kdl" or "dls_kdl"; ik_solver() reads them, throwing antipode::Error for another
+/// name.
 const char* to_string(IkSolver solver);
 IkSolver ik_solver(const std::string& name);
 
@@ -66,7 +78,7 @@ struct IkResult {
   IkStatus status = IkStatus::kNoSolution;
   std::vector<Eigen::VectorXd> solutions;  ///< each within the limits, meeting the tolerance
   int iterations = 0;                      ///< over all descents
-  int descents = 0;                        ///< 1 + restarts
+  int descents = 0;                        ///< 1 + restarts (0: refused out of reach)
 };
 
 /// Solves for `X_BaseTip` from `q_seed` (dof() values within the limits; the first descent
