@@ -67,11 +67,11 @@ using LeafHits = std::vector<std::pair<std::uint64_t, std::uint32_t>>;
 
 // Hits per leaf key, counted in blocks of 8 x 8 x 8 leaves: a hash map finds a point's
 // block only when the block differs from the last point's (a capture lists neighbouring
-// points together: the 460,000 points of a capture change block about every 30 points, but
-// leaf about every 3), and the block's array counts its leaves (saturating: a leaf's
-// log-odds stop changing after a few hits). Block by block in the order of their keys, then
-// leaf by leaf: the order depends only on the leaves. Nothing when the points spread over
-// more than `max_blocks` blocks (a sparse cloud, a fine resolution): the arrays would
+// points together: the 457,000 points of a two-view capture change leaf about every 3
+// points, and a block spans 8 leaves each way), and the block's array counts its leaves
+// (saturating: a leaf's log-odds stop changing after a few hits). Block by block in the order of
+// their keys, then leaf by leaf: the order depends only on the leaves. Nothing when the points
+// spread over more than `max_blocks` blocks (a sparse cloud, a fine resolution): the arrays would
 // outweigh the points.
 std::optional<LeafHits> hits_by_block(const std::vector<std::uint64_t>& keys,
                                       std::size_t max_blocks) {

@@ -83,15 +83,15 @@ TEST(PointsOctree, LeavesOutWhatOctomapLeavesOut) {
   points.emplace_back(0.0f, -std::numeric_limits<float>::infinity(), 0.0f);
   points.emplace_back(0.0f, nan, 0.0f);
   points.emplace_back(0.0f, 0.0f, nan);
-  points.emplace_back(-327.68f, 0.0f, 0.0f);  // the first key at 1 cm
-  points.emplace_back(0.0f, 327.675f, 0.0f);  // the last
-  points.emplace_back(0.0f, 0.0f, -327.69f);  // just outside
-  for (const SimdLevel level : {simd_level(), SimdLevel::kBaseline}) {
-    const SimdLevel widest = simd_level();
+  points.emplace_back(-327.68f, 0.0f, 0.0f);  // at the ends of the key range at 1 cm
+  points.emplace_back(0.0f, 327.675f, 0.0f);
+  points.emplace_back(0.0f, 0.0f, -327.69f);
+  const SimdLevel widest = simd_level();
+  for (const SimdLevel level : {widest, SimdLevel::kBaseline}) {
     SCOPED_TRACE(to_string(set_simd_level(level)));
     expect_same_tree(points, 0.01);
-    set_simd_level(widest);
   }
+  set_simd_level(widest);
   EXPECT_EQ(points_octree({}, 0.01)->size(), 0u);
 }
 

@@ -72,23 +72,27 @@ TEST(ChainEvaluator, TheReachBoundHoldsEveryReachablePose) {
 }
 
 // The damped step factors J^T J for chains of fewer than six joints and J J^T from six on:
-// both solve poses the chain reaches.
+// both solve poses the chain reaches, with the one-pass kinematics and with orocos-kdl's.
 TEST(ChainEvaluator, IkSolvesReachablePosesOfShortAndLongChains) {
-  for (const ChainCase& c : chains()) {
-    const KinematicChain chain = load(c);
-    RandomStream random(5);
-    int solved = 0;
-    for (int i = 0; i < 20; ++i) {
-      const Eigen::Isometry3d target = chain.forward(chain.random_configuration(random));
-      IkOptions options;
-      options.seed = static_cast<std::uint64_t>(i);
-      const IkResult r = solve_ik(chain, target, chain.mid_range(), options);
-      if (r.status != IkStatus::kSolved) continue;
-      ++solved;
-      EXPECT_LE(pose_error(target, chain.forward(r.solutions[0])).cwiseAbs().maxCoeff(), 1e-5);
+  for (const ChainCase& c : chains())
+    for (const IkSolver solver :
+         {IkSolver::kDampedLeastSquares, IkSolver::kDampedLeastSquaresKdl}) {
+      SCOPED_TRACE(to_string(solver));
+      const KinematicChain chain = load(c);
+      RandomStream random(5);
+      int solved = 0;
+      for (int i = 0; i < 20; ++i) {
+        const Eigen::Isometry3d target = chain.forward(chain.random_configuration(random));
+        IkOptions options;
+        options.solver = solver;
+        options.seed = static_cast<std::uint64_t>(i);
+        const IkResult r = solve_ik(chain, target, chain.mid_range(), options);
+        if (r.status != IkStatus::kSolved) continue;
+        ++solved;
+        EXPECT_LE(pose_error(target, chain.forward(r.solutions[0])).cwiseAbs().maxCoeff(), 1e-5);
+      }
+      EXPECT_GE(solved, 18) << c.tip;  // 90%: the default budget, random poses
     }
-    EXPECT_GE(solved, 18) << c.tip;  // 90%: the default budget, random poses
-  }
 }
 
 }  // namespace
