@@ -111,6 +111,9 @@ struct ArmCollisionWorld::Impl {
     bool moving = false;
     std::size_t arm_link = 0;
     Eigen::Isometry3d X_ParentLink = Eigen::Isometry3d::Identity();
+    // Below the arm's last joint: rigid with the tip, at X_TipLink from it.
+    bool rigid_with_tip = false;
+    Eigen::Isometry3d X_TipLink = Eigen::Isometry3d::Identity();
   };
   struct Box {  // an obstacle: a box, or a cylinder (add_cylinder)
     std::string name;
@@ -234,6 +237,12 @@ ArmCollisionWorld::Impl::Link make_link(const RobotModel& robot, const Kinematic
     for (std::size_t k = 0; k < arm_links.size(); ++k)
       if (std::find(path.begin(), path.end(), arm_links[k]) != path.end()) link.arm_link = k;
     link.X_ParentLink = arm_poses[link.arm_link].inverse() * link.X_ParentLink;
+    // Every arm joint lies on the path from the base to the tip, so a link below the last one
+    // has none between it and the tip.
+    const std::vector<std::string>& path_joints = chain.joint_names();
+    link.rigid_with_tip = arm.dof() > 0 && std::find(path_joints.begin(), path_joints.end(),
+                                                     arm.joint_names().back()) != path_joints.end();
+    link.X_TipLink = arm_poses.back().inverse() * arm_poses[link.arm_link] * link.X_ParentLink;
   }
   link.primitives = robot.collision_shapes(name);
   for (const CollisionPrimitive& p : link.primitives) link.shapes.push_back(make_shape(p));
@@ -414,6 +423,28 @@ std::size_t ArmCollisionWorld::first_contact(const std::vector<Eigen::VectorXd>&
     }
   }
   return qs.size();
+}
+
+ContactReport ArmCollisionWorld::check_tip_links(const Eigen::Isometry3d& X_BaseTip) const {
+  if (!X_BaseTip.matrix().allFinite()) throw Error("collision check: the tip pose must be finite");
+  std::vector<Eigen::Isometry3d> poses(impl_->shape_count);
+  for (std::size_t i = 0; i < impl_->links.size(); ++i) {
+    const Impl::Link& link = impl_->links[i];
+    if (!link.rigid_with_tip) continue;
+    for (std::size_t k = 0; k < link.shapes.size(); ++k)
+      poses[link.first_shape + k] = X_BaseTip * link.X_TipLink * link.shapes[k].X_LinkShape;
+    const auto given = [&poses]() -> const std::vector<Eigen::Isometry3d>& { return poses; };
+    if (auto contact = impl_->environment_contact(i, ~std::uint32_t(0), true, given))
+      return *contact;
+  }
+  return {};
+}
+
+std::vector<std::string> ArmCollisionWorld::tip_links() const {
+  std::vector<std::string> names;
+  for (const auto& link : impl_->links)
+    if (link.rigid_with_tip) names.push_back(link.name);
+  return names;
 }
 
 std::vector<std::pair<std::string, std::string>> ArmCollisionWorld::self_pairs() const {

@@ -103,6 +103,17 @@ class ArmCollisionWorld {
   /// Throws like check().
   std::size_t first_contact(const std::vector<Eigen::VectorXd>& qs) const;
 
+  /// The links rigid with the arm's tip (no arm joint between them and it: a gripper's
+  /// housing and fingers, with their joints at the values given at construction) placed with
+  /// the tip at X_BaseTip, against the boxes and the points, with FCL's exact shapes - no
+  /// joint values needed. check(q) finds the same contacts for these links at every q whose
+  /// tip is at X_BaseTip, so a hand in contact here rules out every IK solution for it
+  /// (check_reach asks this before solving any). Not checked: self-collision, which depends
+  /// on q. Thread-safe like check().
+  ContactReport check_tip_links(const Eigen::Isometry3d& X_BaseTip) const;
+  /// The names of the links check_tip_links() places.
+  std::vector<std::string> tip_links() const;
+
   /// Link pairs checked for self-collision: an arm link with a robot link three or more
   /// moving joints away (collision_pairs.hpp) and not in contact at the arm's zero
   /// configuration.

@@ -80,6 +80,18 @@ std::optional<Eigen::VectorXd> free_pregrasp(const KinematicChain& arm,
   return found;
 }
 
+// Whether the hand alone - the links rigid with the arm's tip - meets the scene at the grasp
+// or at the pre-grasp: then every IK solution there is in collision, and none need be solved.
+std::optional<Reach> hand_in_contact(const ArmCollisionWorld& world,
+                                     const Eigen::Isometry3d& X_BaseHand,
+                                     const Eigen::Isometry3d& X_BasePreGrasp) {
+  if (const ContactReport c = world.check_tip_links(X_BaseHand); !c.free())
+    return Reach{ReachStatus::kInCollisionAtGrasp, {}, {}, c.str()};
+  if (const ContactReport c = world.check_tip_links(X_BasePreGrasp); !c.free())
+    return Reach{ReachStatus::kInCollisionAtPreGrasp, {}, {}, c.str()};
+  return std::nullopt;
+}
+
 }  // namespace
 
 const char* to_string(ReachSearch search) {
@@ -109,6 +121,9 @@ Reach check_reach(const KinematicChain& arm, const ArmCollisionWorld& world,
   if (!(options.pregrasp_m >= 0.0) || options.grasp_solutions < 1)
     throw Error("reach check: pregrasp_m must be >= 0 and grasp_solutions at least 1");
   const Eigen::Isometry3d X_BasePreGrasp = pregrasp_of(X_BaseHand, options.pregrasp_m);
+  const bool exhaustive = options.search == ReachSearch::kExhaustive;
+  if (!exhaustive)
+    if (auto contact = hand_in_contact(world, X_BaseHand, X_BasePreGrasp)) return *contact;
   Reach reach;  // kNoIkAtGrasp until a solution is found
   // One grasp solution: whether to search on.
   const auto try_grasp = [&](const Eigen::VectorXd& q) {
@@ -126,12 +141,15 @@ Reach check_reach(const KinematicChain& arm, const ArmCollisionWorld& world,
   };
   IkOptions at_grasp = options.ik;
   at_grasp.max_solutions = options.grasp_solutions;
-  if (options.search == ReachSearch::kExhaustive) {
-    for (const Eigen::VectorXd& q : solve_ik(arm, X_BaseHand, q_seed, at_grasp).solutions)
-      if (!try_grasp(q)) break;
-  } else {
+  if (!exhaustive) {
     solve_ik(arm, X_BaseHand, q_seed, at_grasp, try_grasp);
+    return reach;
   }
+  // The baseline solves first and asks about the hand last, for the same status.
+  for (const Eigen::VectorXd& q : solve_ik(arm, X_BaseHand, q_seed, at_grasp).solutions)
+    if (!try_grasp(q)) break;
+  if (reach.status != ReachStatus::kReachable)
+    if (auto contact = hand_in_contact(world, X_BaseHand, X_BasePreGrasp)) return *contact;
   return reach;
 }
 

@@ -67,11 +67,14 @@ struct Reach {
 /// hand axis reversed): the fingers swap places, the wrist stands elsewhere.
 Eigen::Isometry3d half_turned(const Eigen::Isometry3d& X_BaseHand);
 
-/// Tries up to `grasp_solutions` distinct IK solutions at the grasp (from `q_seed`), in the
-/// order IK finds them; for each free one, solves the pre-grasp from it (as many solutions)
-/// and takes a free one (`options.search`). Returns the first pair that is free, else the
-/// status of the attempt that came farthest (pre-grasp statuses before grasp ones). Throws
-/// antipode::Error for a seed or target IK refuses, or invalid options.
+/// First the hand alone (ArmCollisionWorld::check_tip_links): a hand in contact at the grasp
+/// is kInCollisionAtGrasp, at the pre-grasp kInCollisionAtPreGrasp, whatever IK would find
+/// (kExhaustive asks this last, after its IK, for the same status). Then tries up to
+/// `grasp_solutions` distinct IK solutions at the grasp (from `q_seed`), in the order IK finds
+/// them; for each free one, solves the pre-grasp from it (as many solutions) and takes a free
+/// one (`options.search`). Returns the first pair that is free, else the status of the
+/// attempt that came farthest (pre-grasp statuses before grasp ones). Throws antipode::Error
+/// for a seed or target IK refuses, or invalid options.
 Reach check_reach(const KinematicChain& arm, const ArmCollisionWorld& world,
                   const Eigen::Isometry3d& X_BaseHand, const Eigen::VectorXd& q_seed,
                   const ReachOptions& options = {});

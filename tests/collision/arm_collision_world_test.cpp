@@ -1,10 +1,14 @@
 // The collision world of Baxter's right arm: which link pairs it checks, known free and
 // self-colliding configurations, boxes and observed points in the way.
 
+#include <algorithm>
+#include <cmath>
 #include <string>
+#include <vector>
 
 #include <gtest/gtest.h>
 
+#include "antipode/core/random.hpp"
 #include "antipode/robot/robot_model.hpp"
 #include "arm_collision_world.hpp"
 #include "support/error_of.hpp"
@@ -100,6 +104,65 @@ TEST(ArmCollisionWorld, ObservedPointsAtTheGripperCollide) {
   EXPECT_TRUE(world.check(kNeutral).free());
 }
 
+// The links rigid with the tip are those below the arm's last joint (Baxter's w2).
+TEST(ArmCollisionWorld, TheTipLinksAreTheLinksBelowTheLastArmJoint) {
+  EXPECT_EQ(right_arm_world().tip_links(),
+            (std::vector<std::string>{"right_gripper_base", "right_gripper_l_finger",
+                                      "right_gripper_r_finger", "right_hand", "right_wrist"}));
+}
+
+// check_tip_links(X) against check(q) at random q with its tip at X, in a world of a table
+// and a block of points in front of the robot: whenever the hand alone meets the scene, so
+// does the arm (the pre-IK rule is sound); whenever check(q)'s first contact is a tip link's
+// with the scene, check_tip_links reports the same contact.
+struct Agreement {
+  int hand_contacts = 0;  // configurations whose hand alone meets the scene
+  int first_at_hand = 0;  // configurations whose first contact is a tip link's with the scene
+};
+
+void expect_tip_links_agree(const RobotModel& robot, const std::string& tip, Agreement* seen) {
+  const KinematicChain arm = robot.chain(robot.root_link(), tip);
+  ArmCollisionWorld world(robot, arm);
+  Eigen::Isometry3d X_BaseTable = Eigen::Isometry3d::Identity();
+  X_BaseTable.translation() = Eigen::Vector3d(0.6, 0.0, -0.35);
+  world.add_box("table", X_BaseTable, Eigen::Vector3d(0.8, 1.2, 0.05));
+  std::vector<Eigen::Vector3f> points;
+  for (float x = 0.35f; x <= 0.75f; x += 0.02f)
+    for (float y = -0.3f; y <= 0.3f; y += 0.02f)
+      for (float z = -0.3f; z <= 0.0f; z += 0.1f) points.emplace_back(x, y, z);
+  world.set_points(points, 0.01);
+  RandomStream random(7);
+  for (int i = 0; i < 3000; ++i) {
+    const Eigen::VectorXd q = arm.random_configuration(random);
+    const ContactReport hand = world.check_tip_links(arm.forward(q));
+    const ContactReport whole = world.check(q);
+    if (!hand.free()) {
+      ++seen->hand_contacts;
+      EXPECT_FALSE(whole.free()) << robot.name() << " " << hand.str();
+    }
+    const auto& tips = world.tip_links();
+    if (whole.kind == ContactReport::Kind::kEnvironment &&
+        std::find(tips.begin(), tips.end(), whole.link) != tips.end()) {
+      ++seen->first_at_hand;
+      EXPECT_EQ(hand.str(), whole.str()) << robot.name();
+    }
+  }
+}
+
+TEST(ArmCollisionWorld, TheHandAloneFindsTheArmsContactsOfItsLinks) {
+  for (const char* name : {"baxter/baxter.urdf", "panda/panda.urdf", "ur5e/ur5e.urdf"}) {
+    const RobotModel robot =
+        RobotModel::load(std::string(ANTIPODE_TEST_SOURCE_DIR) + "/robots/" + name);
+    const std::string tip = robot.has_link("right_gripper") ? "right_gripper"
+                            : robot.has_link("panda_grasp") ? "panda_grasp"
+                                                            : "ur5e_grasp";
+    Agreement seen;
+    expect_tip_links_agree(robot, tip, &seen);
+    EXPECT_GE(seen.hand_contacts, 100) << name << ": too few hand contacts to test";
+    EXPECT_GE(seen.first_at_hand, 50) << name << ": too few first contacts at the hand to test";
+  }
+}
+
 TEST(ArmCollisionWorld, BadInputIsAnError) {
   EXPECT_NE(
       error_of([] {
@@ -120,6 +183,10 @@ TEST(ArmCollisionWorld, BadInputIsAnError) {
             }).find("box 'flat' needs positive sizes"),
             std::string::npos);
   EXPECT_NE(error_of([&] { world.check(Eigen::VectorXd::Zero(3)); }).find("3 joint values"),
+            std::string::npos);
+  Eigen::Isometry3d nan = Eigen::Isometry3d::Identity();
+  nan.translation().x() = std::nan("");
+  EXPECT_NE(error_of([&] { world.check_tip_links(nan); }).find("tip pose must be finite"),
             std::string::npos);
 }
 

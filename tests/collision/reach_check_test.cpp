@@ -120,17 +120,17 @@ TEST(ReachCheck, OverTheIsolationRegionFromAboveAndFromTheNearSideOnly) {
 
 // The search written out plainly, as the reference: every IK solution at the grasp; for each
 // free one in turn, every pre-grasp solution from it, nearest first; the first free pair.
+// Without one, a hand in contact at the grasp or the pre-grasp says why before IK does.
 Reach reference_reach(const KinematicChain& arm, const ArmCollisionWorld& world,
                       const Eigen::Isometry3d& X) {
   IkOptions ik;
   ik.max_solutions = 12;
   const IkResult grasp = solve_ik(arm, X, arm.mid_range(), ik);
   Reach reach;
-  if (grasp.solutions.empty()) return reach;
   Eigen::Isometry3d pre_pose = X;
   pre_pose.translation() -= 0.10 * X.linear().col(0);
   ik.iterations_per_descent = 100;
-  reach.status = ReachStatus::kInCollisionAtGrasp;
+  if (!grasp.solutions.empty()) reach.status = ReachStatus::kInCollisionAtGrasp;
   for (const Eigen::VectorXd& q : grasp.solutions) {
     if (!world.check(q).free()) continue;
     IkResult pre = solve_ik(arm, pre_pose, q, ik);
@@ -145,6 +145,11 @@ Reach reference_reach(const KinematicChain& arm, const ArmCollisionWorld& world,
       reach.status = ReachStatus::kInCollisionAtPreGrasp;
     }
   }
+  // The hand in contact at the grasp, or at the pre-grasp, is the reason first.
+  if (const ContactReport c = world.check_tip_links(X); !c.free())
+    return {ReachStatus::kInCollisionAtGrasp, {}, {}, c.str()};
+  if (const ContactReport c = world.check_tip_links(pre_pose); !c.free())
+    return {ReachStatus::kInCollisionAtPreGrasp, {}, {}, c.str()};
   return reach;
 }
 
