@@ -10,9 +10,10 @@
 //
 // Why not orocos-kdl's solvers: ChainJntToJacSolver re-expresses the whole Jacobian at each
 // segment (quadratic in the joints) and the IK step also ran the FK solver and sized Eigen's
-// dynamic temporaries. An IK step with this pass costs 0.68 us on Baxter's arm, with KDL's
-// solvers 1.90 us (collision_bench's BM_Ik_WholeBudget rows). The answers agree with KDL's to
-// rounding (the test compares them at random configurations of three arms).
+// dynamic temporaries. An IK step with this pass costs 1.15 us on Baxter's arm, with KDL's
+// solvers 3.79 us (collision_bench's BM_Ik_WholeBudget rows, docs/results.md's machine). The
+// answers agree with KDL's to rounding (the test compares them at random configurations of three
+// arms).
 //
 // Frames and units: the chain's base frame; m and rad. The Jacobian maps joint velocities
 // (rad/s, m/s) to the tip origin's linear velocity then the angular velocity, both in the
