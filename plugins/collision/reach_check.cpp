@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <optional>
+#include <string>
 
 #include "antipode/core/error.hpp"
 
@@ -80,6 +81,20 @@ std::optional<Eigen::VectorXd> free_pregrasp(const KinematicChain& arm,
   return found;
 }
 
+// What solve_ik refuses, refused before the hand's check so that every search throws alike.
+void check_ik_inputs(const KinematicChain& arm, const Eigen::Isometry3d& X_BaseHand,
+                     const Eigen::VectorXd& q_seed, const IkOptions& ik) {
+  ik.validate();
+  if (static_cast<std::size_t>(q_seed.size()) != arm.dof() || !q_seed.allFinite() ||
+      !arm.within_limits(q_seed, 1e-9))
+    throw Error("IK seed: " + std::to_string(arm.dof()) +
+                " finite joint values within the limits are needed");
+  const Eigen::Matrix3d r = X_BaseHand.linear();
+  if (!X_BaseHand.matrix().allFinite() ||
+      !(r.transpose() * r).isApprox(Eigen::Matrix3d::Identity(), 1e-6) || r.determinant() < 0)
+    throw Error("IK target: not a finite rigid transform");
+}
+
 // Whether the hand alone - the links rigid with the arm's tip - meets the scene at the grasp
 // or at the pre-grasp: then every IK solution there is in collision, and none need be solved.
 std::optional<Reach> hand_in_contact(const ArmCollisionWorld& world,
@@ -122,6 +137,7 @@ Reach check_reach(const KinematicChain& arm, const ArmCollisionWorld& world,
     throw Error("reach check: pregrasp_m must be >= 0 and grasp_solutions at least 1");
   const Eigen::Isometry3d X_BasePreGrasp = pregrasp_of(X_BaseHand, options.pregrasp_m);
   const bool exhaustive = options.search == ReachSearch::kExhaustive;
+  check_ik_inputs(arm, X_BaseHand, q_seed, options.ik);
   if (!exhaustive)
     if (auto contact = hand_in_contact(world, X_BaseHand, X_BasePreGrasp)) return *contact;
   Reach reach;  // kNoIkAtGrasp until a solution is found
@@ -145,11 +161,11 @@ Reach check_reach(const KinematicChain& arm, const ArmCollisionWorld& world,
     solve_ik(arm, X_BaseHand, q_seed, at_grasp, try_grasp);
     return reach;
   }
-  // The baseline solves first and asks about the hand last, for the same status.
+  // The baseline solves first and asks about the hand last; the hand's answer stands, as in
+  // the other searches (it differs from the IK's only for a contact within IK's tolerance).
   for (const Eigen::VectorXd& q : solve_ik(arm, X_BaseHand, q_seed, at_grasp).solutions)
     if (!try_grasp(q)) break;
-  if (reach.status != ReachStatus::kReachable)
-    if (auto contact = hand_in_contact(world, X_BaseHand, X_BasePreGrasp)) return *contact;
+  if (auto contact = hand_in_contact(world, X_BaseHand, X_BasePreGrasp)) return *contact;
   return reach;
 }
 

@@ -23,9 +23,11 @@ namespace antipode::collision {
 enum class ReachStatus {
   kReachable,
   kNoIkAtGrasp,            ///< no joint values within the limits put the hand there
-  kInCollisionAtGrasp,     ///< every solution found at the grasp is in collision
+  kInCollisionAtGrasp,     ///< the hand alone meets the scene at the grasp (whatever IK would
+                           ///< find), or every solution found at the grasp is in collision
   kNoIkAtPreGrasp,         ///< no solution near a free grasp one reaches the pre-grasp
-  kInCollisionAtPreGrasp,  ///< the pre-grasp solutions are in collision
+  kInCollisionAtPreGrasp,  ///< the hand alone meets the scene at the pre-grasp (whatever IK
+                           ///< would find), or the pre-grasp solutions are in collision
 };
 
 const char* to_string(ReachStatus status);
@@ -69,9 +71,9 @@ Eigen::Isometry3d half_turned(const Eigen::Isometry3d& X_BaseHand);
 
 /// First the hand alone (ArmCollisionWorld::check_tip_links): a hand in contact at the grasp
 /// is kInCollisionAtGrasp, at the pre-grasp kInCollisionAtPreGrasp, whatever IK would find
-/// (kExhaustive asks this last, after its IK, for the same status). Then tries up to
-/// `grasp_solutions` distinct IK solutions at the grasp (from `q_seed`), in the order IK finds
-/// them; for each free one, solves the pre-grasp from it (as many solutions) and takes a free
+/// (kExhaustive asks this last, after its IK, and its answer stands: the same status). Then tries
+/// up to `grasp_solutions` distinct IK solutions at the grasp (from `q_seed`), in the order IK
+/// finds them; for each free one, solves the pre-grasp from it (as many solutions) and takes a free
 /// one (`options.search`). Returns the first pair that is free, else the status of the
 /// attempt that came farthest (pre-grasp statuses before grasp ones). Throws antipode::Error
 /// for a seed or target IK refuses, or invalid options.

@@ -9,6 +9,7 @@
 //     near a wall only along it). Each grasp is checked as the selector checks it (check_reach:
 //     collision-free IK at the grasp and at the pre-grasp 10 cm back, from home), the hand half
 //     turned too.
+#include <algorithm>
 #include <cmath>
 
 #include <yaml-cpp/yaml.h>
@@ -120,13 +121,17 @@ struct Arm {
   Eigen::VectorXd home;
 };
 
-// Whether the hand alone touched the scene (not itself or the arm: that is self-collision).
-bool hand_contact(const Reach& reach, const std::vector<std::string>& hand_links) {
+// Whether only the hand keeps the arm from the grasp: the hand alone touches the scene (not
+// itself or the arm: that is self-collision) where the arm has joint values that put it
+// (check_reach reports the hand's contact before solving any IK).
+bool hand_contact(const Reach& reach, const std::vector<std::string>& hand_links, const Arm& arm,
+                  const Eigen::Isometry3d& X) {
   if (reach.status != ReachStatus::kInCollisionAtGrasp) return false;
   if (reach.detail.rfind("collision: ", 0) != 0) return false;
-  for (const std::string& link : hand_links)
-    if (reach.detail.find(": " + link + " with ") != std::string::npos) return true;
-  return false;
+  const bool hand = std::any_of(hand_links.begin(), hand_links.end(), [&](const std::string& l) {
+    return reach.detail.find(": " + l + " with ") != std::string::npos;
+  });
+  return hand && solve_ik(arm.chain, X, arm.home).status == IkStatus::kSolved;
 }
 
 Outcome try_grasp(ReachGrid& grid, const Arm& arm, const Eigen::Isometry3d& X) {
@@ -134,11 +139,11 @@ Outcome try_grasp(ReachGrid& grid, const Arm& arm, const Eigen::Isometry3d& X) {
   ReachOptions options;  // whether, not how: as the selector
   options.search = ReachSearch::kFirstFree;
   Reach reach = check_reach(arm.chain, arm.world, X, arm.home, options);
-  bool hand_only = hand_contact(reach, arm.hand_links);
+  bool hand_only = hand_contact(reach, arm.hand_links, arm, X);
   if (reach.status != ReachStatus::kReachable) {
     const Reach other = check_reach(arm.chain, arm.world, half_turned(X), arm.home, options);
     if (other.status == ReachStatus::kReachable) reach = other;
-    hand_only = hand_only && hand_contact(other, arm.hand_links);
+    hand_only = hand_only && hand_contact(other, arm.hand_links, arm, half_turned(X));
   }
   if (reach.status == ReachStatus::kReachable) {
     ++grid.reachable;

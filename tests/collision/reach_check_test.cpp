@@ -214,6 +214,58 @@ TEST(ReachCheck, SearchNamesReadAndAnUnknownOneIsRefused) {
   }
 }
 
+// The hand alone decides before any IK: a grasp beyond the arm whose hand is inside a crate
+// is in collision at the grasp, with the crate named, in every search; a grasp the arm takes
+// whose hand meets a crate only at the pre-grasp is in collision at the pre-grasp.
+TEST(ReachCheck, AHandInContactIsInCollisionWhateverIkWouldFind) {
+  const KinematicChain arm = baxter().chain("base", "right_gripper");
+  const Eigen::Isometry3d beyond = hand_at({2.0, -0.2, 0.0}, Eigen::Vector3d::UnitX());
+  const Eigen::Isometry3d above = hand_at({0.72, -0.2, -0.17}, -Eigen::Vector3d::UnitZ());
+  ReachOptions options;
+  options.pregrasp_m = 0.5;
+  Eigen::Isometry3d pregrasp = above;
+  pregrasp.translation().z() += options.pregrasp_m;
+  ArmCollisionWorld world(baxter(), arm);
+  world.add_box("crate", beyond, Eigen::Vector3d(0.3, 0.3, 0.3));
+  ASSERT_EQ(check_reach(arm, world, above, arm.mid_range(), options).status,
+            ReachStatus::kReachable);
+  // 5 cm up the hand from its grasp frame: inside the housing at the pre-grasp only.
+  world.add_box("crate", box_at(0.72, -0.2, pregrasp.translation().z() + 0.05),
+                Eigen::Vector3d(0.04, 0.04, 0.04));
+  ASSERT_TRUE(world.check_tip_links(above).free());
+  ASSERT_FALSE(world.check_tip_links(pregrasp).free());
+  for (ReachSearch search :
+       {ReachSearch::kExhaustive, ReachSearch::kNearestPreGrasp, ReachSearch::kFirstFree}) {
+    options.search = search;
+    const Reach far = check_reach(arm, world, beyond, arm.mid_range(), options);
+    EXPECT_EQ(far.status, ReachStatus::kInCollisionAtGrasp) << to_string(search);
+    EXPECT_NE(far.detail.find("with crate"), std::string::npos) << far.detail;
+    const Reach blocked = check_reach(arm, world, above, arm.mid_range(), options);
+    EXPECT_EQ(blocked.status, ReachStatus::kInCollisionAtPreGrasp) << to_string(search);
+    EXPECT_NE(blocked.detail.find("with crate"), std::string::npos) << blocked.detail;
+    EXPECT_EQ(blocked.q_grasp.size(), 0) << to_string(search);
+  }
+}
+
+// Bad input throws in every search, the hand's check notwithstanding.
+TEST(ReachCheck, EverySearchRefusesWhatIkRefuses) {
+  const KinematicChain arm = baxter().chain("base", "right_gripper");
+  const Eigen::Isometry3d beyond = hand_at({2.0, -0.2, 0.0}, Eigen::Vector3d::UnitX());
+  ArmCollisionWorld world(baxter(), arm);
+  world.add_box("crate", beyond, Eigen::Vector3d(0.3, 0.3, 0.3));
+  Eigen::Isometry3d sheared = beyond;
+  sheared.linear()(0, 1) = 0.5;
+  for (ReachSearch search :
+       {ReachSearch::kExhaustive, ReachSearch::kNearestPreGrasp, ReachSearch::kFirstFree}) {
+    ReachOptions options;
+    options.search = search;
+    EXPECT_THROW(check_reach(arm, world, beyond, Eigen::VectorXd::Zero(3), options), Error);
+    EXPECT_THROW(check_reach(arm, world, sheared, arm.mid_range(), options), Error);
+    options.ik.max_solutions = 0;
+    EXPECT_THROW(check_reach(arm, world, beyond, arm.mid_range(), options), Error);
+  }
+}
+
 TEST(ReachCheck, AGraspBeyondTheArmHasNoIk) {
   const KinematicChain arm = baxter().chain("base", "right_gripper");
   const ArmCollisionWorld world(baxter(), arm);

@@ -18,7 +18,7 @@
 ///   reach benchmark compares with.
 /// - kDampedLeastSquaresKdl: the damped solver with each step's tip pose and Jacobian from
 ///   orocos-kdl's forward-kinematics and Jacobian solvers, and without the reach bound: the
-///   baseline the reach benchmarks compare the damped solver's kinematics with (about 2.8
+///   baseline the reach benchmarks compare the damped solver's kinematics with (about three
 ///   times the cost per step on Baxter's arm). The two passes agree to rounding; rounding
 ///   can change which of two nearly equal steps a descent takes, so the solutions the two
 ///   find can differ.
