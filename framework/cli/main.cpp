@@ -237,7 +237,8 @@ void add_bench_reach(CLI::App& bench, antipode::evaluation::ReachBenchOptions& o
       ->capture_default_str();
   reach->add_option("--problem-scenes", o.problem_scenes, "Planning scene files")->delimiter(',');
   reach->add_flag("--side-by-side", o.side_by_side,
-                  "Plan every problem also with FCL alone (planner.collision=exact)");
+                  "Plan every problem also with FCL alone, segments in order "
+                  "(planner.collision=exact, planner.segment_order=in_order)");
   reach->add_option("--report", o.report_path, "Write the report as JSON");
 }
 

@@ -415,10 +415,12 @@ std::size_t ArmCollisionWorld::first_contact(const std::vector<Eigen::VectorXd>&
     for (int l = 0; l < count; ++l) lanes[l] = qs[first + std::size_t(l)].data();
     const std::uint32_t flagged = impl_->spheres->contacts_batch(lanes, count, impl_->kernel_boxes,
                                                                  impl_->grid, impl_->points_radius);
+    // A flagged state is confirmed as check() confirms it: FCL only on the link pairs and the
+    // links near the scene whose spheres touch (not every pair, as check_exact() would).
     for (int l = 0; l < count; ++l) {
       if (!(flagged >> l & 1U)) continue;
       if (impl_->options.mode == CheckMode::kSpheres ||
-          !impl_->check_exact(qs[first + std::size_t(l)]).free())
+          !impl_->check_with_spheres(qs[first + std::size_t(l)]).free())
         return first + std::size_t(l);
     }
   }

@@ -96,8 +96,8 @@ class ArmCollisionWorld {
   ContactReport check(const Eigen::VectorXd& q) const;
 
   /// The index of the first of `qs` (in their order) in contact, or qs.size() when every one
-  /// is free, with the spheres testing 16 configurations at a time (FCL confirming, in order,
-  /// the ones they flag in kSpheresThenExact mode): check()'s answers in kExact and
+  /// is free, with the spheres testing 16 configurations at a time (in kSpheresThenExact mode
+  /// check() confirming, in order, the ones they flag): check()'s answers in kExact and
   /// kSpheresThenExact mode; in kSpheres mode as conservative as check(), though a state at
   /// the edge of a sphere may come out otherwise (the batch computes its sines apart).
   /// Throws like check().

@@ -5,9 +5,11 @@
 
 #include <gtest/gtest.h>
 
+#include "antipode/core/random.hpp"
 #include "antipode/robot/robot_model.hpp"
 #include "arm_collision_world.hpp"
 #include "arm_planner.hpp"
+#include "collision_options.hpp"
 #include "support/error_of.hpp"
 
 namespace antipode::planning {
@@ -81,6 +83,61 @@ TEST(ArmPlanner, TheSameSeedGivesTheSamePath) {
   ASSERT_EQ(first.status, PlanStatus::kSolved);
   ASSERT_EQ(first.path.size(), second.path.size());
   for (std::size_t i = 0; i < first.path.size(); ++i) EXPECT_EQ(first.path[i], second.path[i]);
+}
+
+// Whether a segment is free does not depend on the order of its states, so checking them as a
+// rake or in order gives the same answers, the same search and the same path.
+TEST(ArmPlanner, ARakeAndInOrderGiveTheSamePath) {
+  Baxter b;
+  block_the_straight_motion(b);
+  for (std::uint64_t seed : {3, 7, 11}) {
+    ArmPlanningProblem p = problem(b, seed);
+    const ArmPlan rake = plan_arm_motion(p);
+    p.rake_segments = false;
+    const ArmPlan in_order = plan_arm_motion(p);
+    ASSERT_EQ(rake.status, PlanStatus::kSolved);
+    ASSERT_EQ(in_order.status, PlanStatus::kSolved);
+    ASSERT_EQ(rake.path.size(), in_order.path.size()) << "seed " << seed;
+    for (std::size_t i = 0; i < rake.path.size(); ++i) EXPECT_EQ(rake.path[i], in_order.path[i]);
+  }
+  EXPECT_FALSE(segment_is_free(b.world, kNeutral, kReach, 0.005, false));
+  EXPECT_FALSE(segment_is_free(b.world, kNeutral, kReach, 0.005, true));
+}
+
+// The same answer for every motion, checked as a rake or in order, in each check mode, with
+// boxes and points in the arm's way: 300 random motions, half of them blocked somewhere.
+TEST(ArmPlanner, ARakeAndInOrderCallTheSameMotionsFree) {
+  const RobotModel robot =
+      RobotModel::load(std::string(ANTIPODE_TEST_SOURCE_DIR) + "/robots/baxter/baxter.urdf");
+  const KinematicChain arm = robot.chain("base", "right_gripper");
+  std::vector<Eigen::Vector3f> points;
+  points.reserve(3000);
+  RandomStream scatter(5);
+  for (int i = 0; i < 3000; ++i)  // a slab of points in front of the robot
+    points.emplace_back(float(scatter.uniform(0.5, 0.9)), float(scatter.uniform(-0.6, 0.2)),
+                        float(scatter.uniform(-0.1, 0.0)));
+  for (const collision::CheckMode mode :
+       {collision::CheckMode::kExact, collision::CheckMode::kSpheresThenExact,
+        collision::CheckMode::kSpheres}) {
+    collision::CollisionOptions options;
+    options.mode = mode;
+    ArmCollisionWorld world(robot, arm, {}, options);
+    world.add_box("obstacle", Eigen::Isometry3d(Eigen::Translation3d(0.7, -0.5, 0.3)),
+                  Eigen::Vector3d(0.2, 0.2, 0.2));
+    world.set_points(points, 0.01, {});
+    RandomStream random(9);
+    int free = 0;
+    for (int i = 0; i < 300; ++i) {
+      const Eigen::VectorXd a = arm.random_configuration(random);
+      const Eigen::VectorXd b = arm.random_configuration(random);
+      const bool rake = segment_is_free(world, a, b, 0.05, true);
+      ASSERT_EQ(rake, segment_is_free(world, a, b, 0.05, false))
+          << collision::to_string(mode) << ", motion " << i;
+      free += rake ? 1 : 0;
+    }
+    EXPECT_GT(free, 10) << collision::to_string(mode);
+    EXPECT_LT(free, 290) << collision::to_string(mode);
+  }
 }
 
 TEST(ArmPlanner, AnInvalidStartOrGoalIsAStatusWithTheContact) {

@@ -140,6 +140,10 @@ TEST(OmplPlanner, BadParametersNameTheirKey) {
             std::string::npos);
   EXPECT_NE(error("robot: " + kRobot + "\nplaner: RRT").find("did you mean 'planner'?"),
             std::string::npos);
+  EXPECT_EQ(error("robot: " + kRobot + "\nsegment_order: in_order"), "");
+  EXPECT_NE(error("robot: " + kRobot + "\nsegment_order: random")
+                .find("'segment_order' must be rake or in_order, got 'random'"),
+            std::string::npos);
 }
 
 }  // namespace

@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <atomic>
 #include <chrono>
-#include <cmath>
 #include <memory>
 #include <optional>
 #include <string>
@@ -23,6 +22,8 @@
 #include "antipode/core/error.hpp"
 #include "batched_motion_validator.hpp"
 #include "path_shortcut.hpp"
+#include "segment_states.hpp"
+#include "sphere_kernels.hpp"
 
 namespace antipode::planning {
 
@@ -129,10 +130,9 @@ const char* to_string(PlanStatus status) {
 }
 
 bool segment_is_free(const collision::ArmCollisionWorld& world, const Eigen::VectorXd& a,
-                     const Eigen::VectorXd& b, double resolution_rad) {
-  const int steps = std::max(1, static_cast<int>(std::ceil((b - a).norm() / resolution_rad)));
+                     const Eigen::VectorXd& b, double resolution_rad, bool rake) {
   std::vector<Eigen::VectorXd> states;
-  for (int i = 0; i <= steps; ++i) states.push_back(a + (b - a) * (double(i) / steps));
+  segment_states(a, b, resolution_rad, true, rake ? collision::kBatchLanes : 0, states);
   return world.first_contact(states) == states.size();
 }
 
@@ -162,7 +162,7 @@ ArmPlan plan_arm_motion(const ArmPlanningProblem& p) {
   setup.getSpaceInformation()->setStateValidityCheckingResolution(p.resolution_rad /
                                                                   space->getMaximumExtent());
   setup.getSpaceInformation()->setMotionValidator(std::make_shared<BatchedMotionValidator>(
-      setup.getSpaceInformation(), world, p.resolution_rad, checks));
+      setup.getSpaceInformation(), world, p.resolution_rad, p.rake_segments, checks));
   setup.setPlanner(make_planner(p.planner, setup.getSpaceInformation()));
   ob::ScopedState<> start(space), goal(space);
   for (std::size_t i = 0; i < dof; ++i) {
@@ -185,7 +185,7 @@ ArmPlan plan_arm_motion(const ArmPlanningProblem& p) {
   for (const ob::State* s : setup.getSolutionPath().getStates())
     plan.path.push_back(to_eigen(s, dof));
   const Clock::time_point t1 = Clock::now();
-  if (p.shorten) plan.path = shortcut_path(world, plan.path, p.resolution_rad);
+  if (p.shorten) plan.path = shortcut_path(world, plan.path, p.resolution_rad, p.rake_segments);
   plan.shortening_s = seconds_since(t1);
   plan.status = PlanStatus::kSolved;
   return plan;

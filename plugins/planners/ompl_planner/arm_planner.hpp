@@ -31,9 +31,12 @@ struct ArmPlanningProblem {
   std::string planner = "RRTConnect";  ///< RRTConnect, RRT, KPIECE1, PRM or EST
   double time_limit_s = 1.0;
   double resolution_rad = 0.02;  ///< joint-space distance between checked states
-  std::uint64_t seed = 0;        ///< the planner's samples
-  bool shorten = true;           ///< shortcut the path (deterministically)
-  StopToken stop;                ///< ends the search early (status kCancelled)
+  /// Check a motion's states as a rake (segment_states.hpp), or in order (false, the
+  /// baseline): the same answers, the paths the same.
+  bool rake_segments = true;
+  std::uint64_t seed = 0;  ///< the planner's samples
+  bool shorten = true;     ///< shortcut the path (deterministically)
+  StopToken stop;          ///< ends the search early (status kCancelled)
 };
 
 enum class PlanStatus {
@@ -53,8 +56,10 @@ struct ArmPlan {
   std::vector<Eigen::VectorXd> path;  ///< start ... goal, when solved
   std::string detail;                 ///< the contact that makes the start or goal invalid
   double planning_s = 0.0;            ///< OMPL's search
-  long collision_checks = 0;          ///< states checked during the search
-  double shortening_s = 0.0;          ///< the shortcutting after it
+  /// States checked during the search: each motion's up to its first contact, in the order
+  /// they were checked.
+  long collision_checks = 0;
+  double shortening_s = 0.0;  ///< the shortcutting after it
 };
 
 /// Plans from `problem.start` to `problem.goal`. Throws antipode::Error for a problem
@@ -63,8 +68,9 @@ struct ArmPlan {
 ArmPlan plan_arm_motion(const ArmPlanningProblem& problem);
 
 /// True when the straight joint-space segment from `a` to `b`, checked every `resolution_rad`
-/// (both ends included), is free in `world`.
+/// (both ends included), is free in `world`. Its states are checked as a rake, or in order
+/// when `rake` is false (segment_states.hpp); the answer is the same.
 bool segment_is_free(const collision::ArmCollisionWorld& world, const Eigen::VectorXd& a,
-                     const Eigen::VectorXd& b, double resolution_rad);
+                     const Eigen::VectorXd& b, double resolution_rad, bool rake = true);
 
 }  // namespace antipode::planning

@@ -1,10 +1,12 @@
 #include "batched_motion_validator.hpp"
 
 #include <algorithm>
-#include <cmath>
 #include <vector>
 
 #include <ompl/base/spaces/RealVectorStateSpace.h>
+
+#include "segment_states.hpp"
+#include "sphere_kernels.hpp"
 
 namespace antipode::planning {
 
@@ -12,27 +14,32 @@ namespace ob = ompl::base;
 
 BatchedMotionValidator::BatchedMotionValidator(const ob::SpaceInformationPtr& si,
                                                const collision::ArmCollisionWorld& world,
-                                               double resolution_rad, std::atomic<long>& checks)
-    : ob::MotionValidator(si), world_(world), resolution_rad_(resolution_rad), checks_(checks) {}
+                                               double resolution_rad, bool rake,
+                                               std::atomic<long>& checks)
+    : ob::MotionValidator(si),
+      world_(world),
+      resolution_rad_(resolution_rad),
+      rake_(rake),
+      checks_(checks) {}
 
 std::size_t BatchedMotionValidator::first_contact(const ob::State* s1, const ob::State* s2,
-                                                  std::size_t& steps) const {
+                                                  std::size_t lanes, std::size_t& steps) const {
   const auto* a = s1->as<ob::RealVectorStateSpace::StateType>();
   const auto* b = s2->as<ob::RealVectorStateSpace::StateType>();
   const auto dof = Eigen::Index(si_->getStateDimension());
   const Eigen::Map<const Eigen::VectorXd> qa(a->values, dof), qb(b->values, dof);
-  steps = std::size_t(std::max(1.0, std::ceil((qb - qa).norm() / resolution_rad_)));
-  thread_local std::vector<Eigen::VectorXd> states;
-  states.resize(steps);
-  for (std::size_t i = 0; i < steps; ++i)
-    states[i] = qa + (qb - qa) * (double(i + 1) / double(steps));
-  checks_ += long(steps);
-  return world_.first_contact(states);
+  thread_local std::vector<Eigen::VectorXd> states;  // reused, motion after motion
+  segment_states(qa, qb, resolution_rad_, false, lanes, states);
+  steps = states.size();
+  const std::size_t contact = world_.first_contact(states);
+  checks_ += long(std::min(contact + 1, steps));  // up to the first contact, in checking order
+  return contact;
 }
 
 bool BatchedMotionValidator::checkMotion(const ob::State* s1, const ob::State* s2) const {
   std::size_t steps = 0;
-  const bool free = first_contact(s1, s2, steps) == steps;
+  // Whether the segment is free does not depend on the order: check it as a rake.
+  const bool free = first_contact(s1, s2, rake_ ? collision::kBatchLanes : 0, steps) == steps;
   if (free)
     ++valid_;
   else
@@ -43,7 +50,7 @@ bool BatchedMotionValidator::checkMotion(const ob::State* s1, const ob::State* s
 bool BatchedMotionValidator::checkMotion(const ob::State* s1, const ob::State* s2,
                                          std::pair<ob::State*, double>& last_valid) const {
   std::size_t steps = 0;
-  const std::size_t contact = first_contact(s1, s2, steps);
+  const std::size_t contact = first_contact(s1, s2, 0, steps);  // in order: the first contact
   if (contact == steps) {
     ++valid_;
     return true;

@@ -28,6 +28,10 @@ OmplPlannerOptions read_options(const Parameters& p) {
   o.planner = p.get<std::string>("planner", o.planner);
   o.time_limit_s = p.get<double>("time_limit_s", o.time_limit_s);
   o.resolution_rad = p.get<double>("resolution_rad", o.resolution_rad);
+  const std::string order = p.get<std::string>("segment_order", "rake");
+  if (order != "rake" && order != "in_order")
+    p.fail("segment_order", "'segment_order' must be rake or in_order, got '" + order + "'");
+  o.rake_segments = order == "rake";
   o.ik_solutions = p.get<int>("ik_solutions", o.ik_solutions);
   o.speed_fraction = p.get<double>("speed_fraction", o.speed_fraction);
   o.approach.step_m = p.get<double>("approach_step_m", o.approach.step_m);
@@ -183,6 +187,7 @@ PlanningResult OmplPlanner::plan(const PlanningProblem& problem) const {
   search.planner = options_.planner;
   search.time_limit_s = problem.time_limit_s > 0.0 ? problem.time_limit_s : options_.time_limit_s;
   search.resolution_rad = options_.resolution_rad;
+  search.rake_segments = options_.rake_segments;
   search.seed = problem.seed;
   search.stop = problem.stop;
   const ArmPlan path = plan_arm_motion(search);

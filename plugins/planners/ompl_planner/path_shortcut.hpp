@@ -12,9 +12,10 @@
 namespace antipode::planning {
 
 /// The shortened path: a subsequence of `path` with the same ends whose segments are free
-/// (segment_is_free at `resolution_rad`). Paths of one or two waypoints come back unchanged.
+/// (segment_is_free at `resolution_rad`, as a rake unless `rake` is false: the same path).
+/// Paths of one or two waypoints come back unchanged.
 std::vector<Eigen::VectorXd> shortcut_path(const collision::ArmCollisionWorld& world,
                                            const std::vector<Eigen::VectorXd>& path,
-                                           double resolution_rad);
+                                           double resolution_rad, bool rake = true);
 
 }  // namespace antipode::planning

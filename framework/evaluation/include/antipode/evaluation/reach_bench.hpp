@@ -39,7 +39,8 @@ struct ReachBenchOptions {
       "scenes/planning/mbm_cage.yaml",           "scenes/planning/mbm_bookshelf_tall.yaml",
       "scenes/planning/mbm_bookshelf_thin.yaml", "scenes/planning/mbm_bookshelf_small.yaml"};
   /// Plan every problem (clutter scenes and planning scenes) twice: with the planner as the
-  /// tree sets it and with `collision: exact` (FCL alone), reported side by side.
+  /// tree sets it and with `collision: exact` (FCL alone) and `segment_order: in_order`,
+  /// reported side by side.
   bool side_by_side = false;
 };
 
