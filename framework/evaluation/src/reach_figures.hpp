@@ -27,6 +27,10 @@ bool has_goal(PlanningStatus s);
 /// shortcutting medians, states checked per second of search, and the statuses.
 nlohmann::ordered_json planning_summary(const std::vector<PlanFigures>& plans);
 
+/// The label of the side-by-side baseline planner's line (`--side-by-side`: FCL alone, each
+/// motion's states in order).
+inline constexpr const char* kBaselinePlannerLine = "  the same with FCL alone, segments in order";
+
 /// One line of those figures for standard output, after `label`.
 std::string planning_line(const std::string& label, const nlohmann::ordered_json& summary);
 

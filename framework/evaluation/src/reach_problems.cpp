@@ -46,8 +46,6 @@ Eigen::Isometry3d fixed_frame(const RobotModel& robot, const std::string& frame,
   return chain.forward(Eigen::VectorXd());
 }
 
-const char* const kBaselineLine = "  the same with FCL alone, segments in order";
-
 // The planners of a run: the tree's, and with `side_by_side` its twin with FCL alone, checking
 // each segment's states in order (the baseline).
 struct Planners {
@@ -147,7 +145,7 @@ nlohmann::ordered_json bench_planning_problems(const ReachBenchOptions& o) {
     s.update(planning_summary(run.plans));
     if (planners.exact) s["exact"] = planning_summary(run.exact_plans);
     std::cout << planning_line(std::filesystem::path(path).stem().string(), s) << "\n";
-    if (planners.exact) std::cout << planning_line(kBaselineLine, s["exact"]) << "\n";
+    if (planners.exact) std::cout << planning_line(kBaselinePlannerLine, s["exact"]) << "\n";
     out["scenes"].push_back(s);
     all.insert(all.end(), run.plans.begin(), run.plans.end());
     all_exact.insert(all_exact.end(), run.exact_plans.begin(), run.exact_plans.end());
@@ -156,7 +154,7 @@ nlohmann::ordered_json bench_planning_problems(const ReachBenchOptions& o) {
   std::cout << planning_line("all planning scenes", out["all"]) << "\n";
   if (planners.exact) {
     out["all"]["exact"] = planning_summary(all_exact);
-    std::cout << planning_line(kBaselineLine, out["all"]["exact"]) << "\n";
+    std::cout << planning_line(kBaselinePlannerLine, out["all"]["exact"]) << "\n";
   }
   return out;
 }

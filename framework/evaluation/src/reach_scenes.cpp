@@ -165,7 +165,7 @@ nlohmann::ordered_json bench_planning_scenes(const ReachBenchOptions& o) {
             << " arm states checked per second of search\n";
   std::cout << selection_line("  selection", out) << "\n";
   if (exact) {
-    std::cout << planning_line("  the same with FCL alone, segments in order", out["exact"]) << "\n"
+    std::cout << planning_line(kBaselinePlannerLine, out["exact"]) << "\n"
               << selection_line(
                      "  the baseline selection (FCL alone, every IK solution first, "
                      "orocos-kdl's kinematics, the octree point by point)",

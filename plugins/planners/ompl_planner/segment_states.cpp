@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numeric>
 
 namespace antipode::planning {
 
@@ -10,14 +11,17 @@ namespace {
 void fill_rake_order(std::size_t steps, std::size_t lanes, std::vector<std::size_t>& order) {
   order.clear();
   order.reserve(steps);
-  const std::size_t teeth = lanes == 0 ? 1 : std::min(lanes, steps);
-  if (teeth == 0) return;
+  const std::size_t teeth = std::min(lanes, steps);
+  if (teeth <= 1) {  // one tooth (or none): in order
+    order.resize(steps);
+    std::iota(order.begin(), order.end(), std::size_t(0));
+    return;
+  }
   const auto begin = [&](std::size_t t) { return t * steps / teeth; };  // tooth t's first
   const std::size_t longest = (steps + teeth - 1) / teeth;
   for (std::size_t back = 0; back < longest; ++back)
     for (std::size_t t = 0; t < teeth; ++t)
       if (begin(t) + back < begin(t + 1)) order.push_back(begin(t + 1) - 1 - back);
-  if (lanes == 0 || teeth == 1) std::reverse(order.begin(), order.end());  // one tooth: in order
 }
 
 }  // namespace
