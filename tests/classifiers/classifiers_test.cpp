@@ -147,6 +147,8 @@ TEST_F(ClassifiersTest, BadParametersAreLocatedErrors) {
             "tree.yaml:1:1: parameter 'max_angle_deg' must be in (0, 90], got 0");
   EXPECT_EQ(creation_error("antipodal_classifier", "normal_radius_m: -0.01"),
             "tree.yaml:1:1: parameter 'normal_radius_m' must be in (0, 0.1], got -0.01");
+  EXPECT_EQ(creation_error("antipodal_classifier", "contact_trim: 0.5"),
+            "tree.yaml:1:1: parameter 'contact_trim' must be in [0, 0.45], got 0.5");
   EXPECT_EQ(creation_error("antipodal_classifier", "min_neighbours: 5"),
             "tree.yaml:1:1: parameter 'min_neighbours' must be at least 9, got 5");
   EXPECT_EQ(creation_error("antipodal_classifier", "threads: -1"),

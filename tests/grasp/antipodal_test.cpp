@@ -1,3 +1,5 @@
+#include <algorithm>
+
 #include <gtest/gtest.h>
 
 #include "antipode/core/error.hpp"
@@ -130,6 +132,40 @@ TEST(AntipodalTest, ContactPatchesCountWhatTheFingersMeetFirst) {
       Eigen::Vector3d::Zero(), {kLeft, kRight});
   EXPECT_EQ(check(slab, hand_at(slab, kDown, Eigen::Vector3d::UnitX(), {0.0, 0.0, 0.06})).label,
             HandLabel::kPositive);
+}
+
+// A lone point a few millimetres off each face (sensor noise at a silhouette) is the farthest
+// point towards each finger: a patch measured from it misses the face behind it, and a
+// first contact at a quantile (contact_trim) finds the face again.
+TEST(AntipodalTest, ATrimmedFirstContactLooksPastLonePoints) {
+  Cloud cloud = seen_from(box({0.05, 0.05, 0.1}), Eigen::Vector3d::Zero(), {kLeft, kRight});
+  for (const double x : {-0.032, 0.032}) {
+    for (const double z : {0.03, 0.035, 0.04}) {
+      cloud.points_m.emplace_back(float(x), 0.0f, float(z));
+      if (!cloud.view_masks.empty()) cloud.view_masks.push_back(cloud.view_masks.front());
+    }
+  }
+  const Hand hand = box_hand(cloud);
+  ASSERT_GT(hand.closing_points.size(), 200u);
+  EXPECT_EQ(check(cloud, hand).label, HandLabel::kNegative) << "patches from the lone points";
+  AntipodalParameters trimmed;
+  trimmed.contact_trim = 0.05;
+  const Labelled result = check(cloud, hand, trimmed);
+  EXPECT_EQ(result.label, HandLabel::kPositive);
+  EXPECT_GE(std::min(result.count.facing_plus, result.count.facing_minus), 50);
+  // Without the lone points the trim changes nothing the label says.
+  const Cloud clean = seen_from(box({0.05, 0.05, 0.1}), Eigen::Vector3d::Zero(), {kLeft, kRight});
+  EXPECT_EQ(check(clean, box_hand(clean), trimmed).label, HandLabel::kPositive);
+}
+
+TEST(AntipodalTest, ContactTrimOutsideItsRangeIsRefused) {
+  AntipodalParameters p;
+  p.contact_trim = 0.5;
+  EXPECT_THROW(p.validate(), Error);
+  p.contact_trim = -0.01;
+  EXPECT_THROW(p.validate(), Error);
+  p.contact_trim = 0.45;
+  EXPECT_NO_THROW(p.validate());
 }
 
 TEST(AntipodalTest, CylinderAlongItsAxisIsNegative) {

@@ -3,8 +3,8 @@
 // antipode/grasp/antipodal.hpp and docs/classification.md.
 //
 // Parameters: min_points (k, 6), max_angle_deg (theta, 20), contact_depth_m (0.005; 0 =
-// the paper's whole closing region), normal_radius_m (0.01), min_neighbours (10), threads
-// (0 = all).
+// the paper's whole closing region), contact_trim (0: the first contact is the farthest
+// point), normal_radius_m (0.01), min_neighbours (10), threads (0 = all).
 #include <cmath>
 #include <string>
 
@@ -50,6 +50,8 @@ AntipodalLabellingOptions read_options(const Parameters& params) {
       number_in(params, "max_angle_deg", o.antipodal.max_angle_deg, 0.0, false, 90.0);
   o.antipodal.contact_depth_m =
       number_in(params, "contact_depth_m", o.antipodal.contact_depth_m, 0.0, true, 0.1);
+  o.antipodal.contact_trim =
+      number_in(params, "contact_trim", o.antipodal.contact_trim, 0.0, true, 0.45);
   o.normals.radius_m = number_in(params, "normal_radius_m", o.normals.radius_m, 0.0, false, 0.1);
   o.normals.min_neighbours = static_cast<std::size_t>(
       integer_at_least(params, "min_neighbours", static_cast<int>(o.normals.min_neighbours), 9));

@@ -26,6 +26,10 @@ void AntipodalParameters::validate() const {
     throw Error("antipodal check: contact_depth_m must be in [0, 1), got " +
                 std::to_string(contact_depth_m));
   }
+  if (!(contact_trim >= 0.0 && contact_trim <= 0.45)) {
+    throw Error("antipodal check: contact_trim must be in [0, 0.45], got " +
+                std::to_string(contact_trim));
+  }
 }
 
 AntipodalCount count_antipodal_normals(const Hand& hand,
@@ -54,18 +58,26 @@ AntipodalCount count_antipodal_normals(const Hand& hand, const std::vector<Eigen
   const float cos_theta = static_cast<float>(std::cos(parameters.max_angle_deg * M_PI / 180.0));
   const Eigen::Vector3f closing = hand.closing().cast<float>();
   const float origin = closing.dot(hand.position_m().cast<float>());
-  // Each point's coordinate along the closing direction, and the two first contacts.
-  float lowest = std::numeric_limits<float>::infinity(), highest = -lowest;
+  // Each point's coordinate along the closing direction, and the two first contacts: the
+  // extreme coordinates, or the `contact_trim` quantiles from each end.
+  std::vector<float> ys;
+  ys.reserve(hand.closing_points.size());
   for (const std::int32_t i : hand.closing_points) {
     if (i < 0 || static_cast<std::size_t>(i) >= points.size() ||
         static_cast<std::size_t>(i) >= normals.size()) {
       throw Error("antipodal check: closing point " + std::to_string(i) +
                   " is outside the cloud of " + std::to_string(points.size()) + " points");
     }
-    const float y = closing.dot(points[static_cast<std::size_t>(i)]) - origin;
-    lowest = std::min(lowest, y);
-    highest = std::max(highest, y);
+    ys.push_back(closing.dot(points[static_cast<std::size_t>(i)]) - origin);
   }
+  if (ys.empty()) return {};
+  const auto trimmed =
+      static_cast<std::ptrdiff_t>(parameters.contact_trim * static_cast<double>(ys.size() - 1));
+  std::nth_element(ys.begin(), ys.begin() + trimmed, ys.end());
+  const float lowest = ys[static_cast<std::size_t>(trimmed)];
+  const auto top = static_cast<std::ptrdiff_t>(ys.size()) - 1 - trimmed;
+  std::nth_element(ys.begin(), ys.begin() + top, ys.end());
+  const float highest = ys[static_cast<std::size_t>(top)];
   const float depth = static_cast<float>(parameters.contact_depth_m);
   AntipodalCount count;
   for (const std::int32_t i : hand.closing_points) {

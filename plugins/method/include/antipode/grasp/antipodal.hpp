@@ -38,6 +38,12 @@ struct AntipodalParameters {
   /// along the closing direction; 0 counts the whole closing region (the paper's
   /// Definition 3). See "Contact patches" above.
   double contact_depth_m = 0.005;
+  /// Where each finger's first contact lies, as a quantile of the closing-region points along
+  /// the closing direction, in [0, 0.45]: 0 is the point farthest towards the finger, 0.05 the
+  /// point beyond which 5% of them lie. A noisy cloud's farthest point is often a lone point a
+  /// few millimetres off the surface, and a patch measured from it holds few of the surface's
+  /// points (see docs/classification.md, contact patches). Used with `contact_depth_m` > 0.
+  double contact_trim = 0.0;
 
   /// Throws antipode::Error naming the offending field.
   void validate() const;
@@ -57,7 +63,8 @@ AntipodalCount count_antipodal_normals(const Hand& hand,
                                        double max_angle_deg);
 
 /// The same, counting for each finger only its contact patch when
-/// `parameters.contact_depth_m` > 0 (`points` are the cloud's, indexed like `normals`).
+/// `parameters.contact_depth_m` > 0 (`points` are the cloud's, indexed like `normals`), its
+/// first contact at the `parameters.contact_trim` quantile.
 /// Throws antipode::Error for an index outside `points` or `normals`.
 AntipodalCount count_antipodal_normals(const Hand& hand, const std::vector<Eigen::Vector3f>& points,
                                        const std::vector<Eigen::Vector3f>& normals,
