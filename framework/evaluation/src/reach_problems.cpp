@@ -109,6 +109,7 @@ SceneRun run_scene(const PlanningScene& scene, const RobotModel& robot,
     problem.standoff_m = 0.0;
     problem.obstacles = query.obstacles;
     problem.seed = seed;
+    problem.time_limit_s = 0.0;  // the planner's own (`--set planner.time_limit_s=...`)
     const PlanningResult result = p.planner->plan(problem);
     if (!has_goal(result.status)) {
       // The contact's link names what is in the way; the obstacle varies by draw.

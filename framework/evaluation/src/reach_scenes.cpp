@@ -132,6 +132,7 @@ nlohmann::ordered_json bench_planning_scenes(const ReachBenchOptions& o) {
       problem.start = cell->arm_state();
       problem.scene = cloud;
       problem.seed = seed;
+      problem.time_limit_s = 0.0;  // the planner's own (`--set planner.time_limit_s=...`)
       plans.push_back(figures_of(planner->plan(problem)));
       if (exact) exact_plans.push_back(figures_of(exact->plan(problem)));
     }
