@@ -1,6 +1,7 @@
 // OMPL arm planning for Baxter's right arm: paths that avoid a box blocking the straight
 // motion (checked densely along the path), invalid starts and goals, errors.
 
+#include <cmath>
 #include <string>
 
 #include <gtest/gtest.h>
@@ -188,6 +189,30 @@ TEST(ArmPlanner, BadProblemsAreErrors) {
   p.world = nullptr;
   EXPECT_NE(error_of([&] { plan_arm_motion(p); }).find("needs an arm and a collision world"),
             std::string::npos);
+  p = problem(b);
+  p.range_rad = -0.1;
+  EXPECT_NE(error_of([&] { plan_arm_motion(p); }).find("range_rad must not be negative"),
+            std::string::npos);
+  p = problem(b);
+  p.planner = "PRM";
+  p.range_rad = 0.5;
+  EXPECT_NE(error_of([&] { plan_arm_motion(p); }).find("not PRM"), std::string::npos);
+}
+
+// The search adds motions no longer than range_rad: in free space, RRTConnect's unshortened
+// path steps from the start to the goal in motions of at most that length.
+TEST(ArmPlanner, TheRangeBoundsEachMotionOfTheSearch) {
+  Baxter b;
+  ArmPlanningProblem p = problem(b);
+  p.shorten = false;
+  p.range_rad = 0.3;
+  const ArmPlan plan = plan_arm_motion(p);
+  ASSERT_EQ(plan.status, PlanStatus::kSolved) << to_string(plan.status);
+  const double distance = (kReach - kNeutral).norm();  // 1.15 rad
+  EXPECT_GE(plan.path.size(), std::size_t(std::ceil(distance / p.range_rad)) + 1);
+  for (std::size_t i = 0; i + 1 < plan.path.size(); ++i)
+    EXPECT_LE((plan.path[i + 1] - plan.path[i]).norm(), p.range_rad + 1e-9) << "motion " << i;
+  expect_free_path(b, plan, p.resolution_rad);
 }
 
 }  // namespace

@@ -123,6 +123,11 @@ TEST(AntipodalTest, ContactPatchesCountWhatTheFingersMeetFirst) {
   const Labelled patches = check(cloud, hand, AntipodalParameters{});
   EXPECT_EQ(patches.label, HandLabel::kNegative);
   EXPECT_EQ(patches.count.facing_plus + patches.count.facing_minus, 0);
+  // The bar's points run on to the closing region's ends: a first contact 5% of the points in
+  // from each end still lies on the bar, not on the slab's faces.
+  AntipodalParameters trimmed;
+  trimmed.contact_trim = 0.05;
+  EXPECT_EQ(check(cloud, hand, trimmed).label, HandLabel::kNegative);
   // Without the bar the slab's faces are the first contacts: positive either way.
   const Cloud slab = seen_from(
       [](const Eigen::Vector3d& c) {
@@ -142,7 +147,8 @@ TEST(AntipodalTest, ATrimmedFirstContactLooksPastLonePoints) {
   for (const double x : {-0.032, 0.032}) {
     for (const double z : {0.03, 0.035, 0.04}) {
       cloud.points_m.emplace_back(float(x), 0.0f, float(z));
-      if (!cloud.view_masks.empty()) cloud.view_masks.push_back(cloud.view_masks.front());
+      if (!cloud.view_masks.empty())
+        cloud.view_masks.push_back(x < 0.0 ? 1u : 2u);  // its side's view
     }
   }
   const Hand hand = box_hand(cloud);
@@ -153,9 +159,13 @@ TEST(AntipodalTest, ATrimmedFirstContactLooksPastLonePoints) {
   const Labelled result = check(cloud, hand, trimmed);
   EXPECT_EQ(result.label, HandLabel::kPositive);
   EXPECT_GE(std::min(result.count.facing_plus, result.count.facing_minus), 50);
-  // Without the lone points the trim changes nothing the label says.
+  // Without the lone points the faces are the first contacts either way: the same counts.
   const Cloud clean = seen_from(box({0.05, 0.05, 0.1}), Eigen::Vector3d::Zero(), {kLeft, kRight});
-  EXPECT_EQ(check(clean, box_hand(clean), trimmed).label, HandLabel::kPositive);
+  const Labelled untrimmed_clean = check(clean, box_hand(clean));
+  const Labelled trimmed_clean = check(clean, box_hand(clean), trimmed);
+  EXPECT_EQ(trimmed_clean.label, HandLabel::kPositive);
+  EXPECT_EQ(trimmed_clean.count.facing_plus, untrimmed_clean.count.facing_plus);
+  EXPECT_EQ(trimmed_clean.count.facing_minus, untrimmed_clean.count.facing_minus);
 }
 
 TEST(AntipodalTest, ContactTrimOutsideItsRangeIsRefused) {

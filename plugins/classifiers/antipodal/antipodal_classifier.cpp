@@ -3,8 +3,8 @@
 // antipode/grasp/antipodal.hpp and docs/classification.md.
 //
 // Parameters: min_points (k, 6), max_angle_deg (theta, 20), contact_depth_m (0.005; 0 =
-// the paper's whole closing region), contact_trim (0: the first contact is the farthest
-// point), normal_radius_m (0.01), min_neighbours (10), threads (0 = all).
+// the paper's whole closing region), contact_trim (0; 0 = the farthest point is the first
+// contact), normal_radius_m (0.01), min_neighbours (10), threads (0 = all).
 #include <cmath>
 #include <string>
 

@@ -2,8 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
+#include <cstddef>
 #include <string>
+#include <utility>
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
@@ -50,6 +51,26 @@ AntipodalCount count_antipodal_normals(const Hand& hand,
   return count;
 }
 
+namespace {
+
+// The two fingers' first contacts among the points' coordinates `ys` along the closing
+// direction (not empty; reordered): the lowest and the highest, or with `trim` > 0 the
+// floor(trim (n - 1))-th from each end.
+std::pair<float, float> first_contacts(std::vector<float>& ys, double trim) {
+  if (trim <= 0.0) {
+    const auto [low, high] = std::minmax_element(ys.begin(), ys.end());
+    return {*low, *high};
+  }
+  const auto n = static_cast<std::ptrdiff_t>(ys.size());
+  const auto k = static_cast<std::ptrdiff_t>(trim * static_cast<double>(n - 1));
+  std::nth_element(ys.begin(), ys.begin() + k, ys.end());
+  const float lowest = ys[static_cast<std::size_t>(k)];
+  std::nth_element(ys.begin(), ys.begin() + (n - 1 - k), ys.end());
+  return {lowest, ys[static_cast<std::size_t>(n - 1 - k)]};
+}
+
+}  // namespace
+
 AntipodalCount count_antipodal_normals(const Hand& hand, const std::vector<Eigen::Vector3f>& points,
                                        const std::vector<Eigen::Vector3f>& normals,
                                        const AntipodalParameters& parameters) {
@@ -58,10 +79,9 @@ AntipodalCount count_antipodal_normals(const Hand& hand, const std::vector<Eigen
   const float cos_theta = static_cast<float>(std::cos(parameters.max_angle_deg * M_PI / 180.0));
   const Eigen::Vector3f closing = hand.closing().cast<float>();
   const float origin = closing.dot(hand.position_m().cast<float>());
-  // Each point's coordinate along the closing direction, and the two first contacts: the
-  // extreme coordinates, or the `contact_trim` quantiles from each end.
-  std::vector<float> ys;
-  ys.reserve(hand.closing_points.size());
+  // Each point's coordinate along the closing direction, and the two first contacts.
+  thread_local std::vector<float> ys;
+  ys.clear();
   for (const std::int32_t i : hand.closing_points) {
     if (i < 0 || static_cast<std::size_t>(i) >= points.size() ||
         static_cast<std::size_t>(i) >= normals.size()) {
@@ -71,13 +91,7 @@ AntipodalCount count_antipodal_normals(const Hand& hand, const std::vector<Eigen
     ys.push_back(closing.dot(points[static_cast<std::size_t>(i)]) - origin);
   }
   if (ys.empty()) return {};
-  const auto trimmed =
-      static_cast<std::ptrdiff_t>(parameters.contact_trim * static_cast<double>(ys.size() - 1));
-  std::nth_element(ys.begin(), ys.begin() + trimmed, ys.end());
-  const float lowest = ys[static_cast<std::size_t>(trimmed)];
-  const auto top = static_cast<std::ptrdiff_t>(ys.size()) - 1 - trimmed;
-  std::nth_element(ys.begin(), ys.begin() + top, ys.end());
-  const float highest = ys[static_cast<std::size_t>(top)];
+  const auto [lowest, highest] = first_contacts(ys, parameters.contact_trim);
   const float depth = static_cast<float>(parameters.contact_depth_m);
   AntipodalCount count;
   for (const std::int32_t i : hand.closing_points) {

@@ -62,6 +62,13 @@ ob::PlannerPtr make_planner(const std::string& name, const ob::SpaceInformationP
   return std::make_shared<og::RRTConnect>(si);
 }
 
+// The planner `p` names, its range set when the problem gives one.
+ob::PlannerPtr configured_planner(const ArmPlanningProblem& p, const ob::SpaceInformationPtr& si) {
+  ob::PlannerPtr planner = make_planner(p.planner, si);
+  if (p.range_rad > 0.0) planner->params().setParam("range", std::to_string(p.range_rad));
+  return planner;
+}
+
 void check_problem(const ArmPlanningProblem& p) {
   if (p.arm == nullptr || p.world == nullptr)
     throw Error("arm planning: the problem needs an arm and a collision world");
@@ -73,11 +80,14 @@ void check_problem(const ArmPlanningProblem& p) {
   }
   if (!(p.time_limit_s > 0.0)) throw Error("arm planning: time_limit_s must be positive");
   if (!(p.resolution_rad > 0.0)) throw Error("arm planning: resolution_rad must be positive");
+  if (!(p.range_rad >= 0.0)) throw Error("arm planning: range_rad must not be negative");
   const auto& names = planner_names();
   if (std::find(names.begin(), names.end(), p.planner) == names.end()) {
     throw Error("arm planning: unknown planner '" + p.planner + "'" +
                 did_you_mean(p.planner, names) + " (use RRTConnect, RRT, KPIECE1, PRM or EST)");
   }
+  if (p.range_rad > 0.0 && p.planner == "PRM")
+    throw Error("arm planning: range_rad is for RRTConnect, RRT, KPIECE1 and EST, not PRM");
 }
 
 // A plan that ends before the search when the start or the goal is invalid: outside the
@@ -163,7 +173,7 @@ ArmPlan plan_arm_motion(const ArmPlanningProblem& p) {
                                                                   space->getMaximumExtent());
   setup.getSpaceInformation()->setMotionValidator(std::make_shared<BatchedMotionValidator>(
       setup.getSpaceInformation(), world, p.resolution_rad, p.rake_segments, checks));
-  setup.setPlanner(make_planner(p.planner, setup.getSpaceInformation()));
+  setup.setPlanner(configured_planner(p, setup.getSpaceInformation()));
   ob::ScopedState<> start(space), goal(space);
   for (std::size_t i = 0; i < dof; ++i) {
     start[i] = p.start(static_cast<Eigen::Index>(i));

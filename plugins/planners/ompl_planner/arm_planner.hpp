@@ -31,6 +31,10 @@ struct ArmPlanningProblem {
   std::string planner = "RRTConnect";  ///< RRTConnect, RRT, KPIECE1, PRM or EST
   double time_limit_s = 1.0;
   double resolution_rad = 0.02;  ///< joint-space distance between checked states
+  /// The longest motion the search adds at a time (joint-space distance, OMPL's `range`);
+  /// 0: OMPL's default, a fifth of the joint space's longest diagonal (Baxter's arm: about
+  /// 2.5). Not for PRM, which connects samples whatever their distance.
+  double range_rad = 0.0;
   /// Check a motion's states as a rake (segment_states.hpp), or in order (false, the
   /// baseline): the same answers, the paths the same.
   bool rake_segments = true;

@@ -28,6 +28,7 @@ OmplPlannerOptions read_options(const Parameters& p) {
   o.planner = p.get<std::string>("planner", o.planner);
   o.time_limit_s = p.get<double>("time_limit_s", o.time_limit_s);
   o.resolution_rad = p.get<double>("resolution_rad", o.resolution_rad);
+  o.range_rad = p.get<double>("range_rad", o.range_rad);
   const std::string order = p.get<std::string>("segment_order", "rake");
   if (order != "rake" && order != "in_order")
     p.fail("segment_order", "'segment_order' must be rake or in_order, got '" + order + "'");
@@ -41,6 +42,9 @@ OmplPlannerOptions read_options(const Parameters& p) {
   positive("points_resolution_m", o.points_resolution_m);
   positive("time_limit_s", o.time_limit_s);
   positive("resolution_rad", o.resolution_rad);
+  if (!(o.range_rad >= 0.0)) p.fail("range_rad", "'range_rad' must not be negative (0: OMPL's)");
+  if (o.range_rad > 0.0 && o.planner == "PRM")
+    p.fail("range_rad", "'range_rad' is for RRTConnect, RRT, KPIECE1 and EST, not PRM");
   positive("ik_solutions", o.ik_solutions);
   positive("approach_step_m", o.approach.step_m);
   if (!(o.speed_fraction > 0.0 && o.speed_fraction <= 1.0))
@@ -187,6 +191,7 @@ PlanningResult OmplPlanner::plan(const PlanningProblem& problem) const {
   search.planner = options_.planner;
   search.time_limit_s = problem.time_limit_s > 0.0 ? problem.time_limit_s : options_.time_limit_s;
   search.resolution_rad = options_.resolution_rad;
+  search.range_rad = options_.range_rad;
   search.rake_segments = options_.rake_segments;
   search.seed = problem.seed;
   search.stop = problem.stop;

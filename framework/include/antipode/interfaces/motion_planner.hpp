@@ -44,10 +44,12 @@ struct PlanningProblem {
   /// Known solids besides the points (a planning benchmark's scene, fixtures); every link
   /// of the arm, the hand's included, stays clear of them.
   std::vector<Obstacle> obstacles;
-  double standoff_m = 0.10;   ///< where the straight approach starts
-  double time_limit_s = 1.0;  ///< for the search; <= 0: the planner's default
-  std::uint64_t seed = 0;     ///< the same problem and seed give the same motion
-  StopToken stop;             ///< cancellation (a Timeout node's deadline)
+  double standoff_m = 0.10;  ///< where the straight approach starts
+  /// For the search; <= 0: the planner's own limit. A caller that leaves 1.0 overrides a
+  /// limit the planner's parameters set.
+  double time_limit_s = 1.0;
+  std::uint64_t seed = 0;  ///< the same problem and seed give the same motion
+  StopToken stop;          ///< cancellation (a Timeout node's deadline)
 };
 
 /// How a planning call ended.

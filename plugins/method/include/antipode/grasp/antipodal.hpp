@@ -15,7 +15,8 @@
 /// points of a rounded lip may lie between the fingers while the fingers meet the two faces
 /// at 45 degrees, and the object squirts out. With `contact_depth_m` > 0, only the points
 /// within that distance of each finger's first contact (the closing-region points farthest
-/// along +closing for the +y finger, along -closing for the -y finger) are counted for it.
+/// along +closing for the +y finger, along -closing for the -y finger; with `contact_trim`,
+/// a quantile from each end) are counted for it.
 
 #include <cstdint>
 #include <vector>
@@ -40,7 +41,8 @@ struct AntipodalParameters {
   double contact_depth_m = 0.005;
   /// Where each finger's first contact lies, as a quantile of the closing-region points along
   /// the closing direction, in [0, 0.45]: 0 is the point farthest towards the finger, 0.05 the
-  /// point beyond which 5% of them lie. A noisy cloud's farthest point is often a lone point a
+  /// point beyond which 5% of them lie (floor(0.05 (n - 1)) of the n points: none of 21 or
+  /// fewer). A noisy cloud's farthest point is often a lone point a
   /// few millimetres off the surface, and a patch measured from it holds few of the surface's
   /// points (see docs/classification.md, contact patches). Used with `contact_depth_m` > 0.
   double contact_trim = 0.0;
