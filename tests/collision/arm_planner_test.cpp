@@ -1,7 +1,8 @@
 // OMPL arm planning for Baxter's right arm: paths that avoid a box blocking the straight
-// motion (checked densely along the path), invalid starts and goals, errors.
+// motion (checked densely along the path), the search's range, invalid starts and goals, errors.
 
 #include <cmath>
+#include <limits>
 #include <string>
 
 #include <gtest/gtest.h>
@@ -191,7 +192,10 @@ TEST(ArmPlanner, BadProblemsAreErrors) {
             std::string::npos);
   p = problem(b);
   p.range_rad = -0.1;
-  EXPECT_NE(error_of([&] { plan_arm_motion(p); }).find("range_rad must not be negative"),
+  EXPECT_NE(error_of([&] { plan_arm_motion(p); }).find("range_rad must be finite and not negative"),
+            std::string::npos);
+  p.range_rad = std::numeric_limits<double>::infinity();
+  EXPECT_NE(error_of([&] { plan_arm_motion(p); }).find("range_rad must be finite"),
             std::string::npos);
   p = problem(b);
   p.planner = "PRM";

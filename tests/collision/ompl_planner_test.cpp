@@ -144,7 +144,8 @@ TEST(OmplPlanner, BadParametersNameTheirKey) {
   EXPECT_NE(error("robot: " + kRobot + "\nsegment_order: random")
                 .find("'segment_order' must be rake or in_order, got 'random'"),
             std::string::npos);
-  EXPECT_NE(error("robot: " + kRobot + "\nrange_rad: -1").find("'range_rad' must not be negative"),
+  EXPECT_NE(error("robot: " + kRobot + "\nrange_rad: -1")
+                .find("'range_rad' must be finite and not negative"),
             std::string::npos);
   EXPECT_NE(error("robot: " + kRobot + "\nplanner: PRM\nrange_rad: 0.5").find("not PRM"),
             std::string::npos);

@@ -54,7 +54,7 @@ AntipodalCount count_antipodal_normals(const Hand& hand,
 namespace {
 
 // The two fingers' first contacts among the points' coordinates `ys` along the closing
-// direction (not empty; reordered): the lowest and the highest, or with `trim` > 0 the
+// direction (not empty; may be reordered): the lowest and the highest, or with `trim` > 0 the
 // floor(trim (n - 1))-th from each end.
 std::pair<float, float> first_contacts(std::vector<float>& ys, double trim) {
   if (trim <= 0.0) {

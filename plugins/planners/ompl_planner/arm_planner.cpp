@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <atomic>
 #include <chrono>
+#include <cmath>
 #include <memory>
 #include <optional>
 #include <string>
@@ -54,19 +55,21 @@ const std::vector<std::string>& planner_names() {
   return names;
 }
 
-ob::PlannerPtr make_planner(const std::string& name, const ob::SpaceInformationPtr& si) {
-  if (name == "RRT") return std::make_shared<og::RRT>(si);
-  if (name == "KPIECE1") return std::make_shared<og::KPIECE1>(si);
-  if (name == "PRM") return std::make_shared<og::PRM>(si);
-  if (name == "EST") return std::make_shared<og::EST>(si);
-  return std::make_shared<og::RRTConnect>(si);
+// A planner of type P, its range set when `range_rad` > 0 (else OMPL's default).
+template <class P>
+ob::PlannerPtr ranged(const ob::SpaceInformationPtr& si, double range_rad) {
+  auto planner = std::make_shared<P>(si);
+  if (range_rad > 0.0) planner->setRange(range_rad);
+  return planner;
 }
 
-// The planner `p` names, its range set when the problem gives one.
-ob::PlannerPtr configured_planner(const ArmPlanningProblem& p, const ob::SpaceInformationPtr& si) {
-  ob::PlannerPtr planner = make_planner(p.planner, si);
-  if (p.range_rad > 0.0) planner->params().setParam("range", std::to_string(p.range_rad));
-  return planner;
+// The planner `p` names (check_problem() refused a range for PRM).
+ob::PlannerPtr make_planner(const ArmPlanningProblem& p, const ob::SpaceInformationPtr& si) {
+  if (p.planner == "RRT") return ranged<og::RRT>(si, p.range_rad);
+  if (p.planner == "KPIECE1") return ranged<og::KPIECE1>(si, p.range_rad);
+  if (p.planner == "PRM") return std::make_shared<og::PRM>(si);
+  if (p.planner == "EST") return ranged<og::EST>(si, p.range_rad);
+  return ranged<og::RRTConnect>(si, p.range_rad);
 }
 
 void check_problem(const ArmPlanningProblem& p) {
@@ -80,7 +83,8 @@ void check_problem(const ArmPlanningProblem& p) {
   }
   if (!(p.time_limit_s > 0.0)) throw Error("arm planning: time_limit_s must be positive");
   if (!(p.resolution_rad > 0.0)) throw Error("arm planning: resolution_rad must be positive");
-  if (!(p.range_rad >= 0.0)) throw Error("arm planning: range_rad must not be negative");
+  if (!(p.range_rad >= 0.0 && std::isfinite(p.range_rad)))
+    throw Error("arm planning: range_rad must be finite and not negative");
   const auto& names = planner_names();
   if (std::find(names.begin(), names.end(), p.planner) == names.end()) {
     throw Error("arm planning: unknown planner '" + p.planner + "'" +
@@ -173,7 +177,7 @@ ArmPlan plan_arm_motion(const ArmPlanningProblem& p) {
                                                                   space->getMaximumExtent());
   setup.getSpaceInformation()->setMotionValidator(std::make_shared<BatchedMotionValidator>(
       setup.getSpaceInformation(), world, p.resolution_rad, p.rake_segments, checks));
-  setup.setPlanner(configured_planner(p, setup.getSpaceInformation()));
+  setup.setPlanner(make_planner(p, setup.getSpaceInformation()));
   ob::ScopedState<> start(space), goal(space);
   for (std::size_t i = 0; i < dof; ++i) {
     start[i] = p.start(static_cast<Eigen::Index>(i));

@@ -31,9 +31,10 @@ struct ArmPlanningProblem {
   std::string planner = "RRTConnect";  ///< RRTConnect, RRT, KPIECE1, PRM or EST
   double time_limit_s = 1.0;
   double resolution_rad = 0.02;  ///< joint-space distance between checked states
-  /// The longest motion the search adds at a time (joint-space distance, OMPL's `range`);
-  /// 0: OMPL's default, a fifth of the joint space's longest diagonal (Baxter's arm: about
-  /// 2.5). Not for PRM, which connects samples whatever their distance.
+  /// OMPL's `range`: the longest motion RRTConnect and RRT add at a time (joint-space
+  /// distance; KPIECE1 and EST sample within it of a tree state in each joint); 0: OMPL's
+  /// default, a fifth of the joint space's longest diagonal (Baxter's arm: about 2.5). Not
+  /// for PRM, which connects samples whatever their distance.
   double range_rad = 0.0;
   /// Check a motion's states as a rake (segment_states.hpp), or in order (false, the
   /// baseline): the same answers, the paths the same.
@@ -67,8 +68,9 @@ struct ArmPlan {
 };
 
 /// Plans from `problem.start` to `problem.goal`. Throws antipode::Error for a problem
-/// without arm or world, joint vectors of the wrong size, an unknown planner name, or a
-/// non-positive time limit or resolution.
+/// without arm or world, joint vectors of the wrong size, an unknown planner name, a
+/// non-positive time limit or resolution, or a range that is negative, not finite or given
+/// to PRM.
 ArmPlan plan_arm_motion(const ArmPlanningProblem& problem);
 
 /// True when the straight joint-space segment from `a` to `b`, checked every `resolution_rad`

@@ -42,7 +42,8 @@ OmplPlannerOptions read_options(const Parameters& p) {
   positive("points_resolution_m", o.points_resolution_m);
   positive("time_limit_s", o.time_limit_s);
   positive("resolution_rad", o.resolution_rad);
-  if (!(o.range_rad >= 0.0)) p.fail("range_rad", "'range_rad' must not be negative (0: OMPL's)");
+  if (!(o.range_rad >= 0.0 && std::isfinite(o.range_rad)))
+    p.fail("range_rad", "'range_rad' must be finite and not negative (0: OMPL's)");
   if (o.range_rad > 0.0 && o.planner == "PRM")
     p.fail("range_rad", "'range_rad' is for RRTConnect, RRT, KPIECE1 and EST, not PRM");
   positive("ik_solutions", o.ik_solutions);
