@@ -42,9 +42,9 @@ struct AntipodalParameters {
   /// Where each finger's first contact lies, as a quantile of the closing-region points along
   /// the closing direction, in [0, 0.45]: 0 is the point farthest towards the finger, 0.05 the
   /// point beyond which 5% of them lie (floor(0.05 (n - 1)) of the n points: none of 20 or
-  /// fewer). A noisy cloud's farthest point is often a lone point a
-  /// few millimetres off the surface, and a patch measured from it holds few of the surface's
-  /// points (see docs/classification.md, contact patches). Used with `contact_depth_m` > 0.
+  /// fewer). A noisy cloud's farthest point is often a lone point a few millimetres off the
+  /// surface, and a patch measured from it holds few of the surface's points (see
+  /// docs/classification.md, contact patches). Used with `contact_depth_m` > 0.
   double contact_trim = 0.0;
 
   /// Throws antipode::Error naming the offending field.
