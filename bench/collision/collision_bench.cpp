@@ -97,13 +97,20 @@ void BM_CheckInCell_Spheres_Baseline(benchmark::State& s) {
 }
 
 // The spheres alone, 16 configurations per call of ArmCollisionWorld::first_contact: the
-// spheres of a whole batch are tested at once, whatever it finds.
-void check_batches(benchmark::State& state, SimdLevel simd) {
+// spheres of a whole batch are tested at once, whatever it finds. In the cell (its boxes and
+// points) or among its boxes alone; `dense`: every sphere pair and sphere-box pair tested,
+// none skipped by the links' bounding spheres (the same answers).
+void check_batches(benchmark::State& state, SimdLevel simd, bool points = true,
+                   bool dense = false) {
   const antipode::KinematicChain arm = robot().chain("base", "right_gripper");
   antipode::collision::CollisionOptions options;
   options.mode = CheckMode::kSpheres;
   ArmCollisionWorld world(robot(), arm, {}, options);
-  add_cell(world);
+  if (points)
+    add_cell(world);
+  else
+    antipode::bench::add_table_and_box(world);
+  antipode::collision::set_sphere_culling(!dense);
   const std::vector<Eigen::VectorXd> qs = random_configurations(arm, 1024);
   std::vector<std::vector<Eigen::VectorXd>> batches;
   for (std::size_t i = 0; i < qs.size(); i += 16)
@@ -116,10 +123,20 @@ void check_batches(benchmark::State& state, SimdLevel simd) {
     checks += 16;
   }
   antipode::collision::set_simd_level(SimdLevel::kAvx512);
+  antipode::collision::set_sphere_culling(true);
   state.counters["checks_per_s"] = benchmark::Counter(double(checks), benchmark::Counter::kIsRate);
   state.SetLabel(antipode::collision::to_string(used));
 }
 void BM_CheckInCell_Spheres_Batch16(benchmark::State& s) { check_batches(s, SimdLevel::kAvx512); }
+void BM_CheckInCell_Spheres_Batch16_Dense(benchmark::State& s) {
+  check_batches(s, SimdLevel::kAvx512, true, true);
+}
+void BM_CheckAmongBoxes_Spheres_Batch16(benchmark::State& s) {
+  check_batches(s, SimdLevel::kAvx512, false);
+}
+void BM_CheckAmongBoxes_Spheres_Batch16_Dense(benchmark::State& s) {
+  check_batches(s, SimdLevel::kAvx512, false, true);
+}
 void BM_CheckInCell_Spheres_Batch16_Avx2(benchmark::State& s) {
   check_batches(s, SimdLevel::kAvx2);
 }
@@ -288,6 +305,9 @@ BENCHMARK(BM_CheckInCell_Spheres)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_CheckInCell_Spheres_Avx2)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_CheckInCell_Spheres_Baseline)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_CheckInCell_Spheres_Batch16)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_CheckInCell_Spheres_Batch16_Dense)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_CheckAmongBoxes_Spheres_Batch16)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_CheckAmongBoxes_Spheres_Batch16_Dense)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_CheckInCell_Spheres_Batch16_Avx2)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_CheckInCell_Spheres_Batch16_Baseline)->Unit(benchmark::kMicrosecond);
 

@@ -12,6 +12,7 @@
 #include "antipode/robot/inverse_kinematics.hpp"
 #include "antipode/robot/robot_model.hpp"
 #include "arm_planner.hpp"
+#include "sphere_kernels.hpp"
 #include "support/cell_world.hpp"
 
 namespace {
@@ -46,7 +47,8 @@ double quantile(std::vector<double> v, double q) {
 }
 
 void plan_neutral_to_above_the_box(benchmark::State& state, antipode::collision::CheckMode mode,
-                                   bool rake = true) {
+                                   bool rake = true, bool dense = false) {
+  antipode::collision::set_sphere_culling(!dense);
   const antipode::RobotModel robot = antipode::RobotModel::load(ANTIPODE_BENCH_ROBOT);
   const antipode::KinematicChain arm = robot.chain("base", "right_gripper");
   antipode::collision::CollisionOptions options;
@@ -74,13 +76,20 @@ void plan_neutral_to_above_the_box(benchmark::State& state, antipode::collision:
   state.counters["search_median_ms"] = quantile(search_ms, 0.5);
   state.counters["search_p90_ms"] = quantile(search_ms, 0.9);
   state.counters["shortening_median_ms"] = quantile(shortening_ms, 0.5);
+  antipode::collision::set_sphere_culling(true);
 }
 
 // The collision checks as the planner makes them (spheres, then FCL where they touch; each
 // segment's states as a rake), with each segment's states in order, and with FCL alone, side
-// by side. The same paths either way when both searches end within the time limit.
+// by side; and the default with every sphere test of a batch made, none skipped by the links'
+// bounding spheres (_Dense). The same paths either way when both searches end within the time
+// limit.
 void BM_PlanNeutralToAboveTheBox(benchmark::State& state) {
   plan_neutral_to_above_the_box(state, antipode::collision::CheckMode::kSpheresThenExact);
+}
+void BM_PlanNeutralToAboveTheBox_Dense(benchmark::State& state) {
+  plan_neutral_to_above_the_box(state, antipode::collision::CheckMode::kSpheresThenExact, true,
+                                true);
 }
 void BM_PlanNeutralToAboveTheBox_InOrder(benchmark::State& state) {
   plan_neutral_to_above_the_box(state, antipode::collision::CheckMode::kSpheresThenExact, false);
@@ -93,6 +102,7 @@ void BM_PlanNeutralToAboveTheBox_ExactInOrder(benchmark::State& state) {
 }
 
 BENCHMARK(BM_PlanNeutralToAboveTheBox)->Unit(benchmark::kMillisecond)->Iterations(50);
+BENCHMARK(BM_PlanNeutralToAboveTheBox_Dense)->Unit(benchmark::kMillisecond)->Iterations(50);
 BENCHMARK(BM_PlanNeutralToAboveTheBox_InOrder)->Unit(benchmark::kMillisecond)->Iterations(50);
 BENCHMARK(BM_PlanNeutralToAboveTheBox_Exact)->Unit(benchmark::kMillisecond)->Iterations(50);
 BENCHMARK(BM_PlanNeutralToAboveTheBox_ExactInOrder)->Unit(benchmark::kMillisecond)->Iterations(50);

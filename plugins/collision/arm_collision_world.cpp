@@ -12,7 +12,6 @@
 #include <fcl/geometry/shape/cylinder.h>
 #include <fcl/geometry/shape/sphere.h>
 #include <fcl/narrowphase/collision.h>
-#include <fcl/narrowphase/collision_object.h>
 #include <octomap/OcTree.h>
 
 #include "antipode/core/error.hpp"
@@ -77,11 +76,11 @@ bool collide(const Shape& a, const Eigen::Isometry3d& X_BaseShapeA, const Shape&
       (X_BaseShapeA.translation() - X_BaseShapeB.translation()).squaredNorm() > reach * reach) {
     return false;
   }
-  const fcl::CollisionObjectd oa(a.geometry, X_BaseShapeA);
-  const fcl::CollisionObjectd ob(b.geometry, X_BaseShapeB);
-  fcl::CollisionRequestd request;
+  // The geometries and poses straight to FCL: a CollisionObject would also compute a box
+  // around each shape, which the test does not read.
+  const fcl::CollisionRequestd request;
   fcl::CollisionResultd result;
-  fcl::collide(&oa, &ob, request, result);
+  fcl::collide(a.geometry.get(), X_BaseShapeA, b.geometry.get(), X_BaseShapeB, request, result);
   return result.isCollision();
 }
 
@@ -121,6 +120,7 @@ struct ArmCollisionWorld::Impl {
   };
 
   KinematicChain arm;
+  std::optional<ScrewChain> fk;  // the arm's links' poses for FCL, in double
   CollisionOptions options;
   std::vector<Link> links;
   std::size_t shape_count = 0;
@@ -145,6 +145,28 @@ struct ArmCollisionWorld::Impl {
           link.moving ? arm[link.arm_link] * link.X_ParentLink : link.X_ParentLink;
       for (const Shape& shape : link.shapes) poses.push_back(X_BaseLink * shape.X_LinkShape);
     }
+    return poses;
+  }
+
+  // Every shape's pose with the arm at `q`: the fixed links' as placed once (still_poses),
+  // a moving link's shape at its arm link's pose times a constant (X_ArmLinkShape).
+  std::vector<Eigen::Isometry3d> still_poses, X_ArmLinkShape;
+  void place_still_shapes(const std::vector<Eigen::Isometry3d>& any_arm_poses) {
+    still_poses = shape_poses(any_arm_poses);
+    X_ArmLinkShape.assign(shape_count, Eigen::Isometry3d::Identity());
+    for (const Link& link : links)
+      for (std::size_t k = 0; link.moving && k < link.shapes.size(); ++k)
+        X_ArmLinkShape[link.first_shape + k] = link.X_ParentLink * link.shapes[k].X_LinkShape;
+  }
+  std::vector<Eigen::Isometry3d> shape_poses_at(const Eigen::VectorXd& q) const {
+    thread_local std::vector<Eigen::Isometry3d> arm_poses;
+    arm_poses.resize(fk->links());
+    fk->link_poses(q.data(), arm_poses.data());
+    std::vector<Eigen::Isometry3d> poses = still_poses;
+    for (const Link& link : links)
+      for (std::size_t k = 0; link.moving && k < link.shapes.size(); ++k)
+        poses[link.first_shape + k] =
+            arm_poses[link.arm_link] * X_ArmLinkShape[link.first_shape + k];
     return poses;
   }
 
@@ -202,6 +224,7 @@ struct ArmCollisionWorld::Impl {
 
   ContactReport check_exact(const Eigen::VectorXd& q) const;
   ContactReport check_with_spheres(const Eigen::VectorXd& q) const;
+  bool confirm(const Eigen::VectorXd& q, const SphereArm::BatchContacts& touched, int lane) const;
 };
 
 namespace {
@@ -266,6 +289,7 @@ ArmCollisionWorld::ArmCollisionWorld(const RobotModel& robot, const KinematicCha
                   did_you_mean(entry.first, joints));
   }
   impl_->arm = arm;
+  impl_->fk.emplace(arm);
   impl_->options = options;
   Eigen::VectorXd zero = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(arm.dof()));
   for (std::size_t j = 0; j < arm.dof(); ++j)
@@ -280,6 +304,7 @@ ArmCollisionWorld::ArmCollisionWorld(const RobotModel& robot, const KinematicCha
   // Self-collision pairs: an arm link with any other link, unless within
   // kMinJointsApart moving joints of it (collision_pairs.hpp) or in contact at the arm's zero
   // configuration (clamped into the limits).
+  impl_->place_still_shapes(arm_at_zero);
   const auto& links = impl_->links;
   const std::vector<Eigen::Isometry3d> at_zero = impl_->shape_poses(arm_at_zero);
   for (std::size_t a = 0; a < links.size(); ++a) {
@@ -367,7 +392,7 @@ ContactReport ArmCollisionWorld::check(const Eigen::VectorXd& q) const {
 }
 
 ContactReport ArmCollisionWorld::Impl::check_exact(const Eigen::VectorXd& q) const {
-  const std::vector<Eigen::Isometry3d> poses = shape_poses(arm.link_poses(q));
+  const std::vector<Eigen::Isometry3d> poses = shape_poses_at(q);
   for (std::size_t k = 0; k < pairs.size(); ++k)
     if (links_collide(pairs[k].first, pairs[k].second, poses)) return self_report(k);
   const auto given = [&poses]() -> const std::vector<Eigen::Isometry3d>& { return poses; };
@@ -387,7 +412,7 @@ ContactReport ArmCollisionWorld::Impl::check_with_spheres(const Eigen::VectorXd&
   const bool exact = options.mode == CheckMode::kSpheresThenExact;
   std::vector<Eigen::Isometry3d> poses;  // FCL's, made when first needed
   const auto fcl_poses = [&]() -> const std::vector<Eigen::Isometry3d>& {
-    if (poses.empty()) poses = shape_poses(arm.link_poses(q));  // double, as check_exact()
+    if (poses.empty()) poses = shape_poses_at(q);  // double, as check_exact()
     return poses;
   };
   spheres->contacts(placement, kernel_boxes, grid, points_radius, self_hits, near);
@@ -410,21 +435,50 @@ std::size_t ArmCollisionWorld::first_contact(const std::vector<Eigen::VectorXd>&
     return qs.size();
   }
   const double* lanes[kBatchLanes];
+  thread_local SphereArm::BatchContacts touched;
+  const bool exact = impl_->options.mode == CheckMode::kSpheresThenExact;
   for (std::size_t first = 0; first < qs.size(); first += kBatchLanes) {
     const int count = int(std::min<std::size_t>(kBatchLanes, qs.size() - first));
     for (int l = 0; l < count; ++l) lanes[l] = qs[first + std::size_t(l)].data();
-    const std::uint32_t flagged = impl_->spheres->contacts_batch(lanes, count, impl_->kernel_boxes,
-                                                                 impl_->grid, impl_->points_radius);
+    const std::uint32_t flagged =
+        impl_->spheres->contacts_batch(lanes, count, impl_->kernel_boxes, impl_->grid,
+                                       impl_->points_radius, exact ? &touched : nullptr);
     // A flagged state is confirmed as check() confirms it: FCL only on the link pairs and the
-    // links near the scene whose spheres touch (not every pair, as check_exact() would).
-    for (int l = 0; l < count; ++l) {
-      if (!(flagged >> l & 1U)) continue;
-      if (impl_->options.mode == CheckMode::kSpheres ||
-          !impl_->check_with_spheres(qs[first + std::size_t(l)]).free())
+    // links near the scene whose spheres touch (not every pair, as check_exact() would),
+    // named by the batch itself.
+    for (int l = 0; l < count; ++l)
+      if ((flagged >> l & 1U) && (!exact || impl_->confirm(qs[first + std::size_t(l)], touched, l)))
         return first + std::size_t(l);
-    }
   }
   return qs.size();
+}
+
+// check_with_spheres()'s FCL tests, on what a batch's spheres touched in `lane`.
+bool ArmCollisionWorld::Impl::confirm(const Eigen::VectorXd& q,
+                                      const SphereArm::BatchContacts& touched, int lane) const {
+  const auto lit = [lane](std::uint32_t lanes) { return (lanes >> lane & 1U) != 0; };
+  std::vector<Eigen::Isometry3d> poses;
+  const auto fcl_poses = [&]() -> const std::vector<Eigen::Isometry3d>& {
+    if (poses.empty()) poses = shape_poses_at(q);
+    return poses;
+  };
+  for (const SphereArm::BatchContacts::Touch& pair : touched.self) {
+    const auto [a, b] = pairs[std::size_t(pair.what)];
+    if (lit(pair.lanes) && links_collide(a, b, fcl_poses())) return true;
+  }
+  // A link's boxes and points, as bits of SphereArm::contacts()'s `near`.
+  const std::vector<SphereArm::BatchContacts::Touch>& scene = touched.scene;
+  for (std::size_t n = 0; n < scene.size();) {
+    const int link = scene[n].what;
+    std::uint32_t near = 0;
+    for (; n < scene.size() && scene[n].what == link; ++n)
+      if (lit(scene[n].lanes))
+        near |=
+            std::uint32_t(1) << (scene[n].box < 0 ? SphereArm::kPointsBit
+                                                  : std::min(scene[n].box, SphereArm::kLastBoxBit));
+    if (near != 0 && environment_contact(std::size_t(link), near, true, fcl_poses)) return true;
+  }
+  return false;
 }
 
 ContactReport ArmCollisionWorld::check_tip_links(const Eigen::Isometry3d& X_BaseTip) const {

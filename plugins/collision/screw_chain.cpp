@@ -13,6 +13,7 @@ namespace {
 constexpr double kProbe = 1.0;       // how far each joint is moved to read its motion (rad or m)
 constexpr double kMoves = 1e-9;      // a link that moves less than this did not move
 constexpr double kAgreement = 1e-5;  // float forward kinematics against the chain's
+constexpr double kAgreementDouble = 1e-9;  // the double one's
 
 Eigen::VectorXd probe(std::size_t dof, int joint) {
   Eigen::VectorXd q = Eigen::VectorXd::Zero(Eigen::Index(dof));
@@ -101,25 +102,30 @@ ScrewChain::ScrewChain(const KinematicChain& arm) {
       X_ParentJoint.translation() = point;
       const Eigen::Isometry3d X_BaseParent0 = s == 0 ? Eigen::Isometry3d::Identity() : X0[s - 1];
       const Eigen::Isometry3d X_BaseNext0 = X_BaseParent0 * X_ParentJoint;
-      next.C = to_float(X_BaseJoint0.inverse() * X_BaseNext0);
+      next.C_d = X_BaseJoint0.inverse() * X_BaseNext0;
+      next.C = to_float(next.C_d);
       X_BaseJoint0 = X_BaseNext0;
       joints_.push_back(next);
     }
     links_.push_back({joint, X_BaseJoint0.inverse() * X0[s]});
   }
-  // The joint frames must reproduce the chain.
+  // The joint frames must reproduce the chain, in float and in double.
   bool agree = joints_.size() == dof;
   RandomStream random(7);
   std::vector<Pose3f> mine(dof);
+  std::vector<Eigen::Isometry3d> mine_d(links_.size());
   for (int trial = 0; trial < 64 && agree; ++trial) {
     const Eigen::VectorXd q = arm.random_configuration(random);
     const std::vector<Eigen::Isometry3d> theirs = arm.link_poses(q);
     joint_poses(q.data(), mine.data());
+    link_poses(q.data(), mine_d.data());
     for (std::size_t s = 0; s < theirs.size(); ++s) {
       const Link& link = links_[s];
       const Eigen::Isometry3d X_BaseJoint =
           link.joint < 0 ? Eigen::Isometry3d::Identity() : to_double(mine[std::size_t(link.joint)]);
-      if (pose_error(X_BaseJoint * link.X_JointLink, theirs[s]) > kAgreement) agree = false;
+      if (pose_error(X_BaseJoint * link.X_JointLink, theirs[s]) > kAgreement ||
+          pose_error(mine_d[s], theirs[s]) > kAgreementDouble)
+        agree = false;
     }
   }
   if (!agree)
@@ -143,6 +149,27 @@ void ScrewChain::joint_poses(const double* q_rad, Pose3f* X_BaseJoint) const {
       }
     }
     X_BaseJoint[j] = X;
+  }
+}
+
+void ScrewChain::link_poses(const double* q_rad, Eigen::Isometry3d* X_BaseLink) const {
+  Eigen::Isometry3d X = Eigen::Isometry3d::Identity();
+  int joint = -1;
+  for (std::size_t s = 0; s < links_.size(); ++s) {
+    while (joint < links_[s].joint) {  // the joints down to this link's
+      const Joint& next = joints_[std::size_t(++joint)];
+      X = X * next.C_d;
+      const double q = q_rad[joint];
+      if (next.prismatic) {
+        X.translation() += q * X.linear().col(2);  // X * Tz(q)
+      } else {
+        const double c = std::cos(q), sn = std::sin(q);  // X * Rz(q): two columns turn
+        const Eigen::Vector3d x = X.linear().col(0), y = X.linear().col(1);
+        X.linear().col(0) = c * x + sn * y;
+        X.linear().col(1) = c * y - sn * x;
+      }
+    }
+    X_BaseLink[s] = X * links_[s].X_JointLink;
   }
 }
 

@@ -45,13 +45,21 @@ class ScrewChain {
   /// X_BaseJoint of every joint frame at `q_rad` (dof() values) into `X_BaseJoint`.
   void joint_poses(const double* q_rad, Pose3f* X_BaseJoint) const;
 
+  /// The same kinematics in double, for the exact checks: X_BaseLink of every link of
+  /// KinematicChain::link_names() at `q_rad` into `X_BaseLink` (links() of them), without
+  /// allocating. Agrees with KinematicChain::link_poses() to rounding (the constructor checks
+  /// it to 1e-9).
+  void link_poses(const double* q_rad, Eigen::Isometry3d* X_BaseLink) const;
+  std::size_t links() const { return links_.size(); }
+
   /// The joint frame link `link` of KinematicChain::link_names() hangs from (-1: the base),
   /// and the pose of the link in it.
   int joint_of(std::size_t link) const { return links_[link].joint; }
   /// q_rad for joint j as the float kinematics take it: a revolute joint's angle reduced to
   /// [-pi, pi] in double (float keeps a large angle too coarsely), a prismatic joint's as is.
   double reduced(std::size_t j, double q_rad) const {
-    return joints_[j].prismatic ? q_rad : std::remainder(q_rad, 2.0 * M_PI);
+    return joints_[j].prismatic || std::abs(q_rad) <= M_PI ? q_rad
+                                                           : std::remainder(q_rad, 2.0 * M_PI);
   }
   /// Joint j's frame at q = 0 in joint j - 1's (or the base's), and whether it slides.
   const Pose3f& constant(std::size_t j) const { return joints_[j].C; }
@@ -62,6 +70,7 @@ class ScrewChain {
   struct Joint {
     bool prismatic = false;
     Pose3f C{};  // the joint frame at q = 0 in the previous joint's frame (or the base)
+    Eigen::Isometry3d C_d = Eigen::Isometry3d::Identity();  // the same in double
   };
   struct Link {
     int joint = -1;

@@ -193,11 +193,88 @@ ANTIPODE_INLINE void batch_spheres(const KernelArm& a, const float* __restrict f
   }
 }
 
+// The bounds of every lane, as batch_spheres() places the spheres (a fixed bound everywhere
+// the same).
+ANTIPODE_INLINE void batch_bounds(const KernelArm& a, const float* __restrict frames,
+                                  float* __restrict x, float* __restrict y, float* __restrict z) {
+  for (int b = 0; b < a.bounds; ++b) {
+    const int j = a.bound_joint[b];
+    const float lx = a.bound_lx[b], ly = a.bound_ly[b], lz = a.bound_lz[b];
+    float* xb = x + b * L;
+    float* yb = y + b * L;
+    float* zb = z + b * L;
+    if (j < 0) {
+      for (int l = 0; l < L; ++l) xb[l] = lx, yb[l] = ly, zb[l] = lz;
+      continue;
+    }
+    const float* F = frames + std::ptrdiff_t(j) * 12 * L;
+    for (int l = 0; l < L; ++l) {
+      xb[l] = F[0 * L + l] * lx + F[1 * L + l] * ly + F[2 * L + l] * lz + F[9 * L + l];
+      yb[l] = F[3 * L + l] * lx + F[4 * L + l] * ly + F[5 * L + l] * lz + F[10 * L + l];
+      zb[l] = F[6 * L + l] * lx + F[7 * L + l] * ly + F[8 * L + l] * lz + F[11 * L + l];
+    }
+  }
+}
+
+// Whether bounds i and j (placed at x, y, z) overlap in any lane.
+ANTIPODE_INLINE bool bounds_meet(const KernelArm& a, const float* __restrict x,
+                                 const float* __restrict y, const float* __restrict z, int i,
+                                 int j) {
+  const float* xi = x + i * L;
+  const float* yi = y + i * L;
+  const float* zi = z + i * L;
+  const float* xj = x + j * L;
+  const float* yj = y + j * L;
+  const float* zj = z + j * L;
+  const float reach = a.bound_r[i] + a.bound_r[j];
+  std::int32_t any = 0;
+  for (int l = 0; l < L; ++l) {
+    const float dx = xi[l] - xj[l], dy = yi[l] - yj[l], dz = zi[l] - zj[l];
+    any |= std::int32_t(dx * dx + dy * dy + dz * dz <= reach * reach);
+  }
+  return any != 0;
+}
+
+// Whether sphere (x, y, z, r) meets box b in any lane.
+ANTIPODE_INLINE bool box_met(const KernelBox& b, const float* __restrict x,
+                             const float* __restrict y, const float* __restrict z, float r) {
+  std::int32_t any = 0;
+  for (int l = 0; l < L; ++l) any |= std::int32_t(gap2(b, x[l], y[l], z[l]) <= r * r);
+  return any != 0;
+}
+
 // Lanes where sphere k (radius r) meets box b, OR-ed into hit.
 ANTIPODE_INLINE void batch_box(const KernelBox& b, const float* __restrict x,
                                const float* __restrict y, const float* __restrict z, float r,
                                std::int32_t* __restrict hit) {
   for (int l = 0; l < L; ++l) hit[l] |= std::int32_t(gap2(b, x[l], y[l], z[l]) <= r * r);
+}
+
+// Lanes where sphere pair (i, j) overlaps - j a moving sphere, or from a.moving on a fixed one
+// - OR-ed into hit.
+ANTIPODE_INLINE void pair_test(const KernelArm& a, const float* __restrict x,
+                               const float* __restrict y, const float* __restrict z, int i, int j,
+                               std::int32_t* __restrict hit) {
+  const float* xi = x + i * L;
+  const float* yi = y + i * L;
+  const float* zi = z + i * L;
+  if (j < a.moving) {
+    const float* xj = x + j * L;
+    const float* yj = y + j * L;
+    const float* zj = z + j * L;
+    const float reach = a.r[i] + a.r[j];
+    for (int l = 0; l < L; ++l) {
+      const float dx = xi[l] - xj[l], dy = yi[l] - yj[l], dz = zi[l] - zj[l];
+      hit[l] |= std::int32_t(dx * dx + dy * dy + dz * dz <= reach * reach);
+    }
+  } else {
+    const int f = j - a.moving;
+    const float fx = a.fx[f], fy = a.fy[f], fz = a.fz[f], reach = a.r[i] + a.fr[f];
+    for (int l = 0; l < L; ++l) {
+      const float dx = xi[l] - fx, dy = yi[l] - fy, dz = zi[l] - fz;
+      hit[l] |= std::int32_t(dx * dx + dy * dy + dz * dz <= reach * reach);
+    }
+  }
 }
 
 ANTIPODE_INLINE std::uint32_t lanes_of(const std::int32_t* hit) {
@@ -206,60 +283,89 @@ ANTIPODE_INLINE std::uint32_t lanes_of(const std::int32_t* hit) {
   return bits;
 }
 
+// Moves what one group of tests found into `hit` and, when wanted, into *out as bits by lane;
+// clears `found` for the next group.
+ANTIPODE_INLINE void take(std::int32_t* __restrict found, std::int32_t* __restrict hit,
+                          std::uint32_t* out) {
+  if (out != nullptr) *out = lanes_of(found);
+  for (int l = 0; l < L; ++l) {
+    hit[l] |= found[l];
+    found[l] = 0;
+  }
+}
+
+// Entry `i` of `array` in `where`, or null when nothing is recorded.
+#define ANTIPODE_ENTRY(array, i) (where != nullptr ? where->array + (i) : nullptr)
+
 ANTIPODE_INLINE std::uint32_t batch_loop(const KernelArm& a, const KernelBox* boxes, int box_count,
-                                         const KernelGrid* grid, const float* q, float* scratch) {
+                                         const KernelGrid* grid, const float* q, float* scratch,
+                                         KernelContacts* where) {
   float* frames = scratch;
   float* x = frames + std::ptrdiff_t(a.dof) * 12 * L;
   float* y = x + a.moving * L;
   float* z = y + a.moving * L;
+  float* bx = z + a.moving * L;
+  float* by = bx + a.bounds * L;
+  float* bz = by + a.bounds * L;
   batch_kinematics(a, q, frames);
   batch_spheres(a, frames, x, y, z);
+  batch_bounds(a, frames, bx, by, bz);
   alignas(64) std::int32_t hit[L] = {};
-  // The robot: sphere pairs, then its fixed boxes.
-  for (int p = 0; p < a.pairs; ++p) {
-    const int i = a.pair_a[p], j = a.pair_b[p];
-    const float* xi = x + i * L;
-    const float* yi = y + i * L;
-    const float* zi = z + i * L;
-    if (j < a.moving) {
-      const float* xj = x + j * L;
-      const float* yj = y + j * L;
-      const float* zj = z + j * L;
-      const float reach = a.r[i] + a.r[j];
-      for (int l = 0; l < L; ++l) {
-        const float dx = xi[l] - xj[l], dy = yi[l] - yj[l], dz = zi[l] - zj[l];
-        hit[l] |= std::int32_t(dx * dx + dy * dy + dz * dz <= reach * reach);
-      }
-    } else {
-      const int f = j - a.moving;
-      const float fx = a.fx[f], fy = a.fy[f], fz = a.fz[f], reach = a.r[i] + a.fr[f];
-      for (int l = 0; l < L; ++l) {
-        const float dx = xi[l] - fx, dy = yi[l] - fy, dz = zi[l] - fz;
-        hit[l] |= std::int32_t(dx * dx + dy * dy + dz * dz <= reach * reach);
-      }
+  alignas(64) std::int32_t found[L] = {};
+  // The robot: sphere pairs, then its fixed boxes, a link pair's or a link and box's only
+  // where their bounds meet.
+  for (int g = 0; g < a.groups; ++g) {
+    std::uint32_t* out = ANTIPODE_ENTRY(groups, g);
+    if (a.cull && !bounds_meet(a, bx, by, bz, a.group_a[g], a.group_b[g])) {
+      if (out != nullptr) *out = 0;
+      continue;
     }
+    for (int p = a.group_first[g]; p < a.group_first[g + 1]; ++p)
+      pair_test(a, x, y, z, a.pair_a[p], a.pair_b[p], found);
+    take(found, hit, out);
   }
-  for (int p = 0; p < a.box_pairs; ++p) {
-    const int k = a.box_sphere[p];
-    batch_box(a.robot_boxes[a.box_index[p]], x + k * L, y + k * L, z + k * L, a.r[k], hit);
+  for (int g = 0; g < a.box_groups; ++g) {
+    std::uint32_t* out = ANTIPODE_ENTRY(box_groups, g);
+    const KernelBox& box = a.robot_boxes[a.box_group_box[g]];
+    const int b = a.box_group_bound[g];
+    if (a.cull && !box_met(box, bx + b * L, by + b * L, bz + b * L, a.bound_r[b])) {
+      if (out != nullptr) *out = 0;
+      continue;
+    }
+    for (int p = a.box_group_first[g]; p < a.box_group_first[g + 1]; ++p) {
+      const int k = a.box_sphere[p];
+      batch_box(box, x + k * L, y + k * L, z + k * L, a.r[k], found);
+    }
+    take(found, hit, out);
   }
-  if (lanes_of(hit) == (std::uint32_t(1) << L) - 1) return lanes_of(hit);
-  // The scene: its boxes, then the points.
-  for (int b = 0; b < box_count; ++b)
-    for (int k = 0; k < a.moving; ++k)
-      if (a.joint[k] >= 0) batch_box(boxes[b], x + k * L, y + k * L, z + k * L, a.r[k], hit);
-  if (grid != nullptr) {
-    std::uint8_t touches[L];
-    for (int k = 0; k < a.moving; ++k) {
+  if (where == nullptr && lanes_of(hit) == (std::uint32_t(1) << L) - 1) return lanes_of(hit);
+  // The scene: its boxes, a link's spheres only where its bound meets the box; then the points.
+  for (int c = 0; c < box_count; ++c)
+    for (int b = 0; b < a.moving_bounds; ++b) {
+      std::uint32_t* out = ANTIPODE_ENTRY(scene_boxes, b * box_count + c);
+      if (a.cull && !box_met(boxes[c], bx + b * L, by + b * L, bz + b * L, a.bound_r[b])) {
+        if (out != nullptr) *out = 0;
+        continue;
+      }
+      for (int k = a.bound_first[b]; k < a.bound_end[b]; ++k)
+        batch_box(boxes[c], x + k * L, y + k * L, z + k * L, a.r[k], found);
+      take(found, hit, out);
+    }
+  for (int b = 0; b < a.moving_bounds; ++b) {
+    for (int k = a.bound_first[b]; grid != nullptr && k < a.bound_end[b]; ++k) {
       if (a.points_r[k] < 0.0f) continue;
+      std::uint8_t touches[L];
       float r[L];
       for (int l = 0; l < L; ++l) r[l] = a.points_r[k];
       grid_loop(*grid, x + k * L, y + k * L, z + k * L, r, kBatchLanes, touches);
-      for (int l = 0; l < L; ++l) hit[l] |= touches[l];
+      for (int l = 0; l < L; ++l) found[l] |= touches[l];
     }
+    take(found, hit, ANTIPODE_ENTRY(points, b));
   }
   return lanes_of(hit);
 }
+
+#undef ANTIPODE_ENTRY
 
 ANTIPODE_INLINE void min_shifted_loop(float* __restrict out, const float* __restrict in,
                                       std::ptrdiff_t n, std::ptrdiff_t offset, float add) {
@@ -290,8 +396,8 @@ ANTIPODE_BUILDS(overlaps, overlaps_loop,
                 (x, y, z, r, rows, columns, allowed, row_begin, row_end, hits))
 ANTIPODE_BUILDS(batch, batch_loop,
                 (const KernelArm& a, const KernelBox* boxes, int box_count, const KernelGrid* grid,
-                 const float* q, float* scratch),
-                (a, boxes, box_count, grid, q, scratch))
+                 const float* q, float* scratch, KernelContacts* where),
+                (a, boxes, box_count, grid, q, scratch, where))
 ANTIPODE_BUILDS(min_shifted, min_shifted_loop,
                 (float* out, const float* in, std::ptrdiff_t n, std::ptrdiff_t offset, float add),
                 (out, in, n, offset, add))
@@ -314,6 +420,11 @@ std::atomic<SimdLevel>& level() {
   return current;
 }
 
+std::atomic<bool>& culling() {
+  static std::atomic<bool> on{true};
+  return on;
+}
+
 }  // namespace
 
 SimdLevel simd_level() { return level().load(std::memory_order_relaxed); }
@@ -323,6 +434,10 @@ SimdLevel set_simd_level(SimdLevel wanted) {
   level().store(set);
   return set;
 }
+
+bool sphere_culling() { return culling().load(std::memory_order_relaxed); }
+
+void set_sphere_culling(bool on) { culling().store(on); }
 
 const char* to_string(SimdLevel l) {
   switch (l) {
@@ -366,9 +481,10 @@ void mark_near_points(const KernelGrid& grid, const float* x, const float* y, co
                       const float* r, int n, std::uint8_t* touches){
     ANTIPODE_DISPATCH(grid, (grid, x, y, z, r, n, touches))}
 
-std::uint32_t mark_batch(const KernelArm& arm, const KernelBox* boxes, int box_count,
-                         const KernelGrid* grid, const float* q, float* scratch) {
-  ANTIPODE_DISPATCH(batch, (arm, boxes, box_count, grid, q, scratch))
+std::uint32_t
+    mark_batch(const KernelArm& arm, const KernelBox* boxes, int box_count, const KernelGrid* grid,
+               const float* q, float* scratch, KernelContacts* where) {
+  ANTIPODE_DISPATCH(batch, (arm, boxes, box_count, grid, q, scratch, where))
   return 0;
 }
 
@@ -376,7 +492,7 @@ void min_shifted(float* out, const float* in, std::ptrdiff_t n, std::ptrdiff_t o
                  float add){ANTIPODE_DISPATCH(min_shifted, (out, in, n, offset, add))}
 
 std::size_t batch_scratch_floats(const KernelArm& arm) {
-  return std::size_t(arm.dof * 12 + 3 * arm.moving) * kBatchLanes;
+  return std::size_t(arm.dof * 12 + 3 * arm.moving + 3 * arm.bounds) * kBatchLanes;
 }
 
 }  // namespace antipode::collision

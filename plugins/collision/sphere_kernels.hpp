@@ -7,8 +7,8 @@
 // and branch-free: the compiler's own vectorization reaches the width (bench/collision
 // measures all three levels side by side).
 //
-// Units: metres, float. Threads: the functions keep no state; set_simd_level() must not run
-// concurrently with them.
+// Units: metres, float. Threads: the functions keep no state; set_simd_level() and
+// set_sphere_culling() must not run concurrently with them.
 
 #include <cstdint>
 
@@ -65,6 +65,12 @@ void mark_near_points(const KernelGrid& grid, const float* x, const float* y, co
 /// out[i] = min(out[i], add + in[i + offset]) for i in [0, n) (the distance grid's passes).
 void min_shifted(float* out, const float* in, std::ptrdiff_t n, std::ptrdiff_t offset, float add);
 
+/// Whether mark_batch() skips the tests that the links' bounding spheres show apart (the
+/// default) or runs every one; the answer is the same. For measuring one against the other:
+/// must not run concurrently with the kernels.
+bool sphere_culling();
+void set_sphere_culling(bool on);
+
 /// Configurations checked at once by mark_batch(): one per lane of the widest vectors.
 constexpr int kBatchLanes = 16;
 
@@ -74,6 +80,17 @@ constexpr int kBatchLanes = 16;
 /// fixed spheres (base frame), the sphere pairs to test (a moving sphere with a moving one, or,
 /// from `moving` on, with fixed sphere b - moving), and the moving spheres' pairs with the
 /// robot's fixed boxes.
+///
+/// The links' bounding spheres let mark_batch() skip whole groups of tests: bound b holds the
+/// spheres of one link, in joint bound_joint[b]'s frame (-1: a fixed link, base frame); the
+/// first `moving_bounds` are the moving links', holding the moving spheres [bound_first[b],
+/// bound_end[b]), which together are every moving sphere but the padding. The sphere pairs
+/// come grouped by link pair: group g covers pairs [group_first[g], group_first[g + 1]) and
+/// every one of them lies between bounds group_a[g] and group_b[g]; the box pairs likewise,
+/// group g between bound box_group_bound[g] and robot box box_group_box[g]. A group whose two
+/// bounds are apart in every lane is skipped: its spheres, inside them, are apart too, so the
+/// answer is the same as testing every pair (`cull` false, for measuring one against the
+/// other).
 struct KernelArm {
   int dof;
   const float* C;  ///< dof x 12: R row by row, then t
@@ -88,13 +105,36 @@ struct KernelArm {
   int box_pairs;
   const std::int32_t *box_sphere, *box_index;
   const KernelBox* robot_boxes;
+  bool cull;
+  int bounds, moving_bounds;
+  const std::int32_t* bound_joint;
+  const float *bound_lx, *bound_ly, *bound_lz, *bound_r;
+  const std::int32_t *bound_first, *bound_end;
+  int groups;
+  const std::int32_t *group_a, *group_b, *group_first;
+  int box_groups;
+  const std::int32_t *box_group_bound, *box_group_box, *box_group_first;
+};
+
+/// Where mark_batch() found contacts, as bits by lane, so that a flagged lane can be confirmed
+/// without placing its spheres again: per group of sphere pairs (`groups` entries), per group
+/// of box pairs (`box_groups`), per moving bound and scene box (moving_bounds x box_count,
+/// bound by bound), and per moving bound against the points (moving_bounds). A skipped
+/// group's entry is 0.
+struct KernelContacts {
+  std::uint32_t* groups;
+  std::uint32_t* box_groups;
+  std::uint32_t* scene_boxes;
+  std::uint32_t* points;
 };
 
 /// For kBatchLanes configurations (q: dof x kBatchLanes, joint by joint), the lanes whose
 /// spheres touch anything - the robot (pairs), its fixed boxes, `boxes` or `grid` (null: no
-/// points) - as bits. `scratch` holds at least batch_scratch_floats(arm) floats.
+/// points) - as bits; and, unless `where` is null, where. `scratch` holds at least
+/// batch_scratch_floats(arm) floats.
 std::uint32_t mark_batch(const KernelArm& arm, const KernelBox* boxes, int box_count,
-                         const KernelGrid* grid, const float* q, float* scratch);
+                         const KernelGrid* grid, const float* q, float* scratch,
+                         KernelContacts* where = nullptr);
 std::size_t batch_scratch_floats(const KernelArm& arm);
 
 }  // namespace antipode::collision

@@ -2,7 +2,8 @@
 // distance grid never calls a touching sphere clear, the float forward kinematics agrees with
 // the chain's, and, over 100,000 random configurations per scene and robot, the spheres never
 // call a contact free that FCL finds, disagree with it on few configurations, and spheres
-// followed by FCL give FCL's own answer.
+// followed by FCL give FCL's own answer; checking 16 configurations at once gives the same
+// answers whether or not the links' bounding spheres skip tests.
 
 #include <cmath>
 #include <cstdio>
@@ -19,6 +20,7 @@
 #include "distance_grid.hpp"
 #include "screw_chain.hpp"
 #include "sphere_cover.hpp"
+#include "sphere_kernels.hpp"
 #include "support/error_of.hpp"
 
 namespace antipode::collision {
@@ -214,12 +216,18 @@ TEST(ScrewChain, AgreesWithTheChainsForwardKinematics) {
     const ScrewChain fast(arm);
     RandomStream random(5);
     std::vector<Pose3f> joints(fast.dof());
-    double worst = 0.0;
+    std::vector<Eigen::Isometry3d> in_double(fast.links());
+    double worst = 0.0, worst_double = 0.0;
     for (int i = 0; i < 1000; ++i) {
       const Eigen::VectorXd q = arm.random_configuration(random);
       fast.joint_poses(q.data(), joints.data());
+      fast.link_poses(q.data(), in_double.data());
       const std::vector<Eigen::Isometry3d> links = arm.link_poses(q);
+      ASSERT_EQ(links.size(), fast.links());
       for (std::size_t s = 0; s < links.size(); ++s) {
+        worst_double =
+            std::max({worst_double, (in_double[s].translation() - links[s].translation()).norm(),
+                      (in_double[s].linear() - links[s].linear()).cwiseAbs().maxCoeff()});
         const int j = fast.joint_of(s);
         Eigen::Isometry3d X = Eigen::Isometry3d::Identity();
         if (j >= 0)
@@ -232,6 +240,7 @@ TEST(ScrewChain, AgreesWithTheChainsForwardKinematics) {
       }
     }
     EXPECT_LT(worst, 1e-5) << file;
+    EXPECT_LT(worst_double, 1e-12) << file;  // the exact checks' poses: KDL's to rounding
   }
 }
 
@@ -354,6 +363,48 @@ TEST(SphereCollision, PandaAloneIsConservative) {
 }
 TEST(SphereCollision, PandaInTheCellIsConservative) {
   expect_conservative("robots/panda/panda.yaml", cell_scene(), 0.3);
+}
+
+// The batched check skips the sphere tests of a link pair, or a link and a box, whose bounding
+// spheres are apart in all of a batch's configurations; it must flag the configurations that
+// testing every pair flags: one at a time (every lane the same), and 16 different ones at a
+// time (the first flagged, which a skip decided by one lane alone would miss).
+void expect_culling_changes_nothing(const char* robot_path, const Scene& scene) {
+  const RobotFile file = read_robot_file(source(robot_path));
+  const RobotModel robot = RobotModel::load(file.urdf_path);
+  const ArmCollisionWorld spheres = world_of(robot, file, scene, CheckMode::kSpheres);
+  const KinematicChain arm = robot.chain(robot.root_link(), file.arm_tip);
+  RandomStream random(29);
+  int flagged = 0;
+  for (int batch = 0; batch < 2000; ++batch) {
+    std::vector<Eigen::VectorXd> qs;
+    for (int i = 0; i < kBatchLanes; ++i) qs.push_back(arm.random_configuration(random));
+    set_sphere_culling(false);
+    const std::size_t dense = spheres.first_contact(qs);
+    std::vector<std::size_t> dense_one;
+    for (const Eigen::VectorXd& q : qs) dense_one.push_back(spheres.first_contact({q}));
+    set_sphere_culling(true);
+    ASSERT_EQ(spheres.first_contact(qs), dense) << "batch " << batch;
+    for (std::size_t i = 0; i < qs.size(); ++i) {
+      ASSERT_EQ(spheres.first_contact({qs[i]}), dense_one[i]) << "batch " << batch << ", " << i;
+      flagged += dense_one[i] == 0;
+    }
+  }
+  // Both answers occur often enough for the comparison to mean something.
+  EXPECT_GT(flagged, 1000);
+  EXPECT_LT(flagged, 29000);
+}
+
+TEST(SphereCollision, BaxterSkipsOnlyTestsThatCannotHit) {
+  Scene boxes = cell_scene();
+  boxes.points.clear();
+  expect_culling_changes_nothing("robots/baxter/baxter.yaml", boxes);
+  expect_culling_changes_nothing("robots/baxter/baxter.yaml", cell_scene());
+}
+TEST(SphereCollision, PandaSkipsOnlyTestsThatCannotHit) {
+  Scene boxes = cell_scene();
+  boxes.points.clear();
+  expect_culling_changes_nothing("robots/panda/panda.yaml", boxes);
 }
 
 }  // namespace
