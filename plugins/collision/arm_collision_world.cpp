@@ -125,6 +125,9 @@ struct ArmCollisionWorld::Impl {
   std::vector<Link> links;
   std::size_t shape_count = 0;
   std::vector<std::pair<std::size_t, std::size_t>> pairs;  // indices into links
+  // FCL's shape poses: the fixed links' placed once, a moving link's shape at its arm link's
+  // pose times a constant.
+  std::vector<Eigen::Isometry3d> still_poses, X_ArmLinkShape;
   std::vector<Box> boxes;
   Shape points;                        // geometry null when there are none
   std::vector<char> points_unchecked;  // per link
@@ -148,9 +151,7 @@ struct ArmCollisionWorld::Impl {
     return poses;
   }
 
-  // Every shape's pose with the arm at `q`: the fixed links' as placed once (still_poses),
-  // a moving link's shape at its arm link's pose times a constant (X_ArmLinkShape).
-  std::vector<Eigen::Isometry3d> still_poses, X_ArmLinkShape;
+  // Fills still_poses and X_ArmLinkShape from the arm's link poses at any configuration.
   void place_still_shapes(const std::vector<Eigen::Isometry3d>& any_arm_poses) {
     still_poses = shape_poses(any_arm_poses);
     X_ArmLinkShape.assign(shape_count, Eigen::Isometry3d::Identity());
@@ -158,6 +159,7 @@ struct ArmCollisionWorld::Impl {
       for (std::size_t k = 0; link.moving && k < link.shapes.size(); ++k)
         X_ArmLinkShape[link.first_shape + k] = link.X_ParentLink * link.shapes[k].X_LinkShape;
   }
+  // Every shape's pose with the arm at `q` (the arm's link poses in a thread-local buffer).
   std::vector<Eigen::Isometry3d> shape_poses_at(const Eigen::VectorXd& q) const {
     thread_local std::vector<Eigen::Isometry3d> arm_poses;
     arm_poses.resize(fk->links());

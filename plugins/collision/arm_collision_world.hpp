@@ -66,7 +66,9 @@ class ArmCollisionWorld {
  public:
   /// The arm is `arm` (a chain of `robot`); `joint_values` fixes any other joint by name
   /// (e.g. the other arm, the fingers). Throws antipode::Error for an unknown joint name or
-  /// a link with an unsupported shape.
+  /// a link with an unsupported shape; antipode::InternalError when the arm's joint axes,
+  /// read off the chain, do not reproduce its forward kinematics (screw_chain.hpp, which
+  /// places the shapes in every mode).
   ArmCollisionWorld(const RobotModel& robot, const KinematicChain& arm,
                     const std::map<std::string, double>& joint_values = {},
                     const CollisionOptions& options = {});
@@ -97,7 +99,8 @@ class ArmCollisionWorld {
 
   /// The index of the first of `qs` (in their order) in contact, or qs.size() when every one
   /// is free, with the spheres testing 16 configurations at a time (in kSpheresThenExact mode
-  /// check() confirming, in order, the ones they flag): check()'s answers in kExact and
+  /// FCL confirming, in order, the ones they flag, on the link pairs and the links and
+  /// obstacles whose spheres touch there): check()'s answers in kExact and
   /// kSpheresThenExact mode; in kSpheres mode as conservative as check(), though a state at
   /// the edge of a sphere may come out otherwise (the batch computes its sines apart).
   /// Throws like check().

@@ -1,22 +1,23 @@
 #pragma once
-// Forward kinematics of a KinematicChain in float, without allocation, in the frames of its
-// joints: joint j's frame has its z axis on the joint's axis and turns (or slides) with it,
-// so that X_BaseJoint_j = X_BaseJoint_{j-1} * C_j * Rz(q_j) (or * Tz(q_j)) with C_j constant.
-// That is one full product and one rotation about z per joint, with the chain's fixed joints
-// folded into the constants. Every link of the chain hangs from the joint frame before it by
-// a constant X_JointLink (links before the first joint from the base).
+// Forward kinematics of a KinematicChain without allocation, in the frames of its joints:
+// joint j's frame has its z axis on the joint's axis and turns (or slides) with it, so that
+// X_BaseJoint_j = X_BaseJoint_{j-1} * C_j * Rz(q_j) (or * Tz(q_j)) with C_j constant. That is
+// one full product and one rotation about z per joint, with the chain's fixed joints folded
+// into the constants. Every link of the chain hangs from the joint frame before it by a
+// constant X_JointLink (links before the first joint from the base). In float for the sphere
+// tests (joint_poses), in double for placing FCL's shapes (link_poses).
 //
 // The joints' axes are read off the chain itself (its link poses with one joint moved at a
 // time), so this agrees with KinematicChain::link_poses() for any URDF the chain accepts; the
-// constructor checks that at random configurations (to 1e-4 m and rad: float rounding over a
-// chain of a metre or two).
+// constructor checks that at random configurations: to 1e-5 m and rad in float (rounding over
+// a chain of a metre or two), to 1e-9 in double.
 //
-// Why not KinematicChain::link_poses(): it goes through orocos-kdl in double and returns a
-// new vector per call (0.4 us for Baxter's arm); the fast collision path (sphere_arm.hpp)
-// needs the arm's pose millions of times a second.
+// Why not KinematicChain::link_poses(): it goes through orocos-kdl and returns a new vector
+// per call (0.4 us for Baxter's arm); the collision checks need the arm's pose millions of
+// times a second.
 //
 // Frames and units as KinematicChain: metres, radians. Threads: immutable after
-// construction; joint_poses() may run concurrently.
+// construction; joint_poses() and link_poses() may run concurrently.
 
 #include <cmath>
 #include <vector>

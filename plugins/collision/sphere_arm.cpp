@@ -2,12 +2,12 @@
 
 #include <algorithm>
 #include <atomic>
-#include <functional>
 #include <iterator>
 #include <numeric>
 #include <string>
 
 #include "antipode/core/error.hpp"
+#include "link_bounds.hpp"
 #include "sphere_cover.hpp"
 
 namespace antipode::collision {
@@ -23,36 +23,6 @@ const Eigen::Vector3d kFarAway_m = Eigen::Vector3d::Constant(1e6);
 // A link's bounding sphere reaches this much beyond its spheres: float rounding places the
 // bound and the spheres from the same joint frame, off by far less.
 constexpr double kBoundMargin_m = 1e-4;
-
-// Reorders the pairs (a[p], b[p]) so that pairs of one key come together, each group in the
-// order its pairs had; the keys of the groups (ka, kb) and where each group starts in `first`
-// (and the end last).
-void group_by_key(std::vector<std::int32_t>& a, std::vector<std::int32_t>& b,
-                  const std::function<std::pair<int, int>(std::size_t)>& key,
-                  std::vector<std::int32_t>& ka, std::vector<std::int32_t>& kb,
-                  std::vector<std::int32_t>& first) {
-  std::vector<std::size_t> order(a.size());
-  std::iota(order.begin(), order.end(), std::size_t(0));
-  std::stable_sort(order.begin(), order.end(),
-                   [&](std::size_t p, std::size_t q) { return key(p) < key(q); });
-  std::vector<std::int32_t> sorted_a, sorted_b;
-  ka.clear();
-  kb.clear();
-  first.clear();
-  for (std::size_t n = 0; n < order.size(); ++n) {
-    const auto k = key(order[n]);
-    if (n == 0 || k != key(order[n - 1])) {
-      ka.push_back(k.first);
-      kb.push_back(k.second);
-      first.push_back(std::int32_t(n));
-    }
-    sorted_a.push_back(a[order[n]]);
-    sorted_b.push_back(b[order[n]]);
-  }
-  first.push_back(std::int32_t(order.size()));
-  a = std::move(sorted_a);
-  b = std::move(sorted_b);
-}
 
 }  // namespace
 
@@ -103,7 +73,6 @@ SphereArm::SphereArm(const KinematicChain& arm, const std::vector<Link>& links,
   }
   pad(kLanes);
   allow_pairs(self_pairs);
-  bound_links();
   group_pairs();
   for (std::size_t j = 0; j < chain_.dof(); ++j) {
     const Pose3f& C = chain_.constant(j);
@@ -190,61 +159,19 @@ void SphereArm::allow_pairs(const std::vector<std::pair<std::size_t, std::size_t
       }
 }
 
-// One bounding sphere per link with spheres: centred in the box of its spheres' centres,
-// reaching past the farthest sphere by kBoundMargin_m. A link's spheres are consecutive.
-void SphereArm::bound_links() {
-  link_bound_.assign(links_, -1);
-  for (const bool moving : {true, false})
-    for (std::size_t first = 0; first < owner_.size();) {
-      const int link = owner_[first];
-      std::size_t end = first + 1;
-      while (end < owner_.size() && owner_[end] == link) ++end;
-      if (link < 0 || (link_joint_[std::size_t(link)] >= 0) != moving) {
-        first = end;
-        continue;
-      }
-      Eigen::Vector3d lo = Eigen::Vector3d::Constant(1e30), hi = -lo;
-      for (std::size_t k = first; k < end; ++k) {
-        const Eigen::Vector3d c(lx_[k], ly_[k], lz_[k]);
-        lo = lo.cwiseMin(c);
-        hi = hi.cwiseMax(c);
-      }
-      const Eigen::Vector3d centre = (lo + hi) / 2;
-      double reach = 0.0;
-      for (std::size_t k = first; k < end; ++k)
-        reach = std::max(reach, (Eigen::Vector3d(lx_[k], ly_[k], lz_[k]) - centre).norm() + r_[k]);
-      link_bound_[std::size_t(link)] = int(bound_r_.size());
-      bound_link_.push_back(link);
-      bound_joint_.push_back(link_joint_[std::size_t(link)]);
-      bound_first_.push_back(std::int32_t(first));
-      bound_end_.push_back(std::int32_t(end));
-      bound_lx_.push_back(float(centre.x()));
-      bound_ly_.push_back(float(centre.y()));
-      bound_lz_.push_back(float(centre.z()));
-      bound_r_.push_back(float(reach + kBoundMargin_m));
-      if (moving) moving_bounds_ = int(bound_r_.size());
-      first = end;
-    }
-}
-
 // The sphere pairs grouped by the bounds of their links, the box pairs by the bound of the
 // sphere's link and the box.
 void SphereArm::group_pairs() {
+  bounds_ = bound_links(owner_, link_joint_, lx_, ly_, lz_, r_, kBoundMargin_m);
   const auto bound = [this](std::int32_t sphere) {
-    return link_bound_[std::size_t(owner_[std::size_t(sphere)])];
+    return bounds_.of_link[std::size_t(owner_[std::size_t(sphere)])];
   };
-  group_by_key(
-      batch_a_, batch_b_,
-      [&](std::size_t p) {
-        return std::pair{bound(batch_a_[p]), bound(batch_b_[p])};
-      },
-      group_a_, group_b_, group_first_);
-  group_by_key(
-      box_sphere_, box_index_,
-      [&](std::size_t p) {
-        return std::pair{bound(box_sphere_[p]), int(box_index_[p])};
-      },
-      box_group_bound_, box_group_box_, box_group_first_);
+  self_groups_ = group_by_key(batch_a_, batch_b_, [&](std::size_t p) {
+    return std::pair{bound(batch_a_[p]), bound(batch_b_[p])};
+  });
+  box_groups_ = group_by_key(box_sphere_, box_index_, [&](std::size_t p) {
+    return std::pair{bound(box_sphere_[p]), int(box_index_[p])};
+  });
 }
 
 double SphereArm::max_radius_m() const {
@@ -341,30 +268,27 @@ void SphereArm::make_kernel_arm() {
   a.fy = ly_.data() + moving_;
   a.fz = lz_.data() + moving_;
   a.fr = r_.data() + moving_;
-  a.pairs = int(batch_a_.size());
   a.pair_a = batch_a_.data();
   a.pair_b = batch_b_.data();
-  a.box_pairs = int(box_sphere_.size());
   a.box_sphere = box_sphere_.data();
-  a.box_index = box_index_.data();
   a.robot_boxes = fixed_boxes_.data();
-  a.bounds = int(bound_r_.size());
-  a.moving_bounds = moving_bounds_;
-  a.bound_joint = bound_joint_.data();
-  a.bound_lx = bound_lx_.data();
-  a.bound_ly = bound_ly_.data();
-  a.bound_lz = bound_lz_.data();
-  a.bound_r = bound_r_.data();
-  a.bound_first = bound_first_.data();
-  a.bound_end = bound_end_.data();
-  a.groups = int(group_a_.size());
-  a.group_a = group_a_.data();
-  a.group_b = group_b_.data();
-  a.group_first = group_first_.data();
-  a.box_groups = int(box_group_bound_.size());
-  a.box_group_bound = box_group_bound_.data();
-  a.box_group_box = box_group_box_.data();
-  a.box_group_first = box_group_first_.data();
+  a.bounds = int(bounds_.link.size());
+  a.moving_bounds = bounds_.moving;
+  a.bound_joint = bounds_.joint.data();
+  a.bound_lx = bounds_.x.data();
+  a.bound_ly = bounds_.y.data();
+  a.bound_lz = bounds_.z.data();
+  a.bound_r = bounds_.radius.data();
+  a.bound_first = bounds_.first.data();
+  a.bound_end = bounds_.end.data();
+  a.groups = int(self_groups_.a.size());
+  a.group_a = self_groups_.a.data();
+  a.group_b = self_groups_.b.data();
+  a.group_first = self_groups_.first.data();
+  a.box_groups = int(box_groups_.a.size());
+  a.box_group_bound = box_groups_.a.data();
+  a.box_group_box = box_groups_.b.data();
+  a.box_group_first = box_groups_.first.data();
 }
 
 std::uint32_t SphereArm::contacts_batch(const double* const* q_rad, int count,
@@ -391,12 +315,12 @@ std::uint32_t SphereArm::contacts_batch(const double* const* q_rad, int count,
   if (points) g = grid.kernel();
   KernelContacts found{};
   if (where != nullptr) {
-    const std::size_t scene = std::size_t(moving_bounds_) * boxes.size();
-    where->kernel.resize(group_a_.size() + box_group_bound_.size() + scene +
-                         std::size_t(moving_bounds_));
+    const std::size_t scene = std::size_t(bounds_.moving) * boxes.size();
+    where->kernel.resize(self_groups_.a.size() + box_groups_.a.size() + scene +
+                         std::size_t(bounds_.moving));
     found.groups = where->kernel.data();
-    found.box_groups = found.groups + group_a_.size();
-    found.scene_boxes = found.box_groups + box_group_bound_.size();
+    found.box_groups = found.groups + self_groups_.a.size();
+    found.scene_boxes = found.box_groups + box_groups_.a.size();
     found.points = found.scene_boxes + scene;
   }
   std::uint32_t lanes = mark_batch(a, boxes.data(), int(boxes.size()), points ? &g : nullptr,
@@ -409,24 +333,24 @@ std::uint32_t SphereArm::contacts_batch(const double* const* q_rad, int count,
 // The kernel's groups by the self pairs and links they test.
 void SphereArm::name_contacts(const KernelContacts& found, std::size_t box_count,
                               std::uint32_t lanes, BatchContacts& where) const {
-  const auto link = [this](int bound) { return std::size_t(bound_link_[std::size_t(bound)]); };
+  const auto link = [this](int bound) { return std::size_t(bounds_.link[std::size_t(bound)]); };
   std::vector<std::uint32_t>& pair_lanes = where.pair_lanes;
   pair_lanes.assign(self_pairs_, 0);
-  for (std::size_t g = 0; g < group_a_.size(); ++g)
+  for (std::size_t g = 0; g < self_groups_.a.size(); ++g)
     if (found.groups[g] & lanes)
-      pair_lanes[std::size_t(pair_of_[link(group_a_[g]) * links_ + link(group_b_[g])])] |=
-          found.groups[g];
-  for (std::size_t g = 0; g < box_group_bound_.size(); ++g)
+      pair_lanes[std::size_t(
+          pair_of_[link(self_groups_.a[g]) * links_ + link(self_groups_.b[g])])] |= found.groups[g];
+  for (std::size_t g = 0; g < box_groups_.a.size(); ++g)
     if (found.box_groups[g] & lanes) {
-      const std::size_t owner = std::size_t(fixed_box_owner_[std::size_t(box_group_box_[g])]);
-      pair_lanes[std::size_t(pair_of_[link(box_group_bound_[g]) * links_ + owner])] |=
+      const std::size_t owner = std::size_t(fixed_box_owner_[std::size_t(box_groups_.b[g])]);
+      pair_lanes[std::size_t(pair_of_[link(box_groups_.a[g]) * links_ + owner])] |=
           found.box_groups[g];
     }
   where.self.clear();
   for (std::size_t k = 0; k < self_pairs_; ++k)
     if (pair_lanes[k] & lanes) where.self.push_back({int(k), -1, pair_lanes[k]});
   where.scene.clear();
-  for (int b = 0; b < moving_bounds_; ++b) {
+  for (int b = 0; b < bounds_.moving; ++b) {
     const int owner = int(link(b));
     for (std::size_t c = 0; c < box_count; ++c)
       if (const std::uint32_t touch = found.scene_boxes[std::size_t(b) * box_count + c] & lanes)

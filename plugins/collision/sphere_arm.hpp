@@ -9,16 +9,18 @@
 // Self-collision is tested in one pass of every moving sphere against every sphere of the
 // links it may touch (the self pairs). One configuration at a time this pass is dense: for the
 // few dozen spheres of an arm it is cheaper than the indirection a tree would add. Sixteen at
-// a time (contacts_batch) it first tests one bounding sphere per link, and skips a link pair,
-// or a link and box, that are apart in every configuration: for Baxter's 924 sphere pairs and
-// 197 sphere-box pairs in a scene of boxes, that takes about half the time of testing them
-// all (collision_bench, BM_CheckInCell_Spheres_Batch16 against its _Dense twin). The
+// a time (contacts_batch) it first tests one bounding sphere per link (link_bounds.hpp), and
+// skips a link pair, or a link and box, that are apart in every configuration: for Baxter's
+// 924 sphere pairs and 197 sphere-box pairs, among the cell's boxes, that takes a third of
+// the time of testing them all (collision_bench, BM_CheckAmongBoxes_Spheres_Batch16 against
+// its _Dense twin). The
 // boxes of links that do not move (a robot's pedestal and torso) stay boxes, tested exactly
 // against the moving spheres: large boxes need many spheres to be held closely.
 //
 // Frames and units: the robot's base frame, metres, radians. Threads: immutable after
-// construction; the tests write only to the Placement they are given, so concurrent checks
-// with one Placement per thread are safe.
+// construction; the tests write only to the Placement or BatchContacts they are given (and
+// contacts_batch to thread-local scratch), so concurrent checks with one of each per thread
+// are safe.
 
 #include <cstdint>
 #include <utility>
@@ -30,6 +32,7 @@
 #include "antipode/robot/kinematic_chain.hpp"
 #include "antipode/robot/robot_model.hpp"
 #include "distance_grid.hpp"
+#include "link_bounds.hpp"
 #include "screw_chain.hpp"
 #include "sphere_kernels.hpp"
 
@@ -123,7 +126,6 @@ class SphereArm {
   void add_sphere(const Eigen::Vector3d& centre_m, double radius_m, int owner);
   void pad(std::size_t multiple);
   void allow_pairs(const std::vector<std::pair<std::size_t, std::size_t>>& self_pairs);
-  void bound_links();
   void group_pairs();
   void make_kernel_arm();
   void name_contacts(const KernelContacts& found, std::size_t box_count, std::uint32_t lanes,
@@ -158,15 +160,10 @@ class SphereArm {
   std::vector<float> joint_constants_;
   std::vector<std::int32_t> joint_prismatic_, sphere_joint_;
   std::vector<std::int32_t> batch_a_, batch_b_, box_sphere_, box_index_;
-  // Each link's spheres held by one bounding sphere (in the spheres' frame), the moving links'
-  // first, and the pairs above grouped by the bounds they lie between (KernelArm).
-  std::vector<int> link_bound_;  // per link, its bound, or -1 for a link without spheres
-  std::vector<int> bound_link_;  // per bound, its link
-  int moving_bounds_ = 0;
-  std::vector<std::int32_t> bound_joint_, bound_first_, bound_end_;
-  std::vector<float> bound_lx_, bound_ly_, bound_lz_, bound_r_;
-  std::vector<std::int32_t> group_a_, group_b_, group_first_;
-  std::vector<std::int32_t> box_group_bound_, box_group_box_, box_group_first_;
+  // Each link's spheres held by one bounding sphere, and the pairs above grouped by the
+  // bounds they lie between (link_bounds.hpp).
+  LinkBounds bounds_;
+  PairGroups self_groups_, box_groups_;
   KernelArm kernel_{};
   ScrewChain chain_;
   double overshoot_m_ = 0.0;

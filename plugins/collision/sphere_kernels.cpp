@@ -294,8 +294,81 @@ ANTIPODE_INLINE void take(std::int32_t* __restrict found, std::int32_t* __restri
   }
 }
 
-// Entry `i` of `array` in `where`, or null when nothing is recorded.
-#define ANTIPODE_ENTRY(array, i) (where != nullptr ? where->array + (i) : nullptr)
+// Entry i of one of `where`'s arrays (null when nothing is recorded).
+ANTIPODE_INLINE std::uint32_t* entry(std::uint32_t* array, int i) {
+  return array != nullptr ? array + i : nullptr;
+}
+
+// A batch's placed spheres (x, y, z: sphere by sphere, lane by lane) and bounds (bx, by, bz),
+// what they touch so far (hit), the scratch of one group (found) and the record (where).
+struct Placed {
+  const float *x, *y, *z, *bx, *by, *bz;
+  std::int32_t* hit;
+  std::int32_t* found;
+  KernelContacts* where;
+};
+
+// The robot: sphere pairs, then its fixed boxes, a link pair's or a link and box's only where
+// their bounds meet.
+ANTIPODE_INLINE void robot_loop(const KernelArm& a, const Placed& s) {
+  KernelContacts* w = s.where;
+  for (int g = 0; g < a.groups; ++g) {
+    std::uint32_t* out = entry(w != nullptr ? w->groups : nullptr, g);
+    if (a.cull && !bounds_meet(a, s.bx, s.by, s.bz, a.group_a[g], a.group_b[g])) {
+      if (out != nullptr) *out = 0;
+      continue;
+    }
+    for (int p = a.group_first[g]; p < a.group_first[g + 1]; ++p)
+      pair_test(a, s.x, s.y, s.z, a.pair_a[p], a.pair_b[p], s.found);
+    take(s.found, s.hit, out);
+  }
+  for (int g = 0; g < a.box_groups; ++g) {
+    std::uint32_t* out = entry(w != nullptr ? w->box_groups : nullptr, g);
+    const KernelBox& box = a.robot_boxes[a.box_group_box[g]];
+    const int b = a.box_group_bound[g];
+    if (a.cull && !box_met(box, s.bx + b * L, s.by + b * L, s.bz + b * L, a.bound_r[b])) {
+      if (out != nullptr) *out = 0;
+      continue;
+    }
+    for (int p = a.box_group_first[g]; p < a.box_group_first[g + 1]; ++p) {
+      const int k = a.box_sphere[p];
+      batch_box(box, s.x + k * L, s.y + k * L, s.z + k * L, a.r[k], s.found);
+    }
+    take(s.found, s.hit, out);
+  }
+}
+
+// The scene's boxes, a link's spheres only where its bound meets the box.
+ANTIPODE_INLINE void scene_loop(const KernelArm& a, const KernelBox* boxes, int box_count,
+                                const Placed& s) {
+  for (int c = 0; c < box_count; ++c)
+    for (int b = 0; b < a.moving_bounds; ++b) {
+      std::uint32_t* out =
+          entry(s.where != nullptr ? s.where->scene_boxes : nullptr, b * box_count + c);
+      if (a.cull && !box_met(boxes[c], s.bx + b * L, s.by + b * L, s.bz + b * L, a.bound_r[b])) {
+        if (out != nullptr) *out = 0;
+        continue;
+      }
+      for (int k = a.bound_first[b]; k < a.bound_end[b]; ++k)
+        batch_box(boxes[c], s.x + k * L, s.y + k * L, s.z + k * L, a.r[k], s.found);
+      take(s.found, s.hit, out);
+    }
+}
+
+// The points (grid null: none), link by link.
+ANTIPODE_INLINE void points_loop(const KernelArm& a, const KernelGrid* grid, const Placed& s) {
+  for (int b = 0; b < a.moving_bounds; ++b) {
+    for (int k = a.bound_first[b]; grid != nullptr && k < a.bound_end[b]; ++k) {
+      if (a.points_r[k] < 0.0f) continue;
+      std::uint8_t touches[L];
+      float r[L];
+      for (int l = 0; l < L; ++l) r[l] = a.points_r[k];
+      grid_loop(*grid, s.x + k * L, s.y + k * L, s.z + k * L, r, kBatchLanes, touches);
+      for (int l = 0; l < L; ++l) s.found[l] |= touches[l];
+    }
+    take(s.found, s.hit, entry(s.where != nullptr ? s.where->points : nullptr, b));
+  }
+}
 
 ANTIPODE_INLINE std::uint32_t batch_loop(const KernelArm& a, const KernelBox* boxes, int box_count,
                                          const KernelGrid* grid, const float* q, float* scratch,
@@ -312,60 +385,13 @@ ANTIPODE_INLINE std::uint32_t batch_loop(const KernelArm& a, const KernelBox* bo
   batch_bounds(a, frames, bx, by, bz);
   alignas(64) std::int32_t hit[L] = {};
   alignas(64) std::int32_t found[L] = {};
-  // The robot: sphere pairs, then its fixed boxes, a link pair's or a link and box's only
-  // where their bounds meet.
-  for (int g = 0; g < a.groups; ++g) {
-    std::uint32_t* out = ANTIPODE_ENTRY(groups, g);
-    if (a.cull && !bounds_meet(a, bx, by, bz, a.group_a[g], a.group_b[g])) {
-      if (out != nullptr) *out = 0;
-      continue;
-    }
-    for (int p = a.group_first[g]; p < a.group_first[g + 1]; ++p)
-      pair_test(a, x, y, z, a.pair_a[p], a.pair_b[p], found);
-    take(found, hit, out);
-  }
-  for (int g = 0; g < a.box_groups; ++g) {
-    std::uint32_t* out = ANTIPODE_ENTRY(box_groups, g);
-    const KernelBox& box = a.robot_boxes[a.box_group_box[g]];
-    const int b = a.box_group_bound[g];
-    if (a.cull && !box_met(box, bx + b * L, by + b * L, bz + b * L, a.bound_r[b])) {
-      if (out != nullptr) *out = 0;
-      continue;
-    }
-    for (int p = a.box_group_first[g]; p < a.box_group_first[g + 1]; ++p) {
-      const int k = a.box_sphere[p];
-      batch_box(box, x + k * L, y + k * L, z + k * L, a.r[k], found);
-    }
-    take(found, hit, out);
-  }
+  const Placed placed{x, y, z, bx, by, bz, hit, found, where};
+  robot_loop(a, placed);
   if (where == nullptr && lanes_of(hit) == (std::uint32_t(1) << L) - 1) return lanes_of(hit);
-  // The scene: its boxes, a link's spheres only where its bound meets the box; then the points.
-  for (int c = 0; c < box_count; ++c)
-    for (int b = 0; b < a.moving_bounds; ++b) {
-      std::uint32_t* out = ANTIPODE_ENTRY(scene_boxes, b * box_count + c);
-      if (a.cull && !box_met(boxes[c], bx + b * L, by + b * L, bz + b * L, a.bound_r[b])) {
-        if (out != nullptr) *out = 0;
-        continue;
-      }
-      for (int k = a.bound_first[b]; k < a.bound_end[b]; ++k)
-        batch_box(boxes[c], x + k * L, y + k * L, z + k * L, a.r[k], found);
-      take(found, hit, out);
-    }
-  for (int b = 0; b < a.moving_bounds; ++b) {
-    for (int k = a.bound_first[b]; grid != nullptr && k < a.bound_end[b]; ++k) {
-      if (a.points_r[k] < 0.0f) continue;
-      std::uint8_t touches[L];
-      float r[L];
-      for (int l = 0; l < L; ++l) r[l] = a.points_r[k];
-      grid_loop(*grid, x + k * L, y + k * L, z + k * L, r, kBatchLanes, touches);
-      for (int l = 0; l < L; ++l) found[l] |= touches[l];
-    }
-    take(found, hit, ANTIPODE_ENTRY(points, b));
-  }
+  scene_loop(a, boxes, box_count, placed);
+  points_loop(a, grid, placed);
   return lanes_of(hit);
 }
-
-#undef ANTIPODE_ENTRY
 
 ANTIPODE_INLINE void min_shifted_loop(float* __restrict out, const float* __restrict in,
                                       std::ptrdiff_t n, std::ptrdiff_t offset, float add) {

@@ -7,8 +7,8 @@
 // and branch-free: the compiler's own vectorization reaches the width (bench/collision
 // measures all three levels side by side).
 //
-// Units: metres, float. Threads: the functions keep no state; set_simd_level() and
-// set_sphere_culling() must not run concurrently with them.
+// Units: metres, float. Threads: the functions keep no state; set_simd_level() must not run
+// concurrently with them.
 
 #include <cstdint>
 
@@ -66,8 +66,8 @@ void mark_near_points(const KernelGrid& grid, const float* x, const float* y, co
 void min_shifted(float* out, const float* in, std::ptrdiff_t n, std::ptrdiff_t offset, float add);
 
 /// Whether mark_batch() skips the tests that the links' bounding spheres show apart (the
-/// default) or runs every one; the answer is the same. For measuring one against the other:
-/// must not run concurrently with the kernels.
+/// default) or runs every one; the answer is the same. A process-wide switch for measuring
+/// one against the other.
 bool sphere_culling();
 void set_sphere_culling(bool on);
 
@@ -77,20 +77,21 @@ constexpr int kBatchLanes = 16;
 /// An arm as mark_batch() reads it (sphere_arm.hpp builds it): the joint frames' constants
 /// (screw_chain.hpp: X_BaseJoint_j = X_BaseJoint_{j-1} * C_j * Rz(q_j), or * Tz(q_j) where
 /// prismatic[j]), the moving spheres (in their joint's frame; joint -1 for padding), the
-/// fixed spheres (base frame), the sphere pairs to test (a moving sphere with a moving one, or,
-/// from `moving` on, with fixed sphere b - moving), and the moving spheres' pairs with the
-/// robot's fixed boxes.
+/// fixed spheres (base frame), the sphere pairs to test (pair_a[p], a moving sphere, with
+/// pair_b[p], a moving one or, from `moving` on, fixed sphere pair_b[p] - moving), and the
+/// moving spheres box_sphere[p] to test against the robot's fixed boxes.
 ///
-/// The links' bounding spheres let mark_batch() skip whole groups of tests: bound b holds the
-/// spheres of one link, in joint bound_joint[b]'s frame (-1: a fixed link, base frame); the
-/// first `moving_bounds` are the moving links', holding the moving spheres [bound_first[b],
-/// bound_end[b]), which together are every moving sphere but the padding. The sphere pairs
-/// come grouped by link pair: group g covers pairs [group_first[g], group_first[g + 1]) and
-/// every one of them lies between bounds group_a[g] and group_b[g]; the box pairs likewise,
-/// group g between bound box_group_bound[g] and robot box box_group_box[g]. A group whose two
-/// bounds are apart in every lane is skipped: its spheres, inside them, are apart too, so the
-/// answer is the same as testing every pair (`cull` false, for measuring one against the
-/// other).
+/// The links' bounding spheres (link_bounds.hpp) let mark_batch() skip whole groups of tests:
+/// bound b, in joint bound_joint[b]'s frame (-1: a fixed link, base frame), holds every
+/// sphere of one link with room to spare for float rounding (its radius reaches past each
+/// sphere's centre distance plus radius); the first `moving_bounds` are the moving links',
+/// holding the moving spheres [bound_first[b], bound_end[b]), which together are every moving
+/// sphere but the padding. The sphere pairs come grouped by link pair: group g covers pairs
+/// [group_first[g], group_first[g + 1]), every one between bounds group_a[g] and group_b[g];
+/// the box pairs likewise, group g the spheres box_sphere[p] of bound box_group_bound[g]
+/// against robot box box_group_box[g]. A group whose bounds are apart in every lane is
+/// skipped: the spheres inside them are apart too, so the answer is that of testing every
+/// pair (`cull` false, for measuring one against the other).
 struct KernelArm {
   int dof;
   const float* C;  ///< dof x 12: R row by row, then t
@@ -100,10 +101,8 @@ struct KernelArm {
   const float *lx, *ly, *lz, *r;
   const float* points_r;  ///< radius against the points, -1 where unchecked
   const float *fx, *fy, *fz, *fr;
-  int pairs;
   const std::int32_t *pair_a, *pair_b;
-  int box_pairs;
-  const std::int32_t *box_sphere, *box_index;
+  const std::int32_t* box_sphere;
   const KernelBox* robot_boxes;
   bool cull;
   int bounds, moving_bounds;
@@ -130,8 +129,9 @@ struct KernelContacts {
 
 /// For kBatchLanes configurations (q: dof x kBatchLanes, joint by joint), the lanes whose
 /// spheres touch anything - the robot (pairs), its fixed boxes, `boxes` or `grid` (null: no
-/// points) - as bits; and, unless `where` is null, where. `scratch` holds at least
-/// batch_scratch_floats(arm) floats.
+/// points) - as bits. Unless `where` is null, also where: then every entry of `where` is
+/// written (the test does not stop early when every lane already touches the robot).
+/// `scratch` holds at least batch_scratch_floats(arm) floats.
 std::uint32_t mark_batch(const KernelArm& arm, const KernelBox* boxes, int box_count,
                          const KernelGrid* grid, const float* q, float* scratch,
                          KernelContacts* where = nullptr);

@@ -395,6 +395,43 @@ void expect_culling_changes_nothing(const char* robot_path, const Scene& scene) 
   EXPECT_LT(flagged, 29000);
 }
 
+// More boxes than the spheres' record names one by one (from the 31st on they share a bit):
+// spheres then FCL still find FCL's first contact in every batch, culled or not.
+TEST(SphereCollision, ManyBoxesAreConfirmedAsFclFindsThem) {
+  const RobotFile file = read_robot_file(source("robots/baxter/baxter.yaml"));
+  const RobotModel robot = RobotModel::load(file.urdf_path);
+  Scene scene;
+  RandomStream random(31);
+  for (int b = 0; b < 40; ++b)
+    scene.boxes.push_back(
+        {at(random.uniform(0.3, 1.0), random.uniform(-0.9, 0.1), random.uniform(-0.3, 0.6)),
+         Eigen::Vector3d(random.uniform(0.03, 0.15), random.uniform(0.03, 0.15),
+                         random.uniform(0.03, 0.15))});
+  const ArmCollisionWorld exact = world_of(robot, file, scene, CheckMode::kExact);
+  const ArmCollisionWorld both = world_of(robot, file, scene, CheckMode::kSpheresThenExact);
+  const KinematicChain arm = robot.chain(robot.root_link(), file.arm_tip);
+  int free = 0, late_boxes = 0;
+  for (int batch = 0; batch < 1500; ++batch) {
+    std::vector<Eigen::VectorXd> qs;
+    for (int i = 0, n = 1 + batch % kBatchLanes; i < n; ++i)
+      qs.push_back(arm.random_configuration(random));
+    const std::size_t first = exact.first_contact(qs);
+    for (const bool cull : {true, false}) {
+      set_sphere_culling(cull);
+      ASSERT_EQ(both.first_contact(qs), first) << "batch " << batch << (cull ? "" : ", dense");
+    }
+    free += first == qs.size();
+    if (first < qs.size()) {
+      const std::string other = exact.check(qs[first]).other;
+      late_boxes += other.size() == 5 && other.rfind("box3", 0) == 0;  // box30 ... box39
+    }
+  }
+  set_sphere_culling(true);
+  // Both answers occur, and first contacts with the boxes that share a bit.
+  EXPECT_GT(free, 50);
+  EXPECT_GT(late_boxes, 10);
+}
+
 TEST(SphereCollision, BaxterSkipsOnlyTestsThatCannotHit) {
   Scene boxes = cell_scene();
   boxes.points.clear();
