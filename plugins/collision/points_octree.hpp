@@ -7,7 +7,7 @@
 // leaves (a capture lists neighbouring points together, so a hash map is asked for a point's block
 // only when it changes); each leaf then gets the log-odds its hits sum to, clamped after every hit
 // as octomap clamps it, and the inner nodes are updated and pruned once at the end: a capture's
-// 460,800 points at 1 cm in 7.4 ms against 59.5 ms point by point (collision_bench
+// 460,800 points at 1 cm about 8 times faster than point by point (collision_bench
 // --benchmark_filter=PointsOctree, both side by side).
 //
 // Units: metres. Points outside octomap's key range, or not finite, are left out, as

@@ -10,8 +10,9 @@
 //
 // Why not orocos-kdl's solvers: ChainJntToJacSolver re-expresses the whole Jacobian at each
 // segment (quadratic in the joints) and the IK step also ran the FK solver and sized Eigen's
-// dynamic temporaries. An IK step with this pass costs 1.15 us on Baxter's arm, with KDL's
-// solvers 3.79 us (collision_bench's BM_Ik_WholeBudget rows, docs/results.md's machine). The
+// dynamic temporaries. An IK step with this pass costs 1.2 to 1.4 us on Baxter's arm, with
+// KDL's solvers 3.0 to 3.8 us (collision_bench's BM_Ik_WholeBudget rows, runs apart on
+// docs/results.md's machine). The
 // answers agree with KDL's to rounding (the test compares them at random configurations of three
 // arms).
 //
