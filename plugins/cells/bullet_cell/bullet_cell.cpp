@@ -257,11 +257,12 @@ GraspAttempt BulletCell::execute(const GraspRequest& request) {
   world_->settle(1.0);
   const std::vector<std::string> out = names_gone(before, result.held_object);
   remove_fallen_objects();
-  if (record.outcome != GraspOutcome::kSuccess &&
-      record.outcome != GraspOutcome::kCollisionOnApproach && !out.empty()) {
+  std::string names;
+  for (const auto& name : out) names += (names.empty() ? "" : ", ") + name;
+  if (record.outcome == GraspOutcome::kSuccess && !out.empty()) {
+    record.reason += "; out of the workspace with it: " + names;  // still a success
+  } else if (record.outcome != GraspOutcome::kCollisionOnApproach && !out.empty()) {
     record.outcome = GraspOutcome::kObjectKnockedOut;
-    std::string names;
-    for (const auto& name : out) names += (names.empty() ? "" : ", ") + name;
     record.reason += "; knocked out of the workspace: " + names;
   }
   return record;
