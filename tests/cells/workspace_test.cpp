@@ -46,9 +46,8 @@ TEST(CellWorkspace, WithoutABoxTheWholeTableIsTheWorkspace) {
 // A training pile (seed 500025 of scenes/train_pile_wide.yaml) in which a box object came to
 // rest on the box's wall, its centre above the wall (y -0.046; the inner face is at -0.05):
 // picking the bottle beside it (a hand from that scene's outcome trials) tips it out. The
-// pick succeeds, its record names what left the box with it, and the pick itself is not
-// counted among the objects lost. The pile settles so with gcc's floating-point code;
-// scripts/sanitize's clang build leaves this test out.
+// pick succeeds, and its record names what left the box with it. The pile settles so with
+// gcc's floating-point code; scripts/sanitize's clang build leaves this test out.
 TEST(CellWorkspace, ASuccessfulPickNamesWhatLeftTheBoxWithIt) {
   CellOptions options;
   options.seed = 500025;
