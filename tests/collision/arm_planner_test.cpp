@@ -201,6 +201,26 @@ TEST(ArmPlanner, BadProblemsAreErrors) {
   p.planner = "PRM";
   p.range_rad = 0.5;
   EXPECT_NE(error_of([&] { plan_arm_motion(p); }).find("not PRM"), std::string::npos);
+  p = problem(b);
+  p.late_range_rad = std::nan("");
+  EXPECT_NE(error_of([&] { plan_arm_motion(p); }).find("late_range_rad must be finite"),
+            std::string::npos);
+  p = problem(b);
+  p.late_after_states = -1;
+  EXPECT_NE(error_of([&] { plan_arm_motion(p); }).find("late_after_states must not be negative"),
+            std::string::npos);
+}
+
+// A solved, unshortened path from kNeutral to kReach, free, that steps in motions of at most
+// `longest_rad`: at least as many as the straight distance (1.15 rad) needs.
+void expect_free_path_in_motions_of(const Baxter& b, const ArmPlan& plan, double longest_rad,
+                                    double resolution_rad) {
+  ASSERT_EQ(plan.status, PlanStatus::kSolved) << to_string(plan.status);
+  const double distance = (kReach - kNeutral).norm();
+  EXPECT_GE(plan.path.size(), std::size_t(std::ceil(distance / longest_rad)) + 1);
+  for (std::size_t i = 0; i + 1 < plan.path.size(); ++i)
+    EXPECT_LE((plan.path[i + 1] - plan.path[i]).norm(), longest_rad + 1e-9) << "motion " << i;
+  expect_free_path(b, plan, resolution_rad);
 }
 
 // The search adds motions no longer than range_rad: in free space, RRTConnect's unshortened
@@ -210,13 +230,34 @@ TEST(ArmPlanner, TheRangeBoundsEachMotionOfTheSearch) {
   ArmPlanningProblem p = problem(b);
   p.shorten = false;
   p.range_rad = 0.3;
-  const ArmPlan plan = plan_arm_motion(p);
-  ASSERT_EQ(plan.status, PlanStatus::kSolved) << to_string(plan.status);
-  const double distance = (kReach - kNeutral).norm();  // 1.15 rad
-  EXPECT_GE(plan.path.size(), std::size_t(std::ceil(distance / p.range_rad)) + 1);
-  for (std::size_t i = 0; i + 1 < plan.path.size(); ++i)
-    EXPECT_LE((plan.path[i + 1] - plan.path[i]).norm(), p.range_rad + 1e-9) << "motion " << i;
-  expect_free_path(b, plan, p.resolution_rad);
+  expect_free_path_in_motions_of(b, plan_arm_motion(p), p.range_rad, p.resolution_rad);
+}
+
+// Once the search has checked late_after_states states, its motions are at most
+// late_range_rad long: with no budget at all, the whole free-space path steps in them.
+TEST(ArmPlanner, ALongSearchGoesOnWithTheLateRange) {
+  Baxter b;
+  ArmPlanningProblem p = problem(b);
+  p.shorten = false;
+  p.late_after_states = 0;
+  p.late_range_rad = 0.3;
+  expect_free_path_in_motions_of(b, plan_arm_motion(p), p.late_range_rad, p.resolution_rad);
+}
+
+// A search that ends within the budget is the search without a late range, path for path.
+TEST(ArmPlanner, AShortSearchIsNotChangedByTheLateRange) {
+  Baxter b;
+  block_the_straight_motion(b);
+  ArmPlanningProblem p = problem(b);
+  p.shorten = false;
+  const ArmPlan with_late = plan_arm_motion(p);
+  ASSERT_EQ(with_late.status, PlanStatus::kSolved) << to_string(with_late.status);
+  ASSERT_LT(with_late.collision_checks, p.late_after_states);
+  p.late_range_rad = 0.0;
+  const ArmPlan without = plan_arm_motion(p);
+  ASSERT_EQ(without.path.size(), with_late.path.size());
+  for (std::size_t i = 0; i < without.path.size(); ++i)
+    EXPECT_EQ(without.path[i], with_late.path[i]) << "state " << i;
 }
 
 }  // namespace

@@ -150,6 +150,13 @@ TEST(OmplPlanner, BadParametersNameTheirKey) {
   EXPECT_NE(error("robot: " + kRobot + "\nplanner: PRM\nrange_rad: 0.5").find("not PRM"),
             std::string::npos);
   EXPECT_EQ(error("robot: " + kRobot + "\nrange_rad: 0.8"), "");
+  EXPECT_NE(error("robot: " + kRobot + "\nlate_range_rad: -0.5")
+                .find("'late_range_rad' must be finite and not negative (0: keep range_rad)"),
+            std::string::npos);
+  EXPECT_NE(error("robot: " + kRobot + "\nlate_after_states: -3")
+                .find("'late_after_states' must not be negative"),
+            std::string::npos);
+  EXPECT_EQ(error("robot: " + kRobot + "\nlate_range_rad: 0\nlate_after_states: 500"), "");
 }
 
 }  // namespace

@@ -1,5 +1,6 @@
 #include "reach_figures.hpp"
 
+#include <algorithm>
 #include <iomanip>
 #include <map>
 #include <sstream>
@@ -22,12 +23,14 @@ nlohmann::ordered_json planning_summary(const std::vector<PlanFigures>& plans) {
   std::vector<double> goal_ms, search_ms, simplify_ms;
   int with_goal = 0, solved = 0;
   double checks = 0.0, search_total_s = 0.0;
+  long most_states = 0;
   for (const PlanFigures& p : plans) {
     ++statuses[to_string(p.status)];
     goal_ms.push_back(p.goal_ms);
     if (!has_goal(p.status)) continue;
     ++with_goal;
     checks += double(p.checks);
+    most_states = std::max(most_states, p.checks);
     search_total_s += p.search_ms / 1e3;
     search_ms.push_back(p.search_ms);
     if (p.status != PlanningStatus::kSolved) continue;
@@ -44,6 +47,7 @@ nlohmann::ordered_json planning_summary(const std::vector<PlanFigures>& plans) {
           {"goal_p90_ms", percentile(goal_ms, 0.9)},
           {"simplify_median_ms", percentile(simplify_ms, 0.5)},
           {"collision_checks_per_s", search_total_s > 0.0 ? checks / search_total_s : 0.0},
+          {"most_states", most_states},
           {"statuses", statuses}};
 }
 

@@ -24,7 +24,8 @@ PlanFigures figures_of(const PlanningResult& r);
 bool has_goal(PlanningStatus s);
 
 /// Attempts, those with a goal, successes, search median / 90th / 99th percentile, goal and
-/// shortcutting medians, states checked per second of search, and the statuses.
+/// shortcutting medians, states checked per second of search, the most states one search
+/// checked (`most_states`), and the statuses.
 nlohmann::ordered_json planning_summary(const std::vector<PlanFigures>& plans);
 
 /// The label of the side-by-side baseline planner's line (`--side-by-side`: FCL alone, each

@@ -92,6 +92,30 @@ void check_problem(const ArmPlanningProblem& p) {
   }
   if (p.range_rad > 0.0 && p.planner == "PRM")
     throw Error("arm planning: range_rad is for RRTConnect, RRT, KPIECE1 and EST, not PRM");
+  if (!(p.late_range_rad >= 0.0 && std::isfinite(p.late_range_rad)))
+    throw Error("arm planning: late_range_rad must be finite and not negative");
+  if (p.late_after_states < 0) throw Error("arm planning: late_after_states must not be negative");
+}
+
+// Sets the range of an RRTConnect or RRT planner (the only ones search() narrows).
+void set_range(ob::Planner& planner, double range_rad) {
+  if (auto* connect = dynamic_cast<og::RRTConnect*>(&planner)) connect->setRange(range_rad);
+  if (auto* rrt = dynamic_cast<og::RRT*>(&planner)) rrt->setRange(range_rad);
+}
+
+// Runs the search until `end`: with the problem's range until `late_after_states` states were
+// checked, then, without a path yet, with `late_range_rad` on the same trees.
+ob::PlannerStatus search(og::SimpleSetup& setup, const ArmPlanningProblem& p,
+                         const std::atomic<long>& checks,
+                         const ob::PlannerTerminationCondition& end) {
+  const bool late = p.late_range_rad > 0.0 && (p.planner == "RRTConnect" || p.planner == "RRT");
+  if (!late) return setup.solve(end);
+  const long budget = p.late_after_states;
+  const ob::PlannerStatus early = setup.solve(ob::plannerOrTerminationCondition(
+      end, ob::PlannerTerminationCondition([&checks, budget] { return checks.load() >= budget; })));
+  if (early == ob::PlannerStatus::EXACT_SOLUTION || end()) return early;
+  set_range(*setup.getPlanner(), p.late_range_rad);
+  return setup.solve(end);
 }
 
 // A plan that ends before the search when the start or the goal is invalid: outside the
@@ -189,7 +213,7 @@ ArmPlan plan_arm_motion(const ArmPlanningProblem& p) {
   const ob::PlannerTerminationCondition end = ob::plannerOrTerminationCondition(
       ob::timedPlannerTerminationCondition(p.time_limit_s),
       ob::PlannerTerminationCondition([&stop] { return stop.stop_requested(); }));
-  const ob::PlannerStatus solved = setup.solve(end);
+  const ob::PlannerStatus solved = search(setup, p, checks, end);
   plan.planning_s = seconds_since(t0);
   plan.collision_checks = checks.load();
   if (solved != ob::PlannerStatus::EXACT_SOLUTION) {

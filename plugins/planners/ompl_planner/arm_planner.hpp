@@ -36,6 +36,15 @@ struct ArmPlanningProblem {
   /// default, a fifth of the joint space's longest diagonal (Baxter's arm: about 2.5). Not
   /// for PRM, which connects samples whatever their distance.
   double range_rad = 0.0;
+  /// A search that has checked `late_after_states` states without a path goes on with
+  /// motions of at most `late_range_rad` (RRTConnect and RRT; the other planners keep their
+  /// range): long motions cross open space in few steps, but in a narrow passage nearly every
+  /// one meets an obstacle and is thrown away whole, while shorter ones still add states. Both
+  /// trees are kept. The switch counts states, not time, so a plan does not depend on the
+  /// machine's speed; searches shorter than the budget are not changed at all. 0: keep
+  /// `range_rad` to the end.
+  double late_range_rad = 1.0;
+  long late_after_states = 20000;  ///< see late_range_rad
   /// Check a motion's states as a rake (segment_states.hpp), or in order (false, the
   /// baseline): the same answers, the paths the same.
   bool rake_segments = true;
@@ -69,8 +78,8 @@ struct ArmPlan {
 
 /// Plans from `problem.start` to `problem.goal`. Throws antipode::Error for a problem
 /// without arm or world, joint vectors of the wrong size, an unknown planner name, a
-/// non-positive time limit or resolution, or a range that is negative, not finite or given
-/// to PRM.
+/// non-positive time limit or resolution, a range that is negative, not finite or given
+/// to PRM, or a late range that is negative or not finite, or a negative late budget.
 ArmPlan plan_arm_motion(const ArmPlanningProblem& problem);
 
 /// True when the straight joint-space segment from `a` to `b`, checked every `resolution_rad`

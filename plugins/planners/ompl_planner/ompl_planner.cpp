@@ -29,6 +29,8 @@ OmplPlannerOptions read_options(const Parameters& p) {
   o.time_limit_s = p.get<double>("time_limit_s", o.time_limit_s);
   o.resolution_rad = p.get<double>("resolution_rad", o.resolution_rad);
   o.range_rad = p.get<double>("range_rad", o.range_rad);
+  o.late_range_rad = p.get<double>("late_range_rad", o.late_range_rad);
+  o.late_after_states = p.get<long>("late_after_states", o.late_after_states);
   const std::string order = p.get<std::string>("segment_order", "rake");
   if (order != "rake" && order != "in_order")
     p.fail("segment_order", "'segment_order' must be rake or in_order, got '" + order + "'");
@@ -46,6 +48,11 @@ OmplPlannerOptions read_options(const Parameters& p) {
     p.fail("range_rad", "'range_rad' must be finite and not negative (0: OMPL's)");
   if (o.range_rad > 0.0 && o.planner == "PRM")
     p.fail("range_rad", "'range_rad' is for RRTConnect, RRT, KPIECE1 and EST, not PRM");
+  if (!(o.late_range_rad >= 0.0 && std::isfinite(o.late_range_rad)))
+    p.fail("late_range_rad",
+           "'late_range_rad' must be finite and not negative (0: keep range_rad)");
+  if (o.late_after_states < 0)
+    p.fail("late_after_states", "'late_after_states' must not be negative");
   positive("ik_solutions", o.ik_solutions);
   positive("approach_step_m", o.approach.step_m);
   if (!(o.speed_fraction > 0.0 && o.speed_fraction <= 1.0))
@@ -193,6 +200,8 @@ PlanningResult OmplPlanner::plan(const PlanningProblem& problem) const {
   search.time_limit_s = problem.time_limit_s > 0.0 ? problem.time_limit_s : options_.time_limit_s;
   search.resolution_rad = options_.resolution_rad;
   search.range_rad = options_.range_rad;
+  search.late_range_rad = options_.late_range_rad;
+  search.late_after_states = options_.late_after_states;
   search.rake_segments = options_.rake_segments;
   search.seed = problem.seed;
   search.stop = problem.stop;

@@ -29,8 +29,10 @@ struct OmplPlannerOptions {
   std::string planner = "RRTConnect";
   double time_limit_s = 1.0;
   double resolution_rad = 0.02;
-  double range_rad = 0.0;     ///< the search's longest motion (ArmPlanningProblem); 0: OMPL's
-  bool rake_segments = true;  ///< segment_order: rake (true) or in_order
+  double range_rad = 0.0;          ///< the search's longest motion (ArmPlanningProblem); 0: OMPL's
+  double late_range_rad = 1.0;     ///< the longest motion of a long search (ArmPlanningProblem)
+  long late_after_states = 20000;  ///< states checked before a search is long
+  bool rake_segments = true;       ///< segment_order: rake (true) or in_order
   int ik_solutions = 12;
   double speed_fraction = 0.5;  ///< of each joint's velocity limit, for the waypoint times
   ApproachOptions approach;
