@@ -11,7 +11,7 @@
 // few dozen spheres of an arm it is cheaper than the indirection a tree would add. Sixteen at
 // a time (contacts_batch) it first tests one bounding sphere per link (link_bounds.hpp), and
 // skips a link pair, or a link and box, that are apart in every configuration: for Baxter's
-// 924 sphere pairs and 197 sphere-box pairs, among the cell's boxes, that takes a third of
+// 924 sphere pairs and 197 sphere-box pairs, among the cell's boxes, that takes a quarter of
 // the time of testing them all (collision_bench, BM_CheckAmongBoxes_Spheres_Batch16 against
 // its _Dense twin). The
 // boxes of links that do not move (a robot's pedestal and torso) stay boxes, tested exactly

@@ -102,7 +102,10 @@ ANTIPODE_INLINE void grid_loop(const KernelGrid& g, const float* __restrict x,
     const std::int32_t i = std::int32_t(fi) - 1, j = std::int32_t(fj) - 1;
     const std::int32_t l = std::int32_t(fl) - 1;
     const std::int32_t inside = (i >= 0) & (i < n_x) & (j >= 0) & (j < n_y) & (l >= 0) & (l < n_z);
-    const float clear = clear_m[std::ptrdiff_t((l * n_y + j) * n_x + i) * inside];
+    // A 32-bit index (a grid has at most 16e6 cells): with a 64-bit one GCC left the loop
+    // scalar where the batch inlines it.
+    const std::int32_t cell = ((l * n_y + j) * n_x + i) * inside;
+    const float clear = clear_m[cell];
     const std::int32_t near =
         (inside & (clear <= r[k])) | ((1 - inside) & (outside2 <= r[k] * r[k]));
     touches[k] = std::uint8_t(near & (r[k] >= 0.0f));
@@ -244,10 +247,15 @@ ANTIPODE_INLINE bool box_met(const KernelBox& b, const float* __restrict x,
 }
 
 // Lanes where sphere k (radius r) meets box b, OR-ed into hit.
-ANTIPODE_INLINE void batch_box(const KernelBox& b, const float* __restrict x,
+ANTIPODE_INLINE void batch_box(const KernelBox& box, const float* __restrict x,
                                const float* __restrict y, const float* __restrict z, float r,
                                std::int32_t* __restrict hit) {
-  for (int l = 0; l < L; ++l) hit[l] |= std::int32_t(gap2(b, x[l], y[l], z[l]) <= r * r);
+  // The box copied and the lanes' answers into a local array first: written straight into
+  // `hit`, GCC also emits a scalar copy of the loop, which the robot's boxes ran.
+  const KernelBox b = box;
+  alignas(64) std::int32_t touch[L];
+  for (int l = 0; l < L; ++l) touch[l] = std::int32_t(gap2(b, x[l], y[l], z[l]) <= r * r);
+  for (int l = 0; l < L; ++l) hit[l] |= touch[l];
 }
 
 // Lanes where sphere pair (i, j) overlaps - j a moving sphere, or from a.moving on a fixed one
