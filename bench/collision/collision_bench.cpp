@@ -6,18 +6,24 @@
 //   build/bench/collision/collision_bench --benchmark_filter=Check
 // Also the octree of a capture's points, built per leaf and point by point, the reach check
 // of grasps over the box with its searches, and the arm's inverse kinematics with its two
-// kinematics (--benchmark_filter='Octree|Reach|Ik').
+// kinematics (--benchmark_filter='Octree|Reach|Ik'); and one pair of shapes as the checks
+// confirm what the spheres flag, FCL alone or the primitives' quick tests first
+// (--benchmark_filter=ConfirmPair).
 
 #include <cmath>
 #include <vector>
 
 #include <benchmark/benchmark.h>
+#include <fcl/geometry/shape/box.h>
+#include <fcl/geometry/shape/cylinder.h>
+#include <fcl/narrowphase/collision.h>
 
 #include "antipode/core/random.hpp"
 #include "antipode/robot/inverse_kinematics.hpp"
 #include "antipode/robot/robot_model.hpp"
 #include "arm_collision_world.hpp"
 #include "points_octree.hpp"
+#include "primitive_tests.hpp"
 #include "reach_check.hpp"
 #include "sphere_kernels.hpp"
 #include "support/cell_world.hpp"
@@ -259,6 +265,7 @@ void ik(benchmark::State& state, IkSolver solver, bool first_only) {
   const antipode::KinematicChain arm = robot().chain("base", "right_gripper");
   antipode::RandomStream random(3);
   std::vector<Eigen::Isometry3d> targets;
+  targets.reserve(200);
   for (int i = 0; i < 200; ++i) targets.push_back(arm.forward(arm.random_configuration(random)));
   antipode::IkOptions options;
   options.solver = solver;
@@ -292,6 +299,63 @@ BENCHMARK(BM_Ik_First)->Unit(benchmark::kMicrosecond)->Iterations(1000);
 BENCHMARK(BM_Ik_First_KdlKinematics)->Unit(benchmark::kMicrosecond)->Iterations(1000);
 BENCHMARK(BM_Ik_WholeBudget)->Unit(benchmark::kMillisecond)->Iterations(200);
 BENCHMARK(BM_Ik_WholeBudget_KdlKinematics)->Unit(benchmark::kMillisecond)->Iterations(200);
+// A pair as the spheres flag them: Baxter's forearm cylinder (radius 6 cm, 27 cm long) and a
+// 4 cm wall (30 x 30 cm) facing it from a random direction, its face from 1 cm inside the
+// cylinder to 2.5 cm outside it (the spheres' overshoot at a flat end).
+struct Pair {
+  antipode::collision::PlacedPrimitive cylinder, wall;
+};
+std::vector<Pair> flagged_pairs() {
+  using Kind = antipode::CollisionPrimitive::Kind;
+  antipode::RandomStream random(11);
+  std::vector<Pair> pairs(1000);
+  for (Pair& p : pairs) {
+    p.cylinder.kind = Kind::kCylinder;
+    p.cylinder.size_m = Eigen::Vector3d(0.06, 0.273, 0.0);
+    p.wall.kind = Kind::kBox;
+    p.wall.size_m = Eigen::Vector3d(0.3, 0.3, 0.04);
+    const Eigen::Vector3d n =
+        Eigen::Vector3d(random.normal(), random.normal(), random.normal()).normalized();
+    const double along = std::abs(n.z());
+    const double reach = along * 0.1365 + 0.06 * std::sqrt(1.0 - along * along);
+    p.wall.X_FrameShape.linear() =
+        (Eigen::Quaterniond::FromTwoVectors(Eigen::Vector3d::UnitZ(), n) *
+         Eigen::AngleAxisd(random.uniform(0.0, 2 * M_PI), Eigen::Vector3d::UnitZ()))
+            .toRotationMatrix();
+    p.wall.X_FrameShape.translation() = n * (reach + random.uniform(-0.01, 0.025) + 0.02);
+  }
+  return pairs;
+}
+bool fcl_collide(const Pair& p) {
+  static const fcl::Cylinderd cylinder(0.06, 0.273);
+  static const fcl::Boxd wall(0.3, 0.3, 0.04);
+  const fcl::CollisionRequestd request;
+  fcl::CollisionResultd result;
+  fcl::collide(&cylinder, p.cylinder.X_FrameShape, &wall, p.wall.X_FrameShape, request, result);
+  return result.isCollision();
+}
+void confirm_pairs(benchmark::State& state, bool quick) {
+  const std::vector<Pair> pairs = flagged_pairs();
+  std::size_t i = 0, met = 0, undecided = 0, tests = 0;
+  for (auto _ : state) {
+    const Pair& p = pairs[i];
+    auto verdict = antipode::collision::Verdict::kUndecided;
+    if (quick) verdict = antipode::collision::quick_test(p.cylinder, p.wall);
+    const bool meet = verdict == antipode::collision::Verdict::kUndecided
+                          ? (++undecided, fcl_collide(p))
+                          : verdict == antipode::collision::Verdict::kMeet;
+    met += meet ? 1 : 0;
+    i = (i + 1) % pairs.size();
+    ++tests;
+  }
+  state.counters["meet_share"] = double(met) / double(tests);
+  state.counters["fcl_share"] = double(undecided) / double(tests);
+}
+void BM_ConfirmPair_Fcl(benchmark::State& s) { confirm_pairs(s, false); }
+void BM_ConfirmPair_QuickThenFcl(benchmark::State& s) { confirm_pairs(s, true); }
+
+BENCHMARK(BM_ConfirmPair_Fcl)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_ConfirmPair_QuickThenFcl)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_PointsOctree)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_PointsOctree_PointByPoint)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_BuildWorldInCell_Exact)->Unit(benchmark::kMillisecond);

@@ -1,6 +1,7 @@
 #include "arm_collision_world.hpp"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <limits>
 #include <optional>
@@ -18,6 +19,7 @@
 #include "collision_pairs.hpp"
 #include "distance_grid.hpp"
 #include "points_octree.hpp"
+#include "primitive_tests.hpp"
 #include "sphere_arm.hpp"
 
 namespace antipode::collision {
@@ -25,6 +27,12 @@ namespace antipode::collision {
 namespace {
 
 using Geometry = std::shared_ptr<fcl::CollisionGeometryd>;
+
+// A number no other world has had in this process.
+std::uint64_t next_id() {
+  static std::atomic<std::uint64_t> next{1};
+  return next++;
+}
 
 // Self-collision is checked between links three or more moving joints apart.
 constexpr int kMinJointsApart = 3;
@@ -55,26 +63,33 @@ double bounding_radius(const CollisionPrimitive& p) {
 }
 
 // One shape of a link (or of the scene), with its bounding sphere about X_LinkShape's origin
-// (infinite for the points' octree).
+// (infinite for the points' octree), and the primitive it is (none for the points' octree).
 struct Shape {
   Geometry geometry;
   Eigen::Isometry3d X_LinkShape = Eigen::Isometry3d::Identity();
   double radius_m = std::numeric_limits<double>::infinity();
+  std::optional<CollisionPrimitive> primitive;
 };
 
 Shape make_shape(const CollisionPrimitive& p) {
-  return {make_geometry(p), p.X_LinkShape, bounding_radius(p)};
+  return {make_geometry(p), p.X_LinkShape, bounding_radius(p), p};
 }
 
 // FCL's exact test, after the bounding spheres: most pairs of a robot's links are far apart,
-// and the sphere test costs a few nanoseconds where FCL's costs a few hundred.
+// and the sphere test costs a few nanoseconds where FCL's costs a few hundred. With `quick`,
+// the primitives' own tests (primitive_tests.hpp) answer first where they can, as FCL would.
 // The shapes are placed at X_BaseShapeA and X_BaseShapeB.
 bool collide(const Shape& a, const Eigen::Isometry3d& X_BaseShapeA, const Shape& b,
-             const Eigen::Isometry3d& X_BaseShapeB) {
+             const Eigen::Isometry3d& X_BaseShapeB, bool quick) {
   const double reach = a.radius_m + b.radius_m;
   if (std::isfinite(reach) &&
       (X_BaseShapeA.translation() - X_BaseShapeB.translation()).squaredNorm() > reach * reach) {
     return false;
+  }
+  if (quick && a.primitive && b.primitive) {
+    const Verdict verdict = quick_test({a.primitive->kind, a.primitive->size_m, X_BaseShapeA},
+                                       {b.primitive->kind, b.primitive->size_m, X_BaseShapeB});
+    if (verdict != Verdict::kUndecided) return verdict == Verdict::kMeet;
   }
   // The geometries and poses straight to FCL: a CollisionObject would also compute a box
   // around each shape, which the test does not read.
@@ -128,6 +143,7 @@ struct ArmCollisionWorld::Impl {
   // FCL's shape poses: the fixed links' placed once, a moving link's shape at its arm link's
   // pose times a constant.
   std::vector<Eigen::Isometry3d> still_poses, X_ArmLinkShape;
+  std::uint64_t id = next_id();  // tells this world's shape poses from another's
   std::vector<Box> boxes;
   Shape points;                        // geometry null when there are none
   std::vector<char> points_unchecked;  // per link
@@ -154,23 +170,34 @@ struct ArmCollisionWorld::Impl {
   // Fills still_poses and X_ArmLinkShape from the arm's link poses at any configuration.
   void place_still_shapes(const std::vector<Eigen::Isometry3d>& any_arm_poses) {
     still_poses = shape_poses(any_arm_poses);
+    id = next_id();
     X_ArmLinkShape.assign(shape_count, Eigen::Isometry3d::Identity());
     for (const Link& link : links)
       for (std::size_t k = 0; link.moving && k < link.shapes.size(); ++k)
         X_ArmLinkShape[link.first_shape + k] = link.X_ParentLink * link.shapes[k].X_LinkShape;
   }
-  // Every shape's pose with the arm at `q` (the arm's link poses in a thread-local buffer).
-  std::vector<Eigen::Isometry3d> shape_poses_at(const Eigen::VectorXd& q) const {
-    thread_local std::vector<Eigen::Isometry3d> arm_poses;
+  // Every shape's pose with the arm at `q`, in a thread-local buffer that the next call on the
+  // thread overwrites. The fixed shapes' poses are copied in only when the buffer last held
+  // another world's: a confirmation of what the spheres flag places the moving shapes alone.
+  const std::vector<Eigen::Isometry3d>& shape_poses_at(const Eigen::VectorXd& q) const {
+    thread_local std::vector<Eigen::Isometry3d> arm_poses, poses;
+    thread_local std::uint64_t holds = 0;
+    if (holds != id) {
+      poses = still_poses;
+      holds = id;
+    }
     arm_poses.resize(fk->links());
     fk->link_poses(q.data(), arm_poses.data());
-    std::vector<Eigen::Isometry3d> poses = still_poses;
     for (const Link& link : links)
       for (std::size_t k = 0; link.moving && k < link.shapes.size(); ++k)
         poses[link.first_shape + k] =
             arm_poses[link.arm_link] * X_ArmLinkShape[link.first_shape + k];
     return poses;
   }
+
+  // Whether FCL's tests are preceded by the primitives' own: where the spheres flag a pair.
+  // The exact mode, the reference, asks FCL alone.
+  bool quick_tests() const { return options.mode == CheckMode::kSpheresThenExact; }
 
   bool links_collide(std::size_t a, std::size_t b,
                      const std::vector<Eigen::Isometry3d>& poses) const {
@@ -179,7 +206,7 @@ struct ArmCollisionWorld::Impl {
     for (std::size_t i = 0; i < la.shapes.size(); ++i)
       for (std::size_t j = 0; j < lb.shapes.size(); ++j)
         if (collide(la.shapes[i], poses[la.first_shape + i], lb.shapes[j],
-                    poses[lb.first_shape + j]))
+                    poses[lb.first_shape + j], quick_tests()))
           return true;
     return false;
   }
@@ -210,9 +237,10 @@ struct ArmCollisionWorld::Impl {
       const Shape& s = links[i].shapes[k];
       const Eigen::Isometry3d& X_BaseShape = poses[links[i].first_shape + k];
       for (std::size_t b = 0; b < boxes.size(); ++b)
-        if (box_near(b) && collide(s, X_BaseShape, boxes[b].shape, boxes[b].shape.X_LinkShape))
+        if (box_near(b) &&
+            collide(s, X_BaseShape, boxes[b].shape, boxes[b].shape.X_LinkShape, quick_tests()))
           return contact(boxes[b].name);
-      if (points_near && collide(s, X_BaseShape, points, identity)) return contact("points");
+      if (points_near && collide(s, X_BaseShape, points, identity, false)) return contact("points");
     }
     return std::nullopt;
   }
@@ -351,8 +379,10 @@ void ArmCollisionWorld::add_cylinder(const std::string& name,
   p.size_m = Eigen::Vector3d(radius_m, length_m, 0.0);
   p.X_LinkShape = X_BaseCylinder;
   impl_->boxes.push_back({name, make_shape(p)});
-  impl_->kernel_boxes.push_back(
-      kernel_box(X_BaseCylinder, Eigen::Vector3d(2 * radius_m, 2 * radius_m, length_m)));
+  // The kernels take the cylinder's bounding box, and the box inscribed in it as its solid part.
+  KernelBox box = kernel_box(X_BaseCylinder, Eigen::Vector3d(2 * radius_m, 2 * radius_m, length_m));
+  box.solid[0] = box.solid[1] = float(radius_m / std::sqrt(2.0));
+  impl_->kernel_boxes.push_back(box);
 }
 
 void ArmCollisionWorld::set_points(const std::vector<Eigen::Vector3f>& points_m,
@@ -394,7 +424,7 @@ ContactReport ArmCollisionWorld::check(const Eigen::VectorXd& q) const {
 }
 
 ContactReport ArmCollisionWorld::Impl::check_exact(const Eigen::VectorXd& q) const {
-  const std::vector<Eigen::Isometry3d> poses = shape_poses_at(q);
+  const std::vector<Eigen::Isometry3d>& poses = shape_poses_at(q);
   for (std::size_t k = 0; k < pairs.size(); ++k)
     if (links_collide(pairs[k].first, pairs[k].second, poses)) return self_report(k);
   const auto given = [&poses]() -> const std::vector<Eigen::Isometry3d>& { return poses; };
@@ -412,10 +442,10 @@ ContactReport ArmCollisionWorld::Impl::check_with_spheres(const Eigen::VectorXd&
   thread_local std::vector<std::uint32_t> near;
   spheres->place(q.data(), placement);
   const bool exact = options.mode == CheckMode::kSpheresThenExact;
-  std::vector<Eigen::Isometry3d> poses;  // FCL's, made when first needed
+  const std::vector<Eigen::Isometry3d>* poses = nullptr;  // FCL's, made when first needed
   const auto fcl_poses = [&]() -> const std::vector<Eigen::Isometry3d>& {
-    if (poses.empty()) poses = shape_poses_at(q);  // double, as check_exact()
-    return poses;
+    if (poses == nullptr) poses = &shape_poses_at(q);  // double, as check_exact()
+    return *poses;
   };
   spheres->contacts(placement, kernel_boxes, grid, points_radius, self_hits, near);
   for (const int k : self_hits) {
@@ -447,9 +477,10 @@ std::size_t ArmCollisionWorld::first_contact(const std::vector<Eigen::VectorXd>&
                                        impl_->points_radius, exact ? &touched : nullptr);
     // A flagged state is confirmed as check() confirms it: FCL only on the link pairs and the
     // links near the scene whose spheres touch (not every pair, as check_exact() would),
-    // named by the batch itself.
+    // named by the batch itself; not at all where the batch shows the contact certain.
     for (int l = 0; l < count; ++l)
-      if ((flagged >> l & 1U) && (!exact || impl_->confirm(qs[first + std::size_t(l)], touched, l)))
+      if ((flagged >> l & 1U) && (!exact || (touched.certain >> l & 1U) ||
+                                  impl_->confirm(qs[first + std::size_t(l)], touched, l)))
         return first + std::size_t(l);
   }
   return qs.size();
@@ -459,10 +490,10 @@ std::size_t ArmCollisionWorld::first_contact(const std::vector<Eigen::VectorXd>&
 bool ArmCollisionWorld::Impl::confirm(const Eigen::VectorXd& q,
                                       const SphereArm::BatchContacts& touched, int lane) const {
   const auto lit = [lane](std::uint32_t lanes) { return (lanes >> lane & 1U) != 0; };
-  std::vector<Eigen::Isometry3d> poses;
+  const std::vector<Eigen::Isometry3d>* poses = nullptr;
   const auto fcl_poses = [&]() -> const std::vector<Eigen::Isometry3d>& {
-    if (poses.empty()) poses = shape_poses_at(q);
-    return poses;
+    if (poses == nullptr) poses = &shape_poses_at(q);
+    return *poses;
   };
   for (const SphereArm::BatchContacts::Touch& pair : touched.self) {
     const auto [a, b] = pairs[std::size_t(pair.what)];

@@ -8,9 +8,12 @@
 // values given at construction (every other joint at 0, unless named there).
 //
 // How: FCL with its exact shapes is the reference (CheckMode::kExact). By default each link
-// is first covered by spheres (sphere_arm.hpp), and FCL runs only on the link pairs, link and
-// box, or link and points whose spheres touch: the same answer as FCL alone, since the
-// spheres hold the shapes, in a fraction of the time where most of the arm is clear.
+// is first covered by spheres (sphere_arm.hpp), and only the link pairs, link and box, or
+// link and points whose spheres touch are tested further - by the primitives' own quick
+// tests (primitive_tests.hpp), then FCL where those cannot tell: the same answer as FCL
+// alone, since the spheres hold the shapes, in a fraction of the time where most of the arm
+// is clear. A batch whose spheres show a contact certain (the balls inside the links meet an
+// obstacle) needs neither.
 // CheckMode::kSpheres answers from the spheres alone: never free where FCL finds a contact,
 // but in contact where the spheres overlap and the shapes are apart (by up to overshoot_m()
 // against a box, twice it between two links, and the points' grid margin, sqrt(3) cells,
@@ -46,7 +49,7 @@ struct ContactReport {
 };
 
 enum class CheckMode {
-  kSpheresThenExact,  ///< spheres first, FCL where they touch: FCL's answer, faster
+  kSpheresThenExact,  ///< spheres first, then quick tests and FCL where they touch: FCL's answer
   kExact,             ///< FCL alone
   kSpheres,           ///< spheres alone: conservative (a contact may be up to the overshoot)
 };

@@ -23,6 +23,9 @@ const Eigen::Vector3d kFarAway_m = Eigen::Vector3d::Constant(1e6);
 // A link's bounding sphere reaches this much beyond its spheres: float rounding places the
 // bound and the spheres from the same joint frame, off by far less.
 constexpr double kBoundMargin_m = 1e-4;
+// A sphere's inner ball (sphere_cover.hpp) shrinks by this before it may show a certain
+// contact: the float rounding of the placed centres, and FCL's own tolerance, are far smaller.
+constexpr double kCertainMargin_m = 1e-3;
 
 }  // namespace
 
@@ -31,6 +34,7 @@ KernelBox kernel_box(const Eigen::Isometry3d& X_BaseBox, const Eigen::Vector3d& 
   for (int i = 0; i < 3; ++i) {
     box.center[i] = float(X_BaseBox.translation()(i));
     box.half[i] = float(0.5 * size_m(i));
+    box.solid[i] = box.half[i];
     for (int j = 0; j < 3; ++j) box.rows[i][j] = float(X_BaseBox.linear()(j, i));
   }
   return box;
@@ -86,16 +90,18 @@ SphereArm::SphereArm(const KinematicChain& arm, const std::vector<Link>& links,
   make_kernel_arm();
 }
 
-void SphereArm::add_sphere(const Eigen::Vector3d& centre_m, double radius_m, int owner) {
+void SphereArm::add_sphere(const Eigen::Vector3d& centre_m, double radius_m, double inner_m,
+                           int owner) {
   lx_.push_back(float(centre_m.x()));
   ly_.push_back(float(centre_m.y()));
   lz_.push_back(float(centre_m.z()));
   r_.push_back(float(radius_m));
+  inner_.push_back(float(std::max(0.0, inner_m - kCertainMargin_m)));
   owner_.push_back(owner);
 }
 
 void SphereArm::pad(std::size_t multiple) {
-  while (owner_.size() % multiple != 0) add_sphere(kFarAway_m, -1.0, -1);
+  while (owner_.size() % multiple != 0) add_sphere(kFarAway_m, -1.0, 0.0, -1);
 }
 
 void SphereArm::add_link(int i, const Link& link, double max_overshoot_m) {
@@ -114,7 +120,7 @@ void SphereArm::add_link(int i, const Link& link, double max_overshoot_m) {
     const SphereCover cover = cover_with_spheres(shape, max_overshoot_m);
     if (joint >= 0) overshoot_m_ = std::max(overshoot_m_, cover.overshoot_m);
     for (const Sphere& s : cover.spheres)
-      add_sphere(X_Link * s.center_m, s.radius_m + kRounding_m, i);
+      add_sphere(X_Link * s.center_m, s.radius_m + kRounding_m, s.inner_m, i);
     spheres_ += cover.spheres.size();
   }
   if (joint >= 0) {
@@ -264,10 +270,12 @@ void SphereArm::make_kernel_arm() {
   a.ly = ly_.data();
   a.lz = lz_.data();
   a.r = r_.data();
+  a.inner = inner_.data();
   a.fx = lx_.data() + moving_;
   a.fy = ly_.data() + moving_;
   a.fz = lz_.data() + moving_;
   a.fr = r_.data() + moving_;
+  a.f_inner = inner_.data() + moving_;
   a.pair_a = batch_a_.data();
   a.pair_b = batch_b_.data();
   a.box_sphere = box_sphere_.data();
@@ -322,10 +330,12 @@ std::uint32_t SphereArm::contacts_batch(const double* const* q_rad, int count,
     found.box_groups = found.groups + self_groups_.a.size();
     found.scene_boxes = found.box_groups + box_groups_.a.size();
     found.points = found.scene_boxes + scene;
+    found.certain = &where->certain;
   }
   std::uint32_t lanes = mark_batch(a, boxes.data(), int(boxes.size()), points ? &g : nullptr,
                                    q.data(), scratch.data(), where != nullptr ? &found : nullptr);
   if (count < kBatchLanes) lanes &= (std::uint32_t(1) << count) - 1;
+  if (where != nullptr) where->certain &= lanes;
   if (where != nullptr && lanes != 0) name_contacts(found, boxes.size(), lanes, *where);
   return lanes;
 }

@@ -91,7 +91,10 @@ class SphereArm {
   /// its spheres again: each self pair that touches in some lane (`what`, an index into
   /// `self_pairs`), and each link (`what`, an index into `links`) that touches a scene box
   /// (`box`, an index into the boxes) or the points (`box` -1), with the lanes where it
-  /// does as bits; a link's entries come together. Reused between batches to avoid allocation.
+  /// does as bits; a link's entries come together. `certain`: the lanes in which the shapes
+  /// themselves certainly meet something (a sphere's inner ball, which lies inside its shape,
+  /// meets a box's solid part or another link's inner ball), so that no exact test need
+  /// confirm them. Reused between batches to avoid allocation.
   struct BatchContacts {
     struct Touch {
       int what = 0;
@@ -99,6 +102,7 @@ class SphereArm {
       std::uint32_t lanes = 0;
     };
     std::vector<Touch> self, scene;
+    std::uint32_t certain = 0;
     std::vector<std::uint32_t> pair_lanes, kernel;  // scratch
   };
   /// Which of up to kBatchLanes configurations (q_rad[lane], each dof() values) may touch
@@ -123,7 +127,7 @@ class SphereArm {
 
  private:
   void add_link(int i, const Link& link, double max_overshoot_m);
-  void add_sphere(const Eigen::Vector3d& centre_m, double radius_m, int owner);
+  void add_sphere(const Eigen::Vector3d& centre_m, double radius_m, double inner_m, int owner);
   void pad(std::size_t multiple);
   void allow_pairs(const std::vector<std::pair<std::size_t, std::size_t>>& self_pairs);
   void group_pairs();
@@ -138,7 +142,8 @@ class SphereArm {
   // lanes, so that no loop over the moving spheres ends in a scalar remainder; then the fixed
   // links, padded the same way.
   std::vector<float> lx_, ly_, lz_, r_;
-  std::vector<int> owner_;                          // the link of each sphere, -1 for padding
+  std::vector<float> inner_;  // the inner ball's radius, less a margin (0: none)
+  std::vector<int> owner_;    // the link of each sphere, -1 for padding
   std::vector<std::pair<int, int>> joint_spheres_;  // [first, end) of the moving, per joint
   std::vector<int> link_joint_;                     // per link, -1 when fixed
   int moving_ = 0;                                  // the moving spheres and their padding

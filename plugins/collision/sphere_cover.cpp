@@ -28,11 +28,12 @@ Candidate box_cover(const Eigen::Vector3d& half, const Eigen::Vector3i& n) {
   c.bound_m = radius - sub.minCoeff();
   for (int i = 0; i < n.x(); ++i)
     for (int j = 0; j < n.y(); ++j)
-      for (int k = 0; k < n.z(); ++k)
-        c.spheres.push_back(
-            {Eigen::Vector3d(cell_centre(half.x(), n.x(), i), cell_centre(half.y(), n.y(), j),
-                             cell_centre(half.z(), n.z(), k)),
-             radius});
+      for (int k = 0; k < n.z(); ++k) {
+        const Eigen::Vector3d centre(cell_centre(half.x(), n.x(), i),
+                                     cell_centre(half.y(), n.y(), j),
+                                     cell_centre(half.z(), n.z(), k));
+        c.spheres.push_back({centre, radius, (half - centre.cwiseAbs()).minCoeff()});
+      }
   return c;
 }
 
@@ -48,14 +49,14 @@ Candidate cylinder_cover(double radius_m, double half_m, double target_m) {
   const double R = radius_m;
   if (half_m <= R) {
     const double r = std::hypot(R, half_m);
-    c.spheres.push_back({Eigen::Vector3d::Zero(), r});
+    c.spheres.push_back({Eigen::Vector3d::Zero(), r, half_m});
     c.bound_m = r - half_m;
     return c;
   }
   const double end_r = std::sqrt(2.0) * R;  // depth R, reaching 2 R into the cylinder
   c.bound_m = end_r - R;
-  c.spheres.push_back({Eigen::Vector3d(0, 0, -half_m + R), end_r});
-  c.spheres.push_back({Eigen::Vector3d(0, 0, half_m - R), end_r});
+  c.spheres.push_back({Eigen::Vector3d(0, 0, -half_m + R), end_r, R});
+  c.spheres.push_back({Eigen::Vector3d(0, 0, half_m - R), end_r, R});
   const double middle_half = half_m - 2.0 * R;
   if (middle_half <= 0.0) return c;
   const double reach = std::max(target_m, c.bound_m);
@@ -63,7 +64,7 @@ Candidate cylinder_cover(double radius_m, double half_m, double target_m) {
   const int n = std::max(1, int(std::ceil(middle_half / slab_half - 1e-9)));
   const double r = std::hypot(R, middle_half / n);
   for (int k = 0; k < n; ++k)
-    c.spheres.push_back({Eigen::Vector3d(0, 0, cell_centre(middle_half, n, k)), r});
+    c.spheres.push_back({Eigen::Vector3d(0, 0, cell_centre(middle_half, n, k)), r, R});
   c.bound_m = std::max(c.bound_m, r - R);
   return c;
 }
@@ -111,13 +112,13 @@ SphereCover cover_with_spheres(const CollisionPrimitive& shape, double max_overs
       break;
     case CollisionPrimitive::Kind::kSphere:
       if (!(size.x() > 0.0)) throw Error("sphere cover: a sphere needs a positive radius");
-      cover.spheres.push_back({Eigen::Vector3d::Zero(), size.x()});
+      cover.spheres.push_back({Eigen::Vector3d::Zero(), size.x(), size.x()});
       break;
   }
   SphereCover out;
   out.overshoot_m = std::max(0.0, cover.bound_m);
   for (const Sphere& s : cover.spheres)
-    out.spheres.push_back({shape.X_LinkShape * s.center_m, s.radius_m});
+    out.spheres.push_back({shape.X_LinkShape * s.center_m, s.radius_m, s.inner_m});
   return out;
 }
 

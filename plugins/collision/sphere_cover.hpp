@@ -13,6 +13,10 @@
 // (sphere_cover.cpp: a flat end costs (sqrt(2) - 1) times the radius, 2.5 cm for a 6 cm
 // radius, whatever the target). A sphere is itself.
 //
+// Each sphere also says how deep its centre lies in the shape (`inner_m`): the ball of that
+// radius about the centre lies inside the shape. Where that ball meets an obstacle, the shape
+// does too, so a check may call such a contact certain without testing the shape itself.
+//
 // Frames and units: spheres in the frame of the primitive's link (the primitive's
 // X_LinkShape applied), metres.
 
@@ -27,6 +31,7 @@ namespace antipode::collision {
 struct Sphere {
   Eigen::Vector3d center_m = Eigen::Vector3d::Zero();
   double radius_m = 0.0;
+  double inner_m = 0.0;  ///< the ball of this radius about the centre lies inside the shape
 };
 
 struct SphereCover {

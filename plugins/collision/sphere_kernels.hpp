@@ -23,11 +23,14 @@ SimdLevel simd_level();
 SimdLevel set_simd_level(SimdLevel level);
 const char* to_string(SimdLevel level);
 
-/// A box: centre, rotation (rows of R_BoxWorld: world to box axes) and half sizes.
+/// A box: centre, rotation (rows of R_BoxWorld: world to box axes) and half sizes; and the
+/// half sizes of a box about the same centre and axes that lies inside the obstacle the box
+/// stands for (`solid`: the box itself, or the box inscribed in a cylinder).
 struct KernelBox {
   float center[3];
   float rows[3][3];
   float half[3];
+  float solid[3];
 };
 
 /// w = R l + t for n points (R: 9 floats, row by row).
@@ -79,7 +82,10 @@ constexpr int kBatchLanes = 16;
 /// prismatic[j]), the moving spheres (in their joint's frame; joint -1 for padding), the
 /// fixed spheres (base frame), the sphere pairs to test (pair_a[p], a moving sphere, with
 /// pair_b[p], a moving one or, from `moving` on, fixed sphere pair_b[p] - moving), and the
-/// moving spheres box_sphere[p] to test against the robot's fixed boxes.
+/// moving spheres box_sphere[p] to test against the robot's fixed boxes. Each sphere's inner
+/// radius (inner, f_inner; 0: none) is that of a ball about its centre inside its link's
+/// shape: where such a ball meets a box's solid part or another link's ball, the shapes
+/// certainly meet.
 ///
 /// The links' bounding spheres (link_bounds.hpp) let mark_batch() skip whole groups of tests:
 /// bound b, in joint bound_joint[b]'s frame (-1: a fixed link, base frame), holds every
@@ -100,7 +106,8 @@ struct KernelArm {
   const std::int32_t* joint;
   const float *lx, *ly, *lz, *r;
   const float* points_r;  ///< radius against the points, -1 where unchecked
-  const float *fx, *fy, *fz, *fr;
+  const float* inner;
+  const float *fx, *fy, *fz, *fr, *f_inner;
   const std::int32_t *pair_a, *pair_b;
   const std::int32_t* box_sphere;
   const KernelBox* robot_boxes;
@@ -119,12 +126,14 @@ struct KernelArm {
 /// without placing its spheres again: per group of sphere pairs (`groups` entries), per group
 /// of box pairs (`box_groups`), per moving bound and scene box (moving_bounds x box_count,
 /// bound by bound), and per moving bound against the points (moving_bounds). A skipped
-/// group's entry is 0.
+/// group's entry is 0. `certain`: the lanes in which some group that touches also shows a
+/// contact of the shapes themselves (KernelArm's inner radii), so that no exact test is needed.
 struct KernelContacts {
   std::uint32_t* groups;
   std::uint32_t* box_groups;
   std::uint32_t* scene_boxes;
   std::uint32_t* points;
+  std::uint32_t* certain;
 };
 
 /// For kBatchLanes configurations (q: dof x kBatchLanes, joint by joint), the lanes whose

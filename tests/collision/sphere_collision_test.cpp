@@ -54,6 +54,21 @@ double outside(const CollisionPrimitive& s, const Eigen::Vector3d& p_link) {
   return 0.0;
 }
 
+// Distance from p (in the link frame, inside the shape) to the shape's surface.
+double depth(const CollisionPrimitive& s, const Eigen::Vector3d& p_link) {
+  const Eigen::Vector3d p = s.X_LinkShape.inverse() * p_link;
+  switch (s.kind) {
+    case CollisionPrimitive::Kind::kBox:
+      return (0.5 * s.size_m - p.cwiseAbs()).minCoeff();
+    case CollisionPrimitive::Kind::kCylinder:
+      return std::min(s.size_m.x() - std::hypot(p.x(), p.y()),
+                      0.5 * s.size_m.y() - std::abs(p.z()));
+    case CollisionPrimitive::Kind::kSphere:
+      return s.size_m.x() - p.norm();
+  }
+  return 0.0;
+}
+
 CollisionPrimitive shape(CollisionPrimitive::Kind kind, const Eigen::Vector3d& size) {
   CollisionPrimitive s;
   s.kind = kind;
@@ -64,7 +79,7 @@ CollisionPrimitive shape(CollisionPrimitive::Kind kind, const Eigen::Vector3d& s
 }
 
 // Every point of the shape lies in a sphere; no point of a sphere lies farther than the
-// stated overshoot from the shape.
+// stated overshoot from the shape; the ball of a sphere's inner radius lies in the shape.
 void expect_cover_holds(const CollisionPrimitive& s, double target_m) {
   const SphereCover cover = cover_with_spheres(s, target_m);
   ASSERT_FALSE(cover.spheres.empty());
@@ -96,6 +111,18 @@ void expect_cover_holds(const CollisionPrimitive& s, double target_m) {
     }
   EXPECT_LE(worst, cover.overshoot_m + 1e-9);
   EXPECT_GT(worst, 0.5 * cover.overshoot_m);  // the bound is not loose
+  // The ball of each sphere's inner radius lies inside the shape, and reaches its surface.
+  for (const Sphere& sphere : cover.spheres) {
+    ASSERT_GT(sphere.inner_m, 0.0);
+    double nearest = 1e9;
+    for (int i = 0; i < 2000; ++i) {
+      Eigen::Vector3d u(random.normal(), random.normal(), random.normal());
+      const Eigen::Vector3d p = sphere.center_m + sphere.inner_m * u.normalized();
+      ASSERT_LE(outside(s, p), 1e-12) << "a point of the inner ball outside the shape";
+      nearest = std::min(nearest, depth(s, p));
+    }
+    EXPECT_LT(nearest, 0.05 * sphere.inner_m + 1e-6);  // the inner radius is not loose
+  }
 }
 
 TEST(SphereCover, HoldsBoxesAndKeepsToTheOvershoot) {

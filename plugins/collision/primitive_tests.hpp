@@ -1,0 +1,48 @@
+#pragma once
+// Quick tests between two primitive shapes (robot_model.hpp's boxes, cylinders and spheres),
+// asked before FCL where the fast path's spheres flag a pair (arm_collision_world.hpp, spheres
+// then FCL). Most flagged pairs are in fact apart by millimetres to centimetres - the spheres
+// reach up to 3 cm past Baxter's 6 cm cylinders' flat ends - and a separating plane shows it
+// sooner than FCL's general (GJK) test: for a cylinder and a box, 0.17 us against 0.28 us with
+// FCL for the 3.5% left undecided (collision_bench --benchmark_filter=ConfirmPair); a sphere
+// against anything costs a distance.
+//
+// How, by kinds:
+// - a sphere with anything: the distance from its centre to the other shape, exact;
+// - two boxes: the separating axis test (Gottschalk, Lin and Manocha 1996: the boxes are apart
+//   if and only if their projections onto one of 15 axes are), exact;
+// - a cylinder: held by its bounding box and by that box turned 45 degrees about its axis (their
+//   common part, an octagonal prism, reaches at most 8.3% of the radius past the side), and
+//   holding its inscribed box (the square of side R sqrt(2), the cylinder's length). It is apart
+//   from a box or a cylinder when one of its two bounding boxes is apart from it (or from one of
+//   the other cylinder's), and certainly meets one that its inscribed box meets (or the other
+//   cylinder's). Otherwise the test cannot tell.
+// An answer is given only with kMargin_m to spare - shapes closer than that to touching, or
+// overlapping by less, are left to FCL - so where this test answers, FCL answers the same.
+//
+// Frames and units: both shapes placed in one frame (X_FrameA, X_FrameB: each shape's centre,
+// and for a cylinder its axis along z, as FCL places them); metres. Threads: pure functions.
+
+#include <Eigen/Geometry>
+
+#include "antipode/robot/robot_model.hpp"
+
+namespace antipode::collision {
+
+enum class Verdict { kApart, kMeet, kUndecided };
+
+/// A primitive's kind and sizes (CollisionPrimitive's size_m convention; its X_LinkShape is
+/// not read) placed at X_FrameShape.
+struct PlacedPrimitive {
+  CollisionPrimitive::Kind kind = CollisionPrimitive::Kind::kBox;
+  Eigen::Vector3d size_m = Eigen::Vector3d::Zero();
+  Eigen::Isometry3d X_FrameShape = Eigen::Isometry3d::Identity();
+};
+
+/// Shapes closer than this to touching, or overlapping by less, are undecided (m).
+constexpr double kMargin_m = 1e-5;
+
+/// Whether a and b are apart, meet, or cannot be told apart by these tests.
+Verdict quick_test(const PlacedPrimitive& a, const PlacedPrimitive& b);
+
+}  // namespace antipode::collision
