@@ -11,12 +11,13 @@
 // - a sphere with anything: the distance from its centre to the other shape, exact;
 // - two boxes: the separating axis test (Gottschalk, Lin and Manocha 1996: the boxes are apart
 //   if and only if their projections onto one of 15 axes are), exact;
-// - a cylinder: held by its bounding box and by that box turned 45 degrees about its axis (their
-//   common part, an octagonal prism, reaches at most 8.3% of the radius past the side), and
-//   holding its inscribed box (the square of side R sqrt(2), the cylinder's length). It is apart
-//   from a box or a cylinder when one of its two bounding boxes is apart from it (or from one of
-//   the other cylinder's), and certainly meets one that its inscribed box meets (or the other
-//   cylinder's). Otherwise the test cannot tell.
+// - a cylinder with a box or a cylinder: apart when the gap along a candidate axis is positive
+//   (each shape's reach along the axis is exact, so a positive gap is a separating plane); the
+//   axes are each shape's own, their cross products, the line between the centres, and the line
+//   between the nearest points (the box's point nearest the cylinder's axis, or the two axes'
+//   nearest points). Meeting when a point found lies inside both (that point of the box, or one
+//   between the two axes), or when inscribed boxes (the square of side R sqrt(2), two per
+//   cylinder turned 45 degrees) meet. Otherwise the test cannot tell.
 // An answer is given only with kMargin_m to spare - shapes closer than that to touching, or
 // overlapping by less, are left to FCL - so where this test answers, FCL answers the same.
 //

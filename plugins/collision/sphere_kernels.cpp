@@ -258,46 +258,12 @@ ANTIPODE_INLINE void batch_box(const KernelBox& box, const float* __restrict x,
   for (int l = 0; l < L; ++l) hit[l] |= touch[l];
 }
 
-// Lanes where the ball of radius `inner` about the centre (x, y, z) meets the box's solid
-// part, OR-ed into hit (none for inner 0). Strictly: a ball that only touches it is not counted.
-ANTIPODE_INLINE void batch_solid(const KernelBox& box, const float* __restrict x,
-                                 const float* __restrict y, const float* __restrict z, float inner,
-                                 std::int32_t* __restrict hit) {
-  KernelBox b = box;
-  for (int i = 0; i < 3; ++i) b.half[i] = box.solid[i];
-  alignas(64) std::int32_t touch[L];
-  for (int l = 0; l < L; ++l) touch[l] = std::int32_t(gap2(b, x[l], y[l], z[l]) < inner * inner);
-  for (int l = 0; l < L; ++l) hit[l] |= touch[l];
-}
-
-// Lanes where the inner balls of spheres i and j (as pair_test() takes them) overlap, OR-ed
-// into hit (none unless both have one).
-ANTIPODE_INLINE void pair_solid(const KernelArm& a, const float* __restrict x,
-                                const float* __restrict y, const float* __restrict z, int i, int j,
-                                std::int32_t* __restrict hit) {
-  const bool fixed = j >= a.moving;
-  const float inner_j = fixed ? a.f_inner[j - a.moving] : a.inner[j];
-  if (!(a.inner[i] > 0.0f && inner_j > 0.0f)) return;
-  const float reach = a.inner[i] + inner_j;
-  const float* xi = x + i * L;
-  const float* yi = y + i * L;
-  const float* zi = z + i * L;
-  alignas(64) float xj[L], yj[L], zj[L];
-  for (int l = 0; l < L; ++l) {
-    xj[l] = fixed ? a.fx[j - a.moving] : x[j * L + l];
-    yj[l] = fixed ? a.fy[j - a.moving] : y[j * L + l];
-    zj[l] = fixed ? a.fz[j - a.moving] : z[j * L + l];
-  }
-  for (int l = 0; l < L; ++l) {
-    const float dx = xi[l] - xj[l], dy = yi[l] - yj[l], dz = zi[l] - zj[l];
-    hit[l] |= std::int32_t(dx * dx + dy * dy + dz * dz < reach * reach);
-  }
-}
-
 // Lanes where sphere pair (i, j) overlaps - j a moving sphere, or from a.moving on a fixed one
-// - OR-ed into hit.
+// - OR-ed into hit; their radii from r (the moving spheres) and fr (the fixed ones): a.r and
+// a.fr, or the inner radii a.inner and a.f_inner.
 ANTIPODE_INLINE void pair_test(const KernelArm& a, const float* __restrict x,
                                const float* __restrict y, const float* __restrict z, int i, int j,
+                               const float* __restrict r, const float* __restrict fr,
                                std::int32_t* __restrict hit) {
   const float* xi = x + i * L;
   const float* yi = y + i * L;
@@ -306,14 +272,14 @@ ANTIPODE_INLINE void pair_test(const KernelArm& a, const float* __restrict x,
     const float* xj = x + j * L;
     const float* yj = y + j * L;
     const float* zj = z + j * L;
-    const float reach = a.r[i] + a.r[j];
+    const float reach = r[i] + r[j];
     for (int l = 0; l < L; ++l) {
       const float dx = xi[l] - xj[l], dy = yi[l] - yj[l], dz = zi[l] - zj[l];
       hit[l] |= std::int32_t(dx * dx + dy * dy + dz * dz <= reach * reach);
     }
   } else {
     const int f = j - a.moving;
-    const float fx = a.fx[f], fy = a.fy[f], fz = a.fz[f], reach = a.r[i] + a.fr[f];
+    const float fx = a.fx[f], fy = a.fy[f], fz = a.fz[f], reach = r[i] + fr[f];
     for (int l = 0; l < L; ++l) {
       const float dx = xi[l] - fx, dy = yi[l] - fy, dz = zi[l] - fz;
       hit[l] |= std::int32_t(dx * dx + dy * dy + dz * dz <= reach * reach);
@@ -354,9 +320,19 @@ struct Placed {
 };
 
 // Whether to look for a certain contact after a group whose record is `out`: only where the
-// group touches in some lane.
+// group touches in some lane. The certain contacts are the same tests with the spheres' inner
+// radii (KernelArm), against the boxes' solid parts.
 ANTIPODE_INLINE bool look_closer(const Placed& s, const std::uint32_t* out) {
   return s.certain != nullptr && out != nullptr && *out != 0;
+}
+ANTIPODE_INLINE KernelBox solid_part(const KernelBox& box) {
+  KernelBox solid = box;
+  for (int i = 0; i < 3; ++i) solid.half[i] = box.solid[i];
+  return solid;
+}
+// Whether spheres i and j (as pair_test() takes them) both have an inner ball.
+ANTIPODE_INLINE bool inner_both(const KernelArm& a, int i, int j) {
+  return a.inner[i] > 0.0f && (j < a.moving ? a.inner[j] : a.f_inner[j - a.moving]) > 0.0f;
 }
 
 // The robot: sphere pairs, then its fixed boxes, a link pair's or a link and box's only where
@@ -370,10 +346,11 @@ ANTIPODE_INLINE void robot_loop(const KernelArm& a, const Placed& s) {
       continue;
     }
     for (int p = a.group_first[g]; p < a.group_first[g + 1]; ++p)
-      pair_test(a, s.x, s.y, s.z, a.pair_a[p], a.pair_b[p], s.found);
+      pair_test(a, s.x, s.y, s.z, a.pair_a[p], a.pair_b[p], a.r, a.fr, s.found);
     take(s.found, s.hit, out);
     for (int p = a.group_first[g]; look_closer(s, out) && p < a.group_first[g + 1]; ++p)
-      pair_solid(a, s.x, s.y, s.z, a.pair_a[p], a.pair_b[p], s.certain);
+      if (inner_both(a, a.pair_a[p], a.pair_b[p]))
+        pair_test(a, s.x, s.y, s.z, a.pair_a[p], a.pair_b[p], a.inner, a.f_inner, s.certain);
   }
   for (int g = 0; g < a.box_groups; ++g) {
     std::uint32_t* out = entry(w != nullptr ? w->box_groups : nullptr, g);
@@ -388,9 +365,12 @@ ANTIPODE_INLINE void robot_loop(const KernelArm& a, const Placed& s) {
       batch_box(box, s.x + k * L, s.y + k * L, s.z + k * L, a.r[k], s.found);
     }
     take(s.found, s.hit, out);
-    for (int p = a.box_group_first[g]; look_closer(s, out) && p < a.box_group_first[g + 1]; ++p) {
+    if (!look_closer(s, out)) continue;
+    const KernelBox solid = solid_part(box);
+    for (int p = a.box_group_first[g]; p < a.box_group_first[g + 1]; ++p) {
       const int k = a.box_sphere[p];
-      batch_solid(box, s.x + k * L, s.y + k * L, s.z + k * L, a.inner[k], s.certain);
+      if (a.inner[k] > 0.0f)
+        batch_box(solid, s.x + k * L, s.y + k * L, s.z + k * L, a.inner[k], s.certain);
     }
   }
 }
@@ -409,8 +389,11 @@ ANTIPODE_INLINE void scene_loop(const KernelArm& a, const KernelBox* boxes, int 
       for (int k = a.bound_first[b]; k < a.bound_end[b]; ++k)
         batch_box(boxes[c], s.x + k * L, s.y + k * L, s.z + k * L, a.r[k], s.found);
       take(s.found, s.hit, out);
-      for (int k = a.bound_first[b]; look_closer(s, out) && k < a.bound_end[b]; ++k)
-        batch_solid(boxes[c], s.x + k * L, s.y + k * L, s.z + k * L, a.inner[k], s.certain);
+      if (!look_closer(s, out)) continue;
+      const KernelBox solid = solid_part(boxes[c]);
+      for (int k = a.bound_first[b]; k < a.bound_end[b]; ++k)
+        if (a.inner[k] > 0.0f)
+          batch_box(solid, s.x + k * L, s.y + k * L, s.z + k * L, a.inner[k], s.certain);
     }
 }
 
