@@ -72,6 +72,29 @@ TEST_F(ClutterBenchTest, EveryRunRemovesObjects) {
     }
   }
   EXPECT_LE(s["successes"].get<int>(), s["attempts"].get<int>());
+  // Every attempt is counted once by the object its grasp was planned around: the first the
+  // cell found between the planned fingers, most tried first.
+  int by_object_attempts = 0, by_object_successes = 0, previous = 1 << 30;
+  for (const auto& o : s["by_object"]) {
+    const int attempts = o["attempts"], successes = o["successes"];
+    int failures = 0;
+    for (const auto& [reason, count] : o["reasons"].items()) failures += count.get<int>();
+    EXPECT_EQ(successes + failures, attempts) << o.dump();
+    EXPECT_LE(attempts, previous) << s["by_object"].dump();
+    previous = attempts;
+    by_object_attempts += attempts;
+    by_object_successes += successes;
+  }
+  EXPECT_EQ(by_object_attempts, s["attempts"].get<int>()) << s["by_object"].dump();
+  EXPECT_EQ(by_object_successes, s["successes"].get<int>());
+  for (const auto& run : r["run_records"])
+    for (const auto& cycle : run["cycles"])
+      if (cycle["outcome"] == "success") {
+        const std::string held = cycle["record"]["between_fingers_at_detection"][0];
+        bool named = false;
+        for (const auto& o : s["by_object"]) named = named || o["name"] == held;
+        EXPECT_TRUE(named) << held << " is not in " << s["by_object"].dump();
+      }
   EXPECT_EQ(s["left_graspable"], left_graspable);
   EXPECT_EQ(s["left"].get<int>(),
             s["objects"].get<int>() - s["removed"].get<int>() - s["lost"].get<int>());
@@ -152,6 +175,13 @@ TEST_F(ClutterBenchTest, ReportWritesMarkdownAndAChart) {
   EXPECT_NE(markdown.find("![per run](images/clutter-small-runs.png)"), std::string::npos);
   EXPECT_NE(markdown.find("Removed of the objects it could hold: "), std::string::npos);
   EXPECT_NE(markdown.find("| left (narrowest horizontal extent) |"), std::string::npos);
+  EXPECT_NE(markdown.find("| object | attempts | succeeded | failures |"), std::string::npos);
+  for (const auto& o : s["by_object"])
+    EXPECT_NE(markdown.find("| " + o["name"].get<std::string>() + " | " + o["attempts"].dump() +
+                            " | " + o["successes"].dump() + " | "),
+              std::string::npos)
+        << o.dump() << "\n"
+        << markdown;
   std::ifstream png(file("images/clutter-small-runs.png"), std::ios::binary);
   char signature[8] = {};
   png.read(signature, 8);

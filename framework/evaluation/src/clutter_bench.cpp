@@ -315,6 +315,9 @@ void print_clutter_summary(std::ostream& out, const Json& s, const std::string& 
         << "%)";
   out << "\nruns ended:";
   for (const auto& [stop, count] : s["stops"].items()) out << "  " << stop << " " << count;
+  out << "\nsuccesses / attempts by object:";
+  for (const auto& o : s["by_object"])
+    out << "  " << o["name"].get<std::string>() << " " << o["successes"] << "/" << o["attempts"];
   out << "\nmedian seconds: cycle " << s["cycle_s_median"] << ", run " << s["run_s_median"] << "\n";
 }
 
@@ -347,6 +350,56 @@ Json between_runs_intervals(const Json& runs) {
   if (objects.size() >= 2) out["removed"] = as_json(run_bootstrap_interval(objects));
   return out;
 }
+
+namespace {
+
+// by_object's names for attempts without an object.
+constexpr const char* kNotExecuted = "(not executed)";
+constexpr const char* kNothingBetweenTheFingers = "(nothing between the fingers)";
+
+// The object an attempt was made on, by the cell's account: the first named between the
+// planned fingers when the grasp was detected.
+std::string attempted_object(const Json& cycle) {
+  if (!cycle.contains("record")) return kNotExecuted;
+  const Json& record = cycle.at("record");
+  if (!record.contains("between_fingers_at_detection") ||
+      record.at("between_fingers_at_detection").empty())
+    return kNothingBetweenTheFingers;
+  return record.at("between_fingers_at_detection").at(0);
+}
+
+Json attempts_by_object(const Json& runs) {
+  std::map<std::string, Json> objects;
+  for (const Json& run : runs) {
+    if (run.contains("error")) continue;
+    for (const Json& cycle : run.at("cycles")) {
+      if (cycle.at("outcome") == kNoGraspFound || cycle.at("outcome") == kNothingPredictedToHold)
+        continue;
+      const std::string name = attempted_object(cycle);
+      Json& o = objects
+                    .try_emplace(name, Json{{"name", name},
+                                            {"attempts", 0},
+                                            {"successes", 0},
+                                            {"reasons", Json::object()}})
+                    .first->second;
+      o["attempts"] = o["attempts"].get<int>() + 1;
+      const std::string reason = cycle.at("reason");
+      if (reason == "success")
+        o["successes"] = o["successes"].get<int>() + 1;
+      else
+        o["reasons"][reason] = o["reasons"].value(reason, 0) + 1;
+    }
+  }
+  std::vector<Json> sorted;
+  sorted.reserve(objects.size());
+  for (auto& [name, o] : objects) sorted.push_back(std::move(o));
+  std::stable_sort(sorted.begin(), sorted.end(), [](const Json& a, const Json& b) {
+    return a.at("attempts").get<int>() > b.at("attempts").get<int>();
+  });
+  return Json(sorted);
+}
+
+}  // namespace
 
 Json summarise_clutter(const Json& runs) {
   int attempts = 0, successes = 0, objects = 0, removed = 0, lost = 0, cycles = 0, no_grasp = 0,
@@ -408,7 +461,8 @@ Json summarise_clutter(const Json& runs) {
                   {"paper_classes", groups},
                   {"stops", stops},
                   {"cycle_s_median", percentile(cycle_s, 0.5)},
-                  {"run_s_median", percentile(run_s, 0.5)}};
+                  {"run_s_median", percentile(run_s, 0.5)},
+                  {"by_object", attempts_by_object(runs)}};
   const Json between_runs = between_runs_intervals(runs);
   if (between_runs.contains("success"))
     summary["success_rate"]["ci95_runs"] = between_runs.at("success");

@@ -142,6 +142,22 @@ std::string failures(const Json& s) {
          ". Runs ended: " + stops + ". " + lost + ".\n\n";
 }
 
+// Attempts and successes by the object each grasp was planned around, most tried first.
+std::string by_object(const Json& s) {
+  std::vector<std::vector<std::string>> rows;
+  for (const Json& o : s.at("by_object")) {
+    std::string classes;
+    for (const auto& [reason, count] : o.at("reasons").items())
+      classes += (classes.empty() ? "" : ", ") + reason + " " + count.dump();
+    rows.push_back({o.at("name").get<std::string>(), o.at("attempts").dump(),
+                    o.at("successes").dump(), classes.empty() ? "-" : classes});
+  }
+  if (rows.empty()) return "";
+  return "By the object each grasp was planned around (the first the cell found between the "
+         "planned fingers):\n\n" +
+         markdown_table({"object", "attempts", "succeeded", "failures"}, rows) + "\n";
+}
+
 // More runs than this get one line about them instead of a row and a bar each.
 constexpr std::size_t kRunsShownOneByOne = 20;
 
@@ -212,7 +228,7 @@ ReportSection clutter_section(const Json& report, const std::string& name, const
     section.title += ", " + setting_words(report, "", "", protocol.tree, "");
   section.markdown = settings_text(report) + command_text(report, name) + headline(report, s) +
                      "\n" + between_runs(report, s) + what_was_left(s) + failures(s) +
-                     per_run(report, plots, name);
+                     by_object(s) + per_run(report, plots, name);
   return section;
 }
 
