@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <map>
 #include <set>
 #include <vector>
 
@@ -87,14 +88,28 @@ TEST_F(ClutterBenchTest, EveryRunRemovesObjects) {
   }
   EXPECT_EQ(by_object_attempts, s["attempts"].get<int>()) << s["by_object"].dump();
   EXPECT_EQ(by_object_successes, s["successes"].get<int>());
+  // Each object's counts are those of the cycles whose record names it first.
+  std::map<std::string, std::pair<int, int>> expected;  // attempts, successes
   for (const auto& run : r["run_records"])
-    for (const auto& cycle : run["cycles"])
-      if (cycle["outcome"] == "success") {
-        const std::string held = cycle["record"]["between_fingers_at_detection"][0];
-        bool named = false;
-        for (const auto& o : s["by_object"]) named = named || o["name"] == held;
-        EXPECT_TRUE(named) << held << " is not in " << s["by_object"].dump();
-      }
+    for (const auto& cycle : run["cycles"]) {
+      if (!cycle.contains("record") || cycle["record"]["between_fingers_at_detection"].empty())
+        continue;
+      auto& [attempts, successes] =
+          expected[cycle["record"]["between_fingers_at_detection"][0].get<std::string>()];
+      ++attempts;
+      successes += cycle["outcome"] == "success";
+    }
+  ASSERT_FALSE(expected.empty());
+  for (const auto& [name, counts] : expected) {
+    bool found = false;
+    for (const auto& o : s["by_object"]) {
+      if (o["name"] != name) continue;
+      found = true;
+      EXPECT_EQ(o["attempts"].get<int>(), counts.first) << name;
+      EXPECT_EQ(o["successes"].get<int>(), counts.second) << name;
+    }
+    EXPECT_TRUE(found) << name << " is not in " << s["by_object"].dump();
+  }
   EXPECT_EQ(s["left_graspable"], left_graspable);
   EXPECT_EQ(s["left"].get<int>(),
             s["objects"].get<int>() - s["removed"].get<int>() - s["lost"].get<int>());

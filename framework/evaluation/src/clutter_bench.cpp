@@ -357,6 +357,11 @@ namespace {
 constexpr const char* kNotExecuted = "(not executed)";
 constexpr const char* kNothingBetweenTheFingers = "(nothing between the fingers)";
 
+// Whether a cycle chose no grasp to try (no attempt).
+bool found_no_grasp(const Json& cycle) {
+  return cycle.at("outcome") == kNoGraspFound || cycle.at("outcome") == kNothingPredictedToHold;
+}
+
 // The object an attempt was made on, by the cell's account: the first named between the
 // planned fingers when the grasp was detected.
 std::string attempted_object(const Json& cycle) {
@@ -373,8 +378,7 @@ Json attempts_by_object(const Json& runs) {
   for (const Json& run : runs) {
     if (run.contains("error")) continue;
     for (const Json& cycle : run.at("cycles")) {
-      if (cycle.at("outcome") == kNoGraspFound || cycle.at("outcome") == kNothingPredictedToHold)
-        continue;
+      if (found_no_grasp(cycle)) continue;
       const std::string name = attempted_object(cycle);
       Json& o = objects
                     .try_emplace(name, Json{{"name", name},
@@ -437,8 +441,7 @@ Json summarise_clutter(const Json& runs) {
       ++cycles;
       cycle_s.push_back(cycle.at("seconds").get<double>());
       const std::string reason = cycle.at("reason");
-      const bool found_none =
-          cycle.at("outcome") == kNoGraspFound || cycle.at("outcome") == kNothingPredictedToHold;
+      const bool found_none = found_no_grasp(cycle);
       if (found_none) ++no_grasp;
       if (found_none || reason == "success") continue;
       reasons[reason] = reasons.value(reason, 0) + 1;

@@ -109,6 +109,14 @@ std::string left_objects(const Json& run) {
   return text.empty() ? "-" : text;
 }
 
+// "slipped 3, closed on nothing 2": a map of counts as a list ("" when empty).
+std::string counts_text(const Json& counts) {
+  std::string text;
+  for (const auto& [what, count] : counts.items())
+    text += (text.empty() ? "" : ", ") + what + " " + count.dump();
+  return text;
+}
+
 std::string failures(const Json& s) {
   const int attempts = s.at("attempts");
   std::vector<std::vector<std::string>> rows;
@@ -118,12 +126,8 @@ std::string failures(const Json& s) {
                   attempts ? 100.0 * count.get<int>() / attempts : 0);
     rows.push_back({group, count.dump(), share});
   }
-  std::string classes;
-  for (const auto& [reason, count] : s.at("reasons").items())
-    classes += (classes.empty() ? "" : ", ") + reason + " " + count.dump();
-  std::string stops;
-  for (const auto& [stop, count] : s.at("stops").items())
-    stops += (stops.empty() ? "" : ", ") + stop + " " + count.dump();
+  const std::string classes = counts_text(s.at("reasons"));
+  const std::string stops = counts_text(s.at("stops"));
   char seconds[320];
   std::snprintf(seconds, sizeof seconds,
                 "Median cycle (capture to outcome) %.2f s, median run %.1f s; %d of %d cycles "
@@ -146,9 +150,7 @@ std::string failures(const Json& s) {
 std::string by_object(const Json& s) {
   std::vector<std::vector<std::string>> rows;
   for (const Json& o : s.at("by_object")) {
-    std::string classes;
-    for (const auto& [reason, count] : o.at("reasons").items())
-      classes += (classes.empty() ? "" : ", ") + reason + " " + count.dump();
+    const std::string classes = counts_text(o.at("reasons"));
     rows.push_back({o.at("name").get<std::string>(), o.at("attempts").dump(),
                     o.at("successes").dump(), classes.empty() ? "-" : classes});
   }
