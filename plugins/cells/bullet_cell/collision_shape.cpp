@@ -1,21 +1,9 @@
 #include "collision_shape.hpp"
 
 #include "antipode/core/error.hpp"
+#include "hull_shape.hpp"
 
 namespace antipode::cells {
-namespace {
-
-std::unique_ptr<btCollisionShape> hull_shape(const TriangleMesh& mesh, double margin_m) {
-  auto hull = std::make_unique<btConvexHullShape>();
-  for (const auto& v : mesh.vertices) hull->addPoint(btVector3(v.x(), v.y(), v.z()), false);
-  hull->recalcLocalAabb();
-  hull->optimizeConvexHull();
-  hull->setMargin(btScalar(margin_m));
-  hull->initializePolyhedralFeatures();
-  return hull;
-}
-
-}  // namespace
 
 ShapeHolder make_box_shape(const Eigen::Vector3d& h, double margin_m) {
   ShapeHolder holder;
@@ -48,12 +36,12 @@ ShapeHolder make_collision_shape(const CollisionSpec& spec, double margin_m) {
   }
   if (spec.hulls.empty()) throw Error("an object has no collision hull");
   if (spec.hulls.size() == 1) {
-    holder.root = hull_shape(spec.hulls[0], margin_m);
+    holder.root = std::make_unique<HullShape>(spec.hulls[0], margin_m);
     return holder;
   }
   auto compound = std::make_unique<btCompoundShape>();
   for (const auto& mesh : spec.hulls) {
-    holder.children.push_back(hull_shape(mesh, margin_m));
+    holder.children.push_back(std::make_unique<HullShape>(mesh, margin_m));
     btTransform identity;
     identity.setIdentity();
     compound->addChildShape(identity, holder.children.back().get());

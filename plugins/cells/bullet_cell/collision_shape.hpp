@@ -16,7 +16,7 @@ struct ShapeHolder {
   std::vector<std::unique_ptr<btCollisionShape>> children;
 };
 
-/// Primitives become Bullet's exact shapes; hulls one btConvexHullShape each (a compound
+/// Primitives become Bullet's exact shapes; hulls one HullShape each (a compound
 /// when there is more than one). Convex margins are set to `margin_m`.
 ShapeHolder make_collision_shape(const CollisionSpec& spec, double margin_m);
 
