@@ -1,6 +1,7 @@
 // Render time per depth view and simulated seconds per wall second of the bullet_cell core.
 #include <benchmark/benchmark.h>
 
+#include <cstdint>
 #include <filesystem>
 #include <random>
 #include <vector>

@@ -1,3 +1,4 @@
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <limits>
@@ -33,6 +34,17 @@ TriangleMesh random_points(int n, std::uint32_t seed) {
   return mesh;
 }
 
+// The vertex Bullet's own scan of the hull picks for `direction`.
+btVector3 bullet_vertex(const HullShape& shape, const btVector3& direction) {
+  return bullet_support(shape, direction);
+}
+
+// What farthest_vertex() picks, eight (`wide`) or four at a time, as a support point.
+btVector3 vertex(const HullShape& shape, const btVector3& direction, bool wide) {
+  const int i = shape.farthest_vertex(direction, wide);
+  return shape.getUnscaledPoints()[i < 0 ? 0 : i];
+}
+
 TEST(HullShape, AnswersAsBulletDoesBitForBit) {
   std::mt19937 random(7);
   std::normal_distribution<float> g(0.0f, 1.0f);
@@ -41,35 +53,70 @@ TEST(HullShape, AnswersAsBulletDoesBitForBit) {
     ASSERT_GT(shape.getNumPoints(), 3);
     for (int k = 0; k < 20000; ++k) {
       const btVector3 d(g(random), g(random), g(random));
-      ASSERT_TRUE(
-          same_bits(shape.localGetSupportingVertexWithoutMargin(d), bullet_support(shape, d)))
+      const btVector3 expected = bullet_vertex(shape, d);
+      ASSERT_TRUE(same_bits(shape.localGetSupportingVertexWithoutMargin(d), expected))
           << n << " points, direction " << d.x() << " " << d.y() << " " << d.z();
+      for (const bool wide : {true, false})
+        ASSERT_TRUE(same_bits(vertex(shape, d, wide), expected)) << n << " points, wide " << wide;
     }
   }
 }
 
 TEST(HullShape, TiesGoToTheFirstVertexAsInBullet) {
-  // A box's faces: along an axis four vertices tie, along a face diagonal two.
-  const HullShape shape(box_mesh(Eigen::Vector3f(0.02f, 0.03f, 0.04f)), 0.001);
-  for (int x = -1; x <= 1; ++x) {
-    for (int y = -1; y <= 1; ++y) {
-      for (int z = -1; z <= 1; ++z) {
-        const btVector3 d{btScalar(x), btScalar(y), btScalar(z)};
-        EXPECT_TRUE(
-            same_bits(shape.localGetSupportingVertexWithoutMargin(d), bullet_support(shape, d)))
-            << x << " " << y << " " << z;
+  // A box: along an axis four vertices tie, along a face diagonal two. A 32-sided cylinder:
+  // along its axis a cap's 32 vertices tie, more than one pass of either scan takes.
+  const HullShape box(box_mesh(Eigen::Vector3f(0.02f, 0.03f, 0.04f)), 0.001);
+  const HullShape cylinder(cylinder_mesh(0.03f, 0.1f, 32), 0.001);
+  ASSERT_GE(cylinder.getNumPoints(), 64);
+  for (const HullShape* shape : {&box, &cylinder}) {
+    for (int x = -1; x <= 1; ++x) {
+      for (int y = -1; y <= 1; ++y) {
+        for (int z = -1; z <= 1; ++z) {
+          const btVector3 d{btScalar(x), btScalar(y), btScalar(z)};
+          const btVector3 expected = bullet_vertex(*shape, d);
+          EXPECT_TRUE(same_bits(shape->localGetSupportingVertexWithoutMargin(d), expected))
+              << shape->getNumPoints() << " vertices, " << x << " " << y << " " << z;
+          for (const bool wide : {true, false})
+            EXPECT_TRUE(same_bits(vertex(*shape, d, wide), expected))
+                << shape->getNumPoints() << " vertices, " << x << " " << y << " " << z << ", wide "
+                << wide;
+        }
       }
     }
   }
 }
 
-TEST(HullShape, ADirectionWithoutADotProductGivesTheFirstVertex) {
-  const HullShape shape(random_points(50, 3), 0.001);
+TEST(HullShape, WithoutADotProductAboveMinusFltMaxTheFirstVertex) {
+  // Bullet's running maximum starts at -FLT_MAX (SIMD_INFINITY in the float build): a dot
+  // product of -FLT_MAX or less, or NaN, never wins, and convexHullSupport() then takes
+  // vertex 0. A box beyond x = 1.9, seen along -x, scaled so that its nearest vertices' dot
+  // products are exactly -FLT_MAX (the others' overflow to -infinity): no vertex wins.
+  TriangleMesh mesh = box_mesh(Eigen::Vector3f(0.02f, 0.03f, 0.04f));
+  for (auto& v : mesh.vertices) v.x() += 2.0f;  // x_min > 1: FLT_MAX / x_min is finite
+  const HullShape shape(mesh, 0.001);
+  const btVector3* points = shape.getUnscaledPoints();
+  float x_min = points[0].x();
+  for (int i = 1; i < shape.getNumPoints(); ++i) x_min = std::min(x_min, points[i].x());
+  ASSERT_GT(x_min, 1.0f);
+  const float fmax = std::numeric_limits<float>::max();
+  float scale = fmax / x_min;  // nudged until x_min * scale is the largest product <= FLT_MAX
+  for (int i = 0; i < 64 && x_min * scale > fmax; ++i) scale = std::nextafter(scale, 0.0f);
+  for (int i = 0; i < 64 && x_min * std::nextafter(scale, fmax) <= fmax; ++i)
+    scale = std::nextafter(scale, fmax);
+  ASSERT_EQ(x_min * -scale, -fmax);
   const float nan = std::numeric_limits<float>::quiet_NaN();
-  EXPECT_EQ(shape.farthest_vertex(btVector3(nan, 0, 0)), -1);
-  EXPECT_EQ(shape.farthest_vertex(btVector3(nan, 0, 0), false), -1);
-  EXPECT_TRUE(same_bits(shape.localGetSupportingVertexWithoutMargin(btVector3(nan, 1, 0)),
-                        shape.getUnscaledPoints()[0]));
+  for (const btVector3& d : {btVector3(-scale, 0, 0), btVector3(nan, 0, 0)}) {
+    btScalar dot = 0;
+    EXPECT_EQ(d.maxDot(points, shape.getNumPoints(), dot), -1);  // Bullet's own rule
+    for (const bool wide : {true, false}) EXPECT_EQ(shape.farthest_vertex(d, wide), -1) << wide;
+    EXPECT_TRUE(same_bits(shape.localGetSupportingVertexWithoutMargin(d), points[0]));
+  }
+  // A little less far along -x, the nearest vertices win again, the first of them.
+  const btVector3 less(-std::nextafter(scale, 0.0f), 0, 0);
+  btScalar dot = 0;
+  const long expected = less.maxDot(points, shape.getNumPoints(), dot);
+  ASSERT_GE(expected, 0);
+  for (const bool wide : {true, false}) EXPECT_EQ(shape.farthest_vertex(less, wide), expected);
 }
 
 TEST(HullShape, IsAPolyhedronToBulletsDispatch) {

@@ -11,6 +11,19 @@
 
 namespace antipode::cells {
 
+namespace {
+
+// `n` coordinates of `points` (x: 0, y: 1, z: 2), padded to a multiple of eight with NaN,
+// whose dot products never win.
+std::vector<float> padded_coordinates(const btVector3* points, int n, int axis) {
+  std::vector<float> out((static_cast<std::size_t>(n) + 7) / 8 * 8,
+                         std::numeric_limits<float>::quiet_NaN());
+  for (int i = 0; i < n; ++i) out[std::size_t(i)] = points[i][axis];
+  return out;
+}
+
+}  // namespace
+
 HullShape::HullShape(const TriangleMesh& mesh, double margin_m) {
   if (mesh.vertices.empty()) throw Error("a collision hull has no vertex");
   for (const auto& v : mesh.vertices) addPoint(btVector3(v.x(), v.y(), v.z()), false);
@@ -18,22 +31,14 @@ HullShape::HullShape(const TriangleMesh& mesh, double margin_m) {
   optimizeConvexHull();
   setMargin(btScalar(margin_m));
   initializePolyhedralFeatures();
-
-  const int n = getNumPoints();
-  const std::size_t padded = (static_cast<std::size_t>(n) + 7) / 8 * 8;
-  const float nan = std::numeric_limits<float>::quiet_NaN();
-  x_.assign(padded, nan);
-  y_.assign(padded, nan);
-  z_.assign(padded, nan);
-  const btVector3* points = getUnscaledPoints();
-  for (int i = 0; i < n; ++i) {
-    x_[std::size_t(i)] = points[i].x();
-    y_[std::size_t(i)] = points[i].y();
-    z_[std::size_t(i)] = points[i].z();
-  }
-  // Last: Bullet's support dispatch scans a CONVEX_HULL_SHAPE_PROXYTYPE itself and calls the
-  // virtual localGetSupportingVertexWithoutMargin() for this type.
+  x_ = padded_coordinates(getUnscaledPoints(), getNumPoints(), 0);
+  y_ = padded_coordinates(getUnscaledPoints(), getNumPoints(), 1);
+  z_ = padded_coordinates(getUnscaledPoints(), getNumPoints(), 2);
+#if defined(__x86_64__)
+  // Bullet's non-virtual support dispatch scans a CONVEX_HULL_SHAPE_PROXYTYPE itself and
+  // calls the virtual localGetSupportingVertexWithoutMargin() for this type.
   m_shapeType = CUSTOM_POLYHEDRAL_SHAPE_TYPE;
+#endif
 }
 
 #if defined(__x86_64__)
@@ -43,7 +48,7 @@ namespace {
 // found a vertex.
 int first_greatest(const float* best, const std::int32_t* index, int lanes) {
   int found = -1;
-  float found_dot = -std::numeric_limits<float>::infinity();
+  float found_dot = std::numeric_limits<float>::lowest();
   for (int lane = 0; lane < lanes; ++lane) {
     if (index[lane] < 0) continue;
     if (best[lane] > found_dot || (best[lane] == found_dot && index[lane] < found)) {
@@ -60,7 +65,7 @@ int first_greatest(const float* best, const std::int32_t* index, int lanes) {
 int farthest_sse2(const float* x, const float* y, const float* z, std::size_t padded, float dx,
                   float dy, float dz) {
   const __m128 vx = _mm_set1_ps(dx), vy = _mm_set1_ps(dy), vz = _mm_set1_ps(dz);
-  __m128 best = _mm_set1_ps(-std::numeric_limits<float>::infinity());
+  __m128 best = _mm_set1_ps(std::numeric_limits<float>::lowest());
   __m128i best_index = _mm_set1_epi32(-1);
   __m128i index = _mm_setr_epi32(0, 1, 2, 3);
   const __m128i step = _mm_set1_epi32(4);
@@ -98,7 +103,7 @@ __attribute__((target("avx2"))) int farthest_avx2(const float* x, const float* y
                                                   std::size_t padded, float dx, float dy,
                                                   float dz) {
   const __m256 vx = _mm256_set1_ps(dx), vy = _mm256_set1_ps(dy), vz = _mm256_set1_ps(dz);
-  const float lowest = -std::numeric_limits<float>::infinity();
+  const float lowest = std::numeric_limits<float>::lowest();
   __m256 best0 = _mm256_set1_ps(lowest), best1 = best0;
   std::size_t k = 0;
   for (; k + 16 <= padded; k += 16) {
@@ -110,7 +115,7 @@ __attribute__((target("avx2"))) int farthest_avx2(const float* x, const float* y
   _mm256_store_ps(lanes, _mm256_max_ps(best0, best1));
   float greatest = lowest;
   for (const float lane : lanes) greatest = lane > greatest ? lane : greatest;
-  if (!(greatest > lowest)) return -1;  // as btVector3::maxDot(): no dot product above -inf
+  if (!(greatest > lowest)) return -1;  // as btVector3::maxDot(): none above -FLT_MAX
   const __m256 target = _mm256_set1_ps(greatest);
   for (k = 0; k < padded; k += 8) {
     const int equal =
@@ -133,7 +138,7 @@ int HullShape::farthest_vertex(const btVector3& direction, bool wide) const {
 #else
   (void)wide;
   int found = -1;
-  float found_dot = -std::numeric_limits<float>::infinity();
+  float found_dot = std::numeric_limits<float>::lowest();
   for (std::size_t i = 0; i < padded; ++i) {
     const float dot = (x_[i] * dx + y_[i] * dy) + z_[i] * dz;
     if (dot > found_dot) {
@@ -146,10 +151,14 @@ int HullShape::farthest_vertex(const btVector3& direction, bool wide) const {
 }
 
 btVector3 HullShape::localGetSupportingVertexWithoutMargin(const btVector3& direction) const {
+#if defined(__x86_64__)
   // As Bullet's convexHullSupport(): the direction scaled, the vertex scaled back.
   const btVector3& scaling = getLocalScalingNV();
   const int found = farthest_vertex(direction * scaling);
   return getUnscaledPoints()[found < 0 ? 0 : found] * scaling;
+#else
+  return btConvexHullShape::localGetSupportingVertexWithoutMargin(direction);
+#endif
 }
 
 }  // namespace antipode::cells
