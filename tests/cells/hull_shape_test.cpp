@@ -24,8 +24,8 @@ bool same_bits(const btVector3& a, const btVector3& b) {
          std::signbit(a.z()) == std::signbit(b.z());
 }
 
-// A random cloud of `n` points in a 10 cm cube: its hull has fewer vertices, not a multiple
-// of eight as a rule.
+// A random cloud of `n` points in a 10 cm cube: its hull has fewer vertices, as a rule not a
+// multiple of either scan width (four or eight).
 TriangleMesh random_points(int n, std::uint32_t seed) {
   std::mt19937 random(seed);
   std::uniform_real_distribution<float> u(-0.05f, 0.05f);
