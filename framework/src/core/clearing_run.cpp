@@ -37,9 +37,16 @@ int ClearingRun::objects_left() const {
   return cycles.back().objects_after;
 }
 
+// Counted cycle by cycle, so that an object that comes back into the workspace (knocked in
+// from where the filling left it outside) cannot cancel one that left.
 int ClearingRun::objects_lost() const {
-  if (objects_at_start < 0 || objects_left() < 0) return -1;
-  return objects_at_start - successes() - objects_left();
+  if (objects_at_start < 0) return -1;
+  int lost = 0;
+  for (const ClearingCycle& c : cycles) {
+    if (c.objects_before < 0 || c.objects_after < 0) return -1;
+    lost += std::max(0, c.objects_before - c.objects_after - int(c.succeeded()));
+  }
+  return lost;
 }
 
 int ClearingRun::missed_at_filling() const {

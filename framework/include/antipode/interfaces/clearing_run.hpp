@@ -75,7 +75,8 @@ struct ClearingRun {
   int successes() const;     ///< attempts that lifted an object out = objects removed
   int objects_left() const;  ///< objects in the cell at the end (-1: unknown)
   /// Objects that left the cell's workspace without being picked (knocked off the table or
-  /// out of the box; -1: unknown).
+  /// out of the box; -1: unknown): per cycle, the objects gone beyond the one a success
+  /// removed. An object that comes back into the workspace does not cancel one that left.
   int objects_lost() const;
   /// Objects placed that were not in the workspace when the run began (-1: unknown).
   int missed_at_filling() const;
