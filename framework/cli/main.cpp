@@ -259,6 +259,11 @@ void add_bench_clutter(CLI::App& bench, antipode::evaluation::ClutterBenchOption
   clutter->add_option("--seed", o.seed, "Cell seed of run 0 (run i: seed + i)")
       ->capture_default_str()
       ->check(kSeed);
+  clutter
+      ->add_option("--replicates", o.replicates,
+                   "Run each seed this many times: the first as the tree is, the others with "
+                   "0.1 mm of execution noise drawn anew (the spread between draws)")
+      ->capture_default_str();
   clutter->add_option("--jobs", o.jobs, "Processes (the same results for any number)")
       ->capture_default_str();
   clutter->add_option("--report", o.report_path, "Write the report as JSON");

@@ -11,6 +11,7 @@
 #include <yaml-cpp/yaml.h>
 
 #include "antipode/core/error.hpp"
+#include "antipode/evaluation/clutter_bench.hpp"
 #include "antipode/evaluation/json_file.hpp"
 #include "antipode/geometry/preprocess.hpp"
 #include "antipode/io/load_cloud.hpp"
@@ -140,14 +141,18 @@ struct Group {
 std::vector<Group> clutter_groups(const Json& report) {
   std::vector<Group> groups;
   for (const Json& run : report["run_records"]) {
-    const std::string seed = std::to_string(run.value("seed", std::uint64_t(0)));
+    const auto seed_number = run.value("seed", std::uint64_t(0));
+    const int replicate = run.value("replicate", 0);
+    std::string seed = std::to_string(seed_number);
+    const std::string prefix = evaluation::clutter_run_prefix(seed_number, replicate);
+    if (replicate > 0) seed += " (replicate " + std::to_string(replicate) + ")";
     Group group{
         "seed " + seed + ": " + run.value("summary", "") + " (" + run.value("stop", "") + ")", {}};
     const Json cycles = run.value("cycles", Json::array());
     for (std::size_t k = 0; k < cycles.size(); ++k) {
       char number[24];
       std::snprintf(number, sizeof number, "%02zu", k + 1);
-      group.attempts.push_back({"seed-" + seed + "-cycle-" + number,
+      group.attempts.push_back({prefix + "cycle-" + number,
                                 "seed " + seed + ", cycle " + std::to_string(k + 1), cycles[k]});
     }
     groups.push_back(std::move(group));

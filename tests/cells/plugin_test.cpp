@@ -64,6 +64,9 @@ TEST_F(BulletCellPluginTest, RejectsBadParameters) {
             std::string::npos);
   EXPECT_NE(creation_error("scene: scenes/isolated_cylinder.yaml\nnoise: -1").find("noise"),
             std::string::npos);
+  EXPECT_NE(creation_error("scene: scenes/isolated_cylinder.yaml\nexecution_noise_m: 0.5")
+                .find("'execution_noise_m' must be in [0.000000, 0.050000]"),
+            std::string::npos);
   EXPECT_NE(creation_error("scene: scenes/no_such_scene.yaml").find("no_such_scene"),
             std::string::npos);
   EXPECT_NE(creation_error("noise: 1").find("scene"), std::string::npos);

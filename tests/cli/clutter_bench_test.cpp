@@ -495,6 +495,7 @@ TEST_F(ClutterBenchTest, BadOptionsAreOneLineErrors) {
   expect_error("--shard 1/0 --report x.json", "is not i/n");
   expect_error("--shard 1/2", "needs --report");
   expect_error("--runs 0", "--runs must be in 1..100000");
+  expect_error("--replicates 101", "--replicates must be in 1..100");
   expect_error("--objects-per-run 101", "--objects-per-run: Value 101 not in range 1 to 100");
   expect_error("--objects-per-run 0", "--objects-per-run: Value 0 not in range 1 to 100");
   expect_error("--noise -1", "--noise: Value -1 not in range");

@@ -69,11 +69,43 @@ TEST_F(ClutterEngineTest, ShardsMergeIntoTheReportOfTheWholeBench) {
   EXPECT_EQ(without_seconds(merged["run_records"]), without_seconds(records));
 }
 
+// Replicates run every seed again after the first draw, with execution noise: the first draw
+// is the bench without replicates, and the summary tallies each draw and resamples seeds.
+TEST_F(ClutterEngineTest, ReplicatesRunEverySeedAgainAfterTheFirstDraw) {
+  ClutterBenchOptions once = small_bench();
+  once.runs = 2;
+  ClutterBenchOptions twice = once;
+  twice.replicates = 2;
+  const nlohmann::ordered_json first = run_clutter_bench(once);
+  const nlohmann::ordered_json both = run_clutter_bench(twice);
+  const auto& records = both.at("run_records");
+  ASSERT_EQ(records.size(), 4u);
+  for (std::size_t i = 0; i < 4; ++i) {
+    EXPECT_EQ(records[i]["seed"], 7 + i % 2);
+    EXPECT_EQ(records[i]["replicate"], i / 2);
+  }
+  for (std::size_t i = 0; i < 2; ++i)
+    EXPECT_EQ(without_seconds(records[i]), without_seconds(first["run_records"][i]));
+  EXPECT_FALSE(first["summary"].contains("by_replicate"));
+  const auto& tallies = both["summary"]["by_replicate"];
+  ASSERT_EQ(tallies.size(), 2u);
+  EXPECT_EQ(tallies[0]["attempts"], first["summary"]["attempts"]);
+  EXPECT_EQ(tallies[0]["attempts"].get<int>() + tallies[1]["attempts"].get<int>(),
+            both["summary"]["attempts"].get<int>());
+  EXPECT_EQ(tallies[1]["runs"], 2);
+  EXPECT_EQ(between_runs_intervals(records)["runs"], 2) << "one count per seed";
+}
+
 TEST_F(ClutterEngineTest, BadOptionsAreRefusedBeforeAnyRun) {
   ClutterBenchOptions no_runs = small_bench();
   no_runs.runs = 0;
   EXPECT_NE(error_of([&] { run_clutter_bench(no_runs); }).find("--runs must be in 1..100000"),
             std::string::npos);
+  ClutterBenchOptions no_replicates = small_bench();
+  no_replicates.replicates = 0;
+  EXPECT_NE(
+      error_of([&] { run_clutter_bench(no_replicates); }).find("--replicates must be in 1..100"),
+      std::string::npos);
   ClutterBenchOptions no_protocol = small_bench();
   no_protocol.protocol = "vgn-heap";
   EXPECT_NE(error_of([&] { run_clutter_bench(no_protocol); }).find("vgn-heap"), std::string::npos);

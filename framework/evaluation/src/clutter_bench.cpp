@@ -64,6 +64,9 @@ ClutterBenchOptions with_protocol(ClutterBenchOptions o) {
 void check_options(const ClutterBenchOptions& o) {
   if (!o.report_path.empty()) check_output_path(o.report_path);  // before minutes of runs
   if (o.runs < 1 || o.runs > 100000) throw Error("--runs must be in 1..100000");
+  if (o.replicates < 1 || o.replicates > 100) throw Error("--replicates must be in 1..100");
+  if (std::int64_t(o.runs) * o.replicates > 100000)
+    throw Error("--runs times --replicates must be at most 100000");
   if (o.objects_per_run < 1 || o.objects_per_run > 100)
     throw Error("--objects-per-run must be in 1..100");
   if (o.jobs < 1 || o.jobs > 64) throw Error("--jobs must be in 1..64");
@@ -114,13 +117,21 @@ void require_tree_entry(const RunSettings& settings, const std::string& option,
     throw Error(option + ": cannot make the folder '" + dir + "' (" + error.message() + ")");
 }
 
-bt::Tree load_run_tree(const Session& session, const RunSettings& settings, std::uint64_t seed) {
+// The tree of run `seed`, replicate `replicate` (ClutterBenchOptions::replicates).
+bt::Tree load_run_tree(const Session& session, const RunSettings& settings, std::uint64_t seed,
+                       int replicate) {
   bt::LoadOptions load;
   load.registry = &session.registry;
   load.components = session.host.get();
   load.seed = seed;
   load.overrides = {{"cell.seed", std::to_string(seed)}};
-  const std::string run_prefix = "seed-" + std::to_string(seed) + "-";
+  if (replicate > 0) {  // before the user's entries, which may set other noise
+    std::ostringstream noise;
+    noise << kReplicateNoiseM;
+    load.overrides.emplace_back("cell.execution_noise_m", noise.str());
+    load.overrides.emplace_back("cell.execution_seed", std::to_string(replicate));
+  }
+  const std::string run_prefix = clutter_run_prefix(seed, replicate);
   if (!settings.pictures_dir.empty())
     load.overrides.emplace_back("picture_prefix",
                                 (fs::path(settings.pictures_dir) / run_prefix).string());
@@ -184,12 +195,12 @@ double resident_mb() {
 }
 
 Json run_one(const Session& session, const RunSettings& settings, std::size_t index,
-             std::uint64_t seed) {
-  Json out = {{"task", index}, {"seed", seed}};
+             std::uint64_t seed, int replicate) {
+  Json out = {{"task", index}, {"seed", seed}, {"replicate", replicate}};
   const auto start = std::chrono::steady_clock::now();
   StageTimer timer;
   {
-    bt::Tree tree = load_run_tree(session, settings, seed);
+    bt::Tree tree = load_run_tree(session, settings, seed, replicate);
     tree.set_log_sink([](const bt::Node&, const std::string&) {});
     tree.add_observer(&timer);
     timer.start();
@@ -227,7 +238,9 @@ Json run_one(const Session& session, const RunSettings& settings, std::size_t in
 
 std::string progress_line(const Json& r, int runs) {
   std::ostringstream line;
-  line << "[run " << r["task"].get<int>() + 1 << "/" << runs << "] seed " << r["seed"] << ": ";
+  line << "[run " << r["task"].get<int>() + 1 << "/" << runs << "] seed " << r["seed"];
+  if (r["replicate"].get<int>() > 0) line << " (replicate " << r["replicate"] << ")";
+  line << ": ";
   if (r.contains("error")) {
     line << "error - " << r["error"].get<std::string>() << "\n";
     return line.str();
@@ -295,6 +308,14 @@ void print_clutter_summary(std::ostream& out, const Json& s, const std::string& 
       << s["lost"] << " during the runs";
   if (s.contains("missed_at_filling")) out << ", " << s["missed_at_filling"] << " while filling";
   out << "\n";
+  if (s.contains("by_replicate")) {
+    out << "by replicate (success; removed; out of the workspace):";
+    for (const Json& r : s["by_replicate"])
+      out << "  " << r["replicate"] << ": " << pct(r["success_rate"].get<double>()) << "% ("
+          << r["successes"] << "/" << r["attempts"] << "); " << r["removed"] << "/" << r["objects"]
+          << "; " << r["lost"];
+    out << "\n";
+  }
   if (s.contains("left_graspable")) {
     const int graspable = s["removed"].get<int>() + s["left_graspable"].get<int>();
     const auto [min_m, max_m] = summary_graspable_width_m(s);
@@ -333,15 +354,31 @@ std::pair<double, double> summary_graspable_width_m(const Json& summary) {
   return {range[0].get<double>(), range[1].get<double>()};
 }
 
+std::string clutter_run_prefix(std::uint64_t seed, int replicate) {
+  std::string prefix = "seed-" + std::to_string(seed) + "-";
+  if (replicate > 0) prefix += "replicate-" + std::to_string(replicate) + "-";
+  return prefix;
+}
+
 Json between_runs_intervals(const Json& runs) {
-  std::vector<RunCount> attempts, objects;
+  // One count per seed, its replicates summed: they share the seed's scene.
+  std::map<std::uint64_t, RunCount> attempts_of, objects_of;
   for (const Json& run : runs) {
     if (run.contains("error")) continue;  // counted apart, as in the summary
-    attempts.push_back({run.at("successes").get<int>(), run.at("attempts").get<int>()});
+    const auto seed = run.at("seed").get<std::uint64_t>();
+    RunCount& a = attempts_of[seed];
+    a.successes += run.at("successes").get<int>();
+    a.trials += run.at("attempts").get<int>();
     // As in the summary, a run whose cell cannot count its objects (-1) adds nothing to removal.
-    if (run.at("objects").get<int>() >= 0)
-      objects.push_back({run.at("removed").get<int>(), run.at("objects").get<int>()});
+    if (run.at("objects").get<int>() >= 0) {
+      RunCount& o = objects_of[seed];
+      o.successes += run.at("removed").get<int>();
+      o.trials += run.at("objects").get<int>();
+    }
   }
+  std::vector<RunCount> attempts, objects;
+  for (const auto& [seed, count] : attempts_of) attempts.push_back(count);
+  for (const auto& [seed, count] : objects_of) objects.push_back(count);
   Json out = {{"runs", attempts.size()}};
   const auto as_json = [](std::pair<double, double> bounds) {
     return Json{bounds.first, bounds.second};
@@ -401,6 +438,44 @@ Json attempts_by_object(const Json& runs) {
     return a.at("attempts").get<int>() > b.at("attempts").get<int>();
   });
   return Json(sorted);
+}
+
+// Each replicate's tallies, in replicate order; nothing when the records are of one replicate
+// (reports written before replicates have none: replicate 0).
+Json replicate_tallies(const Json& runs) {
+  std::map<int, Json> by_replicate;
+  for (const Json& run : runs) {
+    if (run.contains("error")) continue;
+    Json& r =
+        by_replicate
+            .try_emplace(run.value("replicate", 0), Json{{"replicate", run.value("replicate", 0)},
+                                                         {"runs", 0},
+                                                         {"attempts", 0},
+                                                         {"successes", 0},
+                                                         {"objects", 0},
+                                                         {"removed", 0},
+                                                         {"lost", 0}})
+            .first->second;
+    const auto add = [&](const char* key, int value) { r[key] = r[key].get<int>() + value; };
+    add("runs", 1);
+    add("attempts", run.at("attempts").get<int>());
+    add("successes", run.at("successes").get<int>());
+    if (run.at("objects").get<int>() >= 0) {
+      add("objects", run.at("objects").get<int>());
+      add("removed", run.at("removed").get<int>());
+    }
+    add("lost", std::max(0, run.at("lost").get<int>()));
+  }
+  if (by_replicate.size() < 2) return nullptr;
+  Json out = Json::array();
+  for (auto& [replicate, r] : by_replicate) {
+    const int attempts = r["attempts"], successes = r["successes"];
+    const int objects = r["objects"], removed = r["removed"];
+    r["success_rate"] = attempts > 0 ? double(successes) / attempts : 0.0;
+    r["removed_rate"] = objects > 0 ? double(removed) / objects : 0.0;
+    out.push_back(std::move(r));
+  }
+  return out;
 }
 
 }  // namespace
@@ -472,6 +547,8 @@ Json summarise_clutter(const Json& runs) {
   if (between_runs.contains("removed"))
     summary["removed_rate"]["ci95_runs"] = between_runs.at("removed");
   if (filling_counted) summary["missed_at_filling"] = missed_at_filling;
+  if (Json replicates = replicate_tallies(runs); !replicates.is_null())
+    summary["by_replicate"] = std::move(replicates);
   // The objects the gripper could hold as they lay: those removed and those left that fit.
   if (truth && errors < int(runs.size())) {
     summary["left"] = left;
@@ -487,7 +564,9 @@ Json run_clutter_bench(const ClutterBenchOptions& options) {
   check_options(o);
   const BenchShard shard = parse_shard(o.shard);
   require_shard_report(shard, o.report_path);
-  const std::vector<std::size_t> tasks = shard_tasks(std::size_t(o.runs), shard);
+  // Task t is replicate t / runs of run t % runs: the first replicate of every run comes first.
+  const std::size_t total = std::size_t(o.runs) * std::size_t(o.replicates);
+  const std::vector<std::size_t> tasks = shard_tasks(total, shard);
   RunSettings settings;
   settings.tree_path = o.tree_path;
   settings.pictures_dir = o.pictures_dir;
@@ -516,19 +595,24 @@ Json run_clutter_bench(const ClutterBenchOptions& options) {
   }
 
   std::cout << "clutter bench (" << o.protocol << "): " << o.runs << " runs of "
-            << o.objects_per_run << " objects (" << o.objects << "), " << o.jobs << " process(es)";
+            << o.objects_per_run << " objects (" << o.objects << ")";
+  if (o.replicates > 1) std::cout << ", " << o.replicates << " replicates each";
+  std::cout << ", " << o.jobs << " process(es)";
   if (!shard.whole()) std::cout << "; " << shard.str() << ": " << tasks.size() << " runs";
   std::cout << "\n";
   const auto start = std::chrono::steady_clock::now();
   // With several processes, a tree that cannot load is one error line, not one per process.
   if (o.jobs > 1)
-    check_in_child([&](const Session& session) { load_run_tree(session, settings, o.seed); });
+    check_in_child([&](const Session& session) {
+      load_run_tree(session, settings, o.seed, o.replicates > 1 ? 1 : 0);
+    });
+  const std::size_t per_replicate = std::size_t(o.runs);
   std::vector<Json> records = run_bench_tasks(
       tasks, o.jobs,
       [&](const Session& session, std::size_t i) {
-        return run_one(session, settings, i, o.seed + i);
+        return run_one(session, settings, i, o.seed + i % per_replicate, int(i / per_replicate));
       },
-      [&](const Json& record) { return progress_line(record, o.runs); });
+      [&](const Json& record) { return progress_line(record, int(total)); });
   const double wall_s =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
@@ -538,17 +622,22 @@ Json run_clutter_bench(const ClutterBenchOptions& options) {
   std::cout << "\n";
   print_clutter_summary(std::cout, summary, o.protocol);
   std::cout << "wall time " << wall_s << " s\n";
-  Json report = {{"bench", "clutter"},  {"protocol", o.protocol},
-                 {"tree", o.tree_path}, {"objects", o.objects},
-                 {"runs", o.runs},      {"objects_per_run", o.objects_per_run},
-                 {"seed", o.seed},      {"noise", o.noise.empty() ? "tree" : o.noise},
+  Json report = {{"bench", "clutter"},
+                 {"protocol", o.protocol},
+                 {"tree", o.tree_path},
+                 {"objects", o.objects},
+                 {"runs", o.runs},
+                 {"replicates", o.replicates},
+                 {"objects_per_run", o.objects_per_run},
+                 {"seed", o.seed},
+                 {"noise", o.noise.empty() ? "tree" : o.noise},
                  {"overrides", o.set}};
   add_how_it_ran(report, o.jobs, settings.threads, cores, wall_s);
   report["summary"] = summary;
   report["run_records"] = std::move(runs);
   if (gripper) report["gripper"] = {{"file", o.gripper_path}, {"name", gripper->name}};
   if (robot) report["robot"] = {{"file", robot_path}, {"name", robot->name}};
-  if (!shard.whole()) report["shard"] = shard_json(shard, std::size_t(o.runs));
+  if (!shard.whole()) report["shard"] = shard_json(shard, total);
   return report;
 }
 

@@ -113,6 +113,9 @@ CellOptions read_cell_options(const Parameters& p, const SceneSpec& scene) {
   a.approach_step_m = in_range(p, "approach_step_m", a.approach_step_m, 0.0005, 0.02);
   a.lift_m = in_range(p, "lift_m", a.lift_m, 0.02, 0.5);
   a.hold_s = in_range(p, "hold_s", a.hold_s, 0.0, 10.0);
+  o.execution.position_m = in_range(p, "execution_noise_m", 0.0, 0.0, 0.05);
+  o.execution.rotation_rad = in_range(p, "execution_noise_rad", 0.0, 0.0, 0.5);
+  o.execution.seed = p.get<std::uint64_t>("execution_seed", 0);
   a.gripper.finger_force_n = in_range(p, "finger_force_n", a.gripper.finger_force_n, 0.1, 500.0);
   a.gripper.friction = in_range(p, "gripper_friction", a.gripper.friction, 0.05, 1.0);
   a.gripper.torsional_friction_m =
@@ -251,7 +254,9 @@ GraspAttempt BulletCell::execute(const GraspRequest& request) {
   AttemptOptions attempt = options_.attempt;
   attempt.gripper.geometry = request.gripper;
   const std::vector<int> before = objects_in_workspace();
-  AttemptResult result = attempt_grasp(*world_, grasp.X_FrameHand, attempt);
+  const Eigen::Isometry3d X_BaseHand =
+      executed_pose(grasp.X_FrameHand, options_.execution, seed_, attempts_);
+  AttemptResult result = attempt_grasp(*world_, X_BaseHand, attempt);
   GraspAttempt& record = result.record;
   if (record.outcome == GraspOutcome::kSuccess) world_->remove_body(result.held_object);
   world_->settle(1.0);

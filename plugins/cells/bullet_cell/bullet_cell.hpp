@@ -8,6 +8,7 @@
 #include "antipode/interfaces/cell.hpp"
 #include "cell_arm.hpp"
 #include "depth_renderer.hpp"
+#include "execution_noise.hpp"
 #include "grasp_attempt.hpp"
 #include "scene_builder.hpp"
 
@@ -16,6 +17,7 @@ namespace antipode::cells {
 struct CellOptions {
   PhysicsOptions physics;
   AttemptOptions attempt;
+  ExecutionNoise execution;  ///< the error of each executed hand pose (none by default)
   SensorModel sensor;
   std::uint64_t seed = 0;
   int render_threads = 2;             ///< threads sharing a view's rows (same cloud for any number)
