@@ -142,6 +142,8 @@ TEST_F(HogSvmTest, BadModelsAndParametersAreErrorsAtTheirKeys) {
             std::string::npos);
   EXPECT_NE(error_of([&] { create(model_yaml() + "\nthreshold: .nan"); }).find("finite"),
             std::string::npos);
+  const std::string veto = error_of([&] { create(model_yaml() + "\nantipodal_veto: often"); });
+  EXPECT_NE(veto.find("antipodal_veto"), std::string::npos) << veto;
 }
 
 // With `score: probability` a calibrated model scores each hand by its Platt probability and
@@ -180,6 +182,43 @@ TEST_F(HogSvmTest, AHandSetOfAnotherGeometryIsRefused) {
   const std::string error = error_of([&] { create(model_yaml())->classify(set, {}); });
   EXPECT_NE(error.find("toy.model was trained for a 0.06 m deep"), std::string::npos) << error;
   EXPECT_NE(error.find("this hand set has a 0.05 m deep"), std::string::npos) << error;
+}
+
+// One hand at the origin (approach +x, closing +y) whose closing region holds a 2 mm grid of
+// points: two faces of a 4 cm block facing the fingers (`faces_fingers`), or one flat face
+// across the closing direction, whose normals no finger presses along.
+HandSet one_hand_on_a_patch(bool faces_fingers) {
+  auto cloud = std::make_shared<Cloud>();
+  Hand hand;
+  for (double x = 0.01; x <= 0.05; x += 0.002)
+    for (double t = -0.01; t <= 0.0101; t += 0.002) {
+      if (faces_fingers) {
+        cloud->points_m.emplace_back(float(x), -0.02f, float(t));
+        cloud->points_m.emplace_back(float(x), 0.02f, float(t));
+      } else {
+        cloud->points_m.emplace_back(float(x), float(2.0 * t), 0.0f);
+      }
+    }
+  for (std::size_t i = 0; i < cloud->size(); ++i) hand.closing_points.push_back(std::int32_t(i));
+  HandSet set;
+  set.cloud = cloud;
+  set.hands.push_back(hand);
+  return set;
+}
+
+TEST_F(HogSvmTest, TheAntipodalVetoRejectsAcceptedHandsNoViewCouldMakeAntipodal) {
+  const std::string accept_all = model_yaml() + "\nthreshold: -1e9";
+  for (const bool faces_fingers : {true, false}) {
+    HandSet plain = one_hand_on_a_patch(faces_fingers);
+    create(accept_all)->classify(plain, {});
+    EXPECT_EQ(plain.hands[0].label, HandLabel::kPositive);
+    HandSet vetoed = one_hand_on_a_patch(faces_fingers);
+    create(accept_all + "\nantipodal_veto: true")->classify(vetoed, {});
+    EXPECT_EQ(vetoed.hands[0].score, plain.hands[0].score) << "the model's score stays";
+    EXPECT_EQ(vetoed.hands[0].label, faces_fingers ? HandLabel::kPositive : HandLabel::kNegative);
+    EXPECT_EQ(vetoed.hands[0].rejection,
+              faces_fingers ? Rejection::kNone : Rejection::kNotAntipodal);
+  }
 }
 
 }  // namespace

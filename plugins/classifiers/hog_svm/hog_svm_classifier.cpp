@@ -6,7 +6,9 @@
 // robot (a robot file, docs/robot.md: its `model` is the default model), score ("decision": the
 // SVM's decision value; "probability": the calibrated probability of success of a model trained on
 // outcome labels, docs/training.md), threshold (the score from which a hand is a grasp: 0 for
-// decision values, 0.5 for probabilities), threads (0 = all).
+// decision values, 0.5 for probabilities), antipodal_veto (false; true: a hand the model accepts
+// is still rejected when the near-antipodal check on the hand set's cloud finds it negative),
+// threads (0 = all).
 #include <cmath>
 #include <filesystem>
 #include <string>
@@ -14,6 +16,7 @@
 
 #include "antipode/core/error.hpp"
 #include "antipode/core/parameters.hpp"
+#include "antipode/grasp/antipodal.hpp"
 #include "antipode/grasp/hand_image.hpp"
 #include "antipode/grasp/svm_model.hpp"
 #include "antipode/interfaces/classifier.hpp"
@@ -70,6 +73,7 @@ class HogSvmClassifier final : public Classifier {
         model_(load_model(params, path_)),
         probability_(read_score(params, model_, path_)),
         threshold_(params.get<double>("threshold", probability_ ? 0.5 : 0.0)),
+        antipodal_veto_(params.get<bool>("antipodal_veto", false)),
         threads_(params.get<int>("threads", 0)) {
     if (!std::isfinite(threshold_))
       params.fail("threshold", "parameter 'threshold' must be finite");
@@ -114,13 +118,40 @@ class HogSvmClassifier final : public Classifier {
         hand.rejection = Rejection::kLowScore;
       }
     }
+    if (antipodal_veto_) veto_not_antipodal(set, stop);
   }
 
  private:
+  // The veto (docs/classification.md): the accepted hands whose closing region shows fewer
+  // than k points facing either finger - no view could make them near antipodal - become
+  // negative (`not_antipodal`); their score stays the model's.
+  void veto_not_antipodal(HandSet& set, const StopToken& stop) const {
+    HandSet accepted{set.cloud, {}, set.geometry, set.support, {}};
+    std::vector<std::size_t> index;
+    for (std::size_t i = 0; i < set.hands.size(); ++i)
+      if (set.hands[i].label == HandLabel::kPositive) {
+        accepted.hands.push_back(set.hands[i]);
+        index.push_back(i);
+      }
+    if (index.empty()) return;
+    AntipodalLabellingOptions options;
+    options.normals.threads = threads_;
+    const std::vector<AntipodalCount> counts = count_antipodal_normals(accepted, options);
+    stop.throw_if_stop_requested("hog_svm_classifier");
+    for (std::size_t j = 0; j < index.size(); ++j) {
+      if (antipodal_label(counts[j], options.antipodal.min_points) != HandLabel::kNegative)
+        continue;
+      Hand& hand = set.hands[index[j]];
+      hand.label = HandLabel::kNegative;
+      hand.rejection = Rejection::kNotAntipodal;
+    }
+  }
+
   std::string path_;
   SvmModel model_;
   bool probability_;
   double threshold_;
+  bool antipodal_veto_;
   int threads_;
 };
 
