@@ -443,38 +443,34 @@ Json attempts_by_object(const Json& runs) {
 // Each replicate's tallies, in replicate order; nothing when the records are of one replicate
 // (reports written before replicates have none: replicate 0).
 Json replicate_tallies(const Json& runs) {
-  std::map<int, Json> by_replicate;
+  struct Tally {
+    int runs = 0, attempts = 0, successes = 0, objects = 0, removed = 0, lost = 0;
+  };
+  std::map<int, Tally> by_replicate;
   for (const Json& run : runs) {
     if (run.contains("error")) continue;
-    Json& r =
-        by_replicate
-            .try_emplace(run.value("replicate", 0), Json{{"replicate", run.value("replicate", 0)},
-                                                         {"runs", 0},
-                                                         {"attempts", 0},
-                                                         {"successes", 0},
-                                                         {"objects", 0},
-                                                         {"removed", 0},
-                                                         {"lost", 0}})
-            .first->second;
-    const auto add = [&](const char* key, int value) { r[key] = r[key].get<int>() + value; };
-    add("runs", 1);
-    add("attempts", run.at("attempts").get<int>());
-    add("successes", run.at("successes").get<int>());
-    if (run.at("objects").get<int>() >= 0) {
-      add("objects", run.at("objects").get<int>());
-      add("removed", run.at("removed").get<int>());
+    Tally& t = by_replicate[run.value("replicate", 0)];
+    ++t.runs;
+    t.attempts += run.at("attempts").get<int>();
+    t.successes += run.at("successes").get<int>();
+    if (run.at("objects").get<int>() >= 0) {  // as in the summary
+      t.objects += run.at("objects").get<int>();
+      t.removed += run.at("removed").get<int>();
     }
-    add("lost", std::max(0, run.at("lost").get<int>()));
+    t.lost += std::max(0, run.at("lost").get<int>());
   }
   if (by_replicate.size() < 2) return nullptr;
   Json out = Json::array();
-  for (auto& [replicate, r] : by_replicate) {
-    const int attempts = r["attempts"], successes = r["successes"];
-    const int objects = r["objects"], removed = r["removed"];
-    r["success_rate"] = attempts > 0 ? double(successes) / attempts : 0.0;
-    r["removed_rate"] = objects > 0 ? double(removed) / objects : 0.0;
-    out.push_back(std::move(r));
-  }
+  for (const auto& [replicate, t] : by_replicate)
+    out.push_back({{"replicate", replicate},
+                   {"runs", t.runs},
+                   {"attempts", t.attempts},
+                   {"successes", t.successes},
+                   {"objects", t.objects},
+                   {"removed", t.removed},
+                   {"lost", t.lost},
+                   {"success_rate", t.attempts > 0 ? double(t.successes) / t.attempts : 0.0},
+                   {"removed_rate", t.objects > 0 ? double(t.removed) / t.objects : 0.0}});
   return out;
 }
 
