@@ -176,6 +176,90 @@ TEST_F(HogSvmTest, ProbabilityScoresComeFromTheModelsCalibration) {
             std::string::npos);
 }
 
+// A model file's operating points are the classifier's defaults: how to read the score and
+// the thresholds of `operating_point` accept and relaxed. Explicit parameters still win.
+TEST_F(HogSvmTest, TheModelFilesOperatingPointsAreTheDefaults) {
+  SvmModel outcome = toy_model();
+  outcome.calibration = {-1.0, 0.5, 100};
+  outcome.operating = {true, 0.7, 0.4};
+  const std::string path = model_dir() + "/models/operating.model";
+  outcome.save(path);
+  const ToyHands toy = toy_hands(40, 5);
+  HandSet accept = toy.set, relaxed = toy.set, decision = toy.set;
+  create("model: " + path)->classify(accept, {});
+  create("model: " + path + "\noperating_point: relaxed")->classify(relaxed, {});
+  create("model: " + path + "\nscore: decision")->classify(decision, {});
+  EXPECT_EQ(accept.scores, ScoreMeaning::kProbability);
+  EXPECT_EQ(decision.scores, ScoreMeaning::kOrder);
+  int between = 0;
+  for (std::size_t i = 0; i < accept.hands.size(); ++i) {
+    const double p = accept.hands[i].score;
+    EXPECT_NEAR(p, 1.0 / (1.0 + std::exp(-decision.hands[i].score + 0.5)), 1e-12);
+    EXPECT_EQ(accept.hands[i].label, p >= 0.7 ? HandLabel::kPositive : HandLabel::kNegative);
+    EXPECT_EQ(relaxed.hands[i].label, p >= 0.4 ? HandLabel::kPositive : HandLabel::kNegative);
+    EXPECT_EQ(decision.hands[i].label,
+              decision.hands[i].score >= 0.0 ? HandLabel::kPositive : HandLabel::kNegative);
+    between += p >= 0.4 && p < 0.7;
+  }
+  EXPECT_GT(between, 0);  // the two operating points differ on these hands
+  const std::string other_kind =
+      error_of([&] { create("model: " + path + "\nscore: decision\noperating_point: relaxed"); });
+  EXPECT_NE(other_kind.find("the model's operating points are not for this score; give a "
+                            "'threshold'"),
+            std::string::npos)
+      << other_kind;
+  EXPECT_NE(error_of([&] {
+              create("model: " + path + "\noperating_point: lenient");
+            }).find("parameter 'operating_point' must be accept or relaxed, got 'lenient'"),
+            std::string::npos);
+}
+
+// `labels` picks among a robot file's models: its `model` (antipodal), its `success_model`
+// (outcome), or the latter where the file names one.
+TEST_F(HogSvmTest, LabelsChooseAmongTheRobotFilesModels) {
+  SvmModel outcome = toy_model();
+  outcome.calibration = {-2.0, 0.25, 100};
+  outcome.operating = {true, 0.7, 0.4};
+  outcome.save(model_dir() + "/models/success.model");
+  const std::string source = ANTIPODE_TEST_SOURCE_DIR;
+  const auto robot_file = [&](const std::string& name, const std::string& extra) {
+    const std::string path = model_dir() + "/" + name;
+    std::ofstream(path) << "urdf: " << source << "/robots/baxter/baxter.urdf\n"
+                        << "arm_tip: right_gripper\ngripper_from: right_hand\n"
+                        << "home_rad: [0.08, -1.0, 1.19, 1.94, -0.67, 1.03, 0.5]\n"
+                        << "gripper: " << source << "/robots/grippers/baxter_electric.yaml\n"
+                        << "model: models/toy.model\n"
+                        << extra;
+    return path;
+  };
+  const std::string both = robot_file("both.yaml", "success_model: models/success.model\n");
+  const std::string one = robot_file("one.yaml", "");
+  const ToyHands toy = toy_hands(10, 6);
+  const auto meaning = [&](const std::string& yaml) {
+    HandSet set = toy.set;
+    create(yaml)->classify(set, {});
+    return set.scores;
+  };
+  EXPECT_EQ(meaning("robot: " + both), ScoreMeaning::kOrder);  // antipodal by default
+  EXPECT_EQ(meaning("robot: " + both + "\nlabels: outcome"), ScoreMeaning::kProbability);
+  EXPECT_EQ(meaning("robot: " + both + "\nlabels: outcome_or_antipodal"),
+            ScoreMeaning::kProbability);
+  EXPECT_EQ(meaning("robot: " + one + "\nlabels: outcome_or_antipodal"), ScoreMeaning::kOrder);
+  const std::string none = error_of([&] { create("robot: " + one + "\nlabels: outcome"); });
+  EXPECT_NE(none.find("tree.yaml:2:1: parameter 'labels': " + one +
+                      " names no success_model for its gripper; use labels: antipodal"),
+            std::string::npos)
+      << none;
+  EXPECT_NE(error_of([&] { create("robot: " + both + "\nlabels: best"); })
+                .find("parameter 'labels' must be antipodal, outcome or outcome_or_antipodal, got "
+                      "'best'"),
+            std::string::npos);
+  EXPECT_NE(error_of([&] {
+              create(model_yaml() + "\nlabels: outcome");
+            }).find("parameter 'labels' chooses among the models of a robot file"),
+            std::string::npos);
+}
+
 TEST_F(HogSvmTest, AHandSetOfAnotherGeometryIsRefused) {
   HandSet set = toy_hands(3, 4).set;
   set.geometry.depth_m = 0.05;

@@ -296,6 +296,8 @@ TEST(SvmTest, SaveLoadRoundTripKeepsValuesAndBytes) {
   EXPECT_TRUE(loaded.descriptor.matches(model.descriptor));
   EXPECT_EQ(loaded.kernel.C, model.kernel.C);
   EXPECT_FALSE(loaded.calibration.fitted());
+  std::printf("model: %zu components, %zu support vectors, %ju bytes\n", model.components(),
+              model.support_vector_count(), static_cast<std::uintmax_t>(fs::file_size(path)));
   SvmModel calibrated = model;
   calibrated.calibration = {-1.25, 0.5, 300};
   calibrated.save(again);
@@ -303,14 +305,64 @@ TEST(SvmTest, SaveLoadRoundTripKeepsValuesAndBytes) {
   EXPECT_EQ(reloaded.calibration.a, -1.25);
   EXPECT_EQ(reloaded.calibration.b, 0.5);
   EXPECT_EQ(reloaded.calibration.examples, 300u);
+  EXPECT_FALSE(reloaded.operating.probability);  // decision values from 0 unless told
+  EXPECT_EQ(reloaded.operating.accept, 0.0);
+  EXPECT_EQ(reloaded.operating.relaxed, -0.5);
+  calibrated.operating = {true, 0.7, 0.4};
+  calibrated.save(again);
+  const SvmOperatingPoints read = SvmModel::load(again).operating;
+  EXPECT_TRUE(read.probability);
+  EXPECT_EQ(read.accept, 0.7);
+  EXPECT_EQ(read.relaxed, 0.4);
   calibrated.calibration.b = NAN;
   EXPECT_NE(error_of([&] { calibrated.save(again); }).find("non-finite calibration"),
             std::string::npos);
-  const auto size = fs::file_size(path);
-  std::printf("model: %zu components, %zu support vectors, %ju bytes\n", model.components(),
-              model.support_vector_count(), static_cast<std::uintmax_t>(size));
   fs::remove(path);
   fs::remove(again);
+}
+
+// A model's operating points must make sense before it is written: finite, relaxed no higher
+// than accept, probabilities only of a calibrated model and within [0, 1].
+TEST(SvmTest, OperatingPointsAreChecked) {
+  SvmModel model = trained();
+  const std::string path = temp_path("operating.model");
+  const auto save_error = [&](SvmOperatingPoints o) {
+    model.operating = o;
+    return error_of([&] { model.save(path); });
+  };
+  EXPECT_NE(save_error({true, 0.7, 0.4}).find("probabilities of an uncalibrated model"),
+            std::string::npos);
+  model.calibration = {-1.5, 0.1, 100};
+  EXPECT_EQ(save_error({true, 0.7, 0.4}), "");
+  EXPECT_NE(save_error({true, 0.4, 0.7}).find("relaxed threshold above the accepting one"),
+            std::string::npos);
+  EXPECT_NE(save_error({true, 1.2, 0.4}).find("outside [0, 1]"), std::string::npos);
+  EXPECT_EQ(save_error({false, 1.2, -3.0}), "");  // decision values take any number
+  EXPECT_NE(save_error({false, NAN, 0.0}).find("non-finite operating points"), std::string::npos);
+  fs::remove(path);
+}
+
+// A file of format 5 (before operating points) loads as decision values from 0, -0.5 relaxed.
+TEST(SvmTest, FormatFiveModelsLoadWithDecisionOperatingPoints) {
+  SvmModel model = trained();
+  model.calibration = {-1.5, 0.1, 100};
+  model.operating = {true, 0.7, 0.4};
+  const std::string path = temp_path("format5.model");
+  model.save(path);
+  std::vector<char> bytes = bytes_of(path);
+  bytes.resize(bytes.size() - 17);  // without the operating points
+  const std::uint32_t five = 5;
+  const std::uint64_t payload = bytes.size() - kHeaderBytes;
+  std::memcpy(bytes.data() + 8, &five, sizeof(five));
+  std::memcpy(bytes.data() + 12, &payload, sizeof(payload));
+  fix_checksum(bytes);
+  write_bytes(path, bytes);
+  const SvmModel old = SvmModel::load(path);
+  EXPECT_EQ(old.calibration.examples, 100u);
+  EXPECT_FALSE(old.operating.probability);
+  EXPECT_EQ(old.operating.accept, 0.0);
+  EXPECT_EQ(old.operating.relaxed, -0.5);
+  fs::remove(path);
 }
 
 bool is_half(float v) {
@@ -425,8 +477,9 @@ TEST(SvmTest, DamagedModelFilesAreClearErrors) {
   std::vector<char> nan = good;
   const double not_a_number = std::nan("");
   // The file ends with rho, positives, negatives, seed, cv accuracy, the (empty) description's
-  // length and the calibration's a, b and example count, 8 bytes each.
-  std::memcpy(nan.data() + nan.size() - 72, &not_a_number, sizeof(double));
+  // length and the calibration's a, b and example count, 8 bytes each, then the operating
+  // points: the score kind (1 byte), accept and relaxed (8 bytes each).
+  std::memcpy(nan.data() + nan.size() - 89, &not_a_number, sizeof(double));
   fix_checksum(nan);
   EXPECT_NE(load_error(nan).find("non-finite number"), std::string::npos) << load_error(nan);
   // An image size no descriptor needs (a model asking for 200 x 200 px cells would take

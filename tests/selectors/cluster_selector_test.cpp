@@ -600,6 +600,29 @@ TEST_F(ClusterSelectorTest, ATiltedClosingRanksBelowAFlatterOne) {
   EXPECT_DOUBLE_EQ(untilted.hands[0].score, 9.0) << "with every tilt free the score decides";
 }
 
+// Probabilities of success rank first (scores within score_first_tolerance tie, and the
+// tilt decides among them); scores that are only an order come after the tilt.
+TEST_F(ClusterSelectorTest, ProbabilitiesOfSuccessRankBeforeTheTilt) {
+  const auto selector = create("min_cluster_size: 1\nmax_grasps: 3");
+  const auto hands = [] {
+    return on_table({from_side(0.0, 0.1, 45.0, 0.9), from_side(0.2, 0.1, 10.0, 0.6),
+                     from_side(0.4, 0.1, 25.0, 0.88)});
+  };
+  const HandSet order = selector->select(hands(), {});
+  ASSERT_EQ(grasp_count(order), 3u);
+  EXPECT_DOUBLE_EQ(order.hands[0].score, 0.6) << "an order: the flattest closing first";
+  HandSet probabilities = hands();
+  probabilities.scores = ScoreMeaning::kProbability;
+  const HandSet ranked = selector->select(probabilities, {});
+  ASSERT_EQ(grasp_count(ranked), 3u);
+  EXPECT_DOUBLE_EQ(ranked.hands[0].score, 0.88) << "0.88 ties 0.9 (0.05), and is flatter";
+  EXPECT_DOUBLE_EQ(ranked.hands[1].score, 0.9);
+  EXPECT_DOUBLE_EQ(ranked.hands[2].score, 0.6) << "0.3 less likely to hold: last";
+  const HandSet off = create("min_cluster_size: 1\nmax_grasps: 3\nscore_first_tolerance: 0")
+                          ->select(probabilities, {});
+  EXPECT_DOUBLE_EQ(off.hands[0].score, 0.6) << "0 keeps the score last";
+}
+
 TEST_F(ClusterSelectorTest, AGraspFarFromTheCentreOfMassIsTriedOnlyWhenNoOtherRemains) {
   const auto selector = create("min_cluster_size: 1");
   HandSet set = on_table({top_down(0.0, 0, 0.1, 9.0)});  // held 10 cm from the mass below

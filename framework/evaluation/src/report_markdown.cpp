@@ -83,6 +83,8 @@ std::string classifier_words(const nlohmann::ordered_json& report) {
     if (text.rfind("classifier.plugin=", 0) == 0) plugin = text.substr(18);
     if (text.rfind("classifier.model=", 0) == 0) model = text.substr(17);
     if (text == "classifier.score=probability") probability = true;
+    // A robot file's grasp-success model (hog_svm_classifier's `labels`).
+    if (text == "labels=outcome" || text == "labels=outcome_or_antipodal") probability = true;
   }
   if (probability) {
     return "ranked by success probability" +

@@ -119,6 +119,8 @@ RobotFile read_robot_file(const std::string& path) {
     p.fail("gripper", "gripper: " + e.message());
   }
   if (p.has("model")) file.model_path = resolve_path(p.require<std::string>("model"), path);
+  if (p.has("success_model"))
+    file.success_model_path = resolve_path(p.require<std::string>("success_model"), path);
   p.reject_unknown();
   return file;
 }

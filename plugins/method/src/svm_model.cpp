@@ -26,7 +26,8 @@ constexpr const char* kMagic = "ANTPSVM1";
 // 3: support vectors in half precision; not read.
 // 4: basis in 8-bit codes; support vectors in half precision (the leading components) and
 //    8-bit codes (the rest).
-constexpr std::uint32_t kVersion = 5;  // 5: Platt scaling after the training facts
+constexpr std::uint32_t kVersion =
+    6;  // 5: Platt scaling after the training facts; 6: operating points
 // The largest finite half-precision number.
 constexpr float kHalfMax = 65504.0f;
 constexpr int kMaxOption = 4096;  // bound on each image option read from a file
@@ -89,6 +90,18 @@ std::string image_problem(const HandImageOptions& o) {
   return "";
 }
 
+// The operating points (SvmOperatingPoints): finite, relaxed no higher than accept, and
+// probabilities only of a calibrated model, within [0, 1].
+std::string operating_problem(const SvmModel& m) {
+  const SvmOperatingPoints& o = m.operating;
+  if (!std::isfinite(o.accept) || !std::isfinite(o.relaxed)) return "non-finite operating points";
+  if (o.relaxed > o.accept) return "relaxed threshold above the accepting one";
+  if (!o.probability) return "";
+  if (!m.calibration.fitted()) return "operating points are probabilities of an uncalibrated model";
+  if (o.relaxed < 0.0 || o.accept > 1.0) return "probability operating points outside [0, 1]";
+  return "";
+}
+
 std::string numbers_problem(const SvmModel& m) {
   const SvmDescriptorSpec& s = m.descriptor;
   for (const double v : {s.depth_m, s.max_aperture_m, s.height_m}) {
@@ -115,7 +128,7 @@ std::string numbers_problem(const SvmModel& m) {
   if (!std::isfinite(m.calibration.a) || !std::isfinite(m.calibration.b)) {
     return "non-finite calibration";
   }
-  return "";
+  return operating_problem(m);
 }
 
 std::string model_problem(const SvmModel& m) {
@@ -550,6 +563,9 @@ void SvmModel::save(const std::string& path) const {
   w.put(calibration.a);
   w.put(calibration.b);
   w.put<std::uint64_t>(calibration.examples);
+  w.put<std::uint8_t>(operating.probability ? 1 : 0);
+  w.put(operating.accept);
+  w.put(operating.relaxed);
   w.write(path);
 }
 
@@ -602,6 +618,13 @@ SvmModel SvmModel::load(const std::string& path) {
     m.calibration.a = r.get<double>();
     m.calibration.b = r.get<double>();
     m.calibration.examples = r.get<std::uint64_t>();
+  }
+  if (r.version() >= 6) {
+    const auto probability = r.get<std::uint8_t>();
+    if (probability > 1) r.fail("inconsistent: score kind " + std::to_string(probability));
+    m.operating.probability = probability == 1;
+    m.operating.accept = r.get<double>();
+    m.operating.relaxed = r.get<double>();
   }
   r.expect_end();
   const std::size_t d = m.input_dimension();

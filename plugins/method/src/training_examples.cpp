@@ -126,7 +126,7 @@ HandSet with_closing_points_in(const HandSet& set, std::shared_ptr<const Cloud> 
   if (reference == nullptr) throw Error("closing points: no reference cloud");
   reference->validate();
   // Another cloud: the objects' point indices would name other points, so they stay behind.
-  HandSet out{reference, set.hands, set.geometry, set.support, {}};
+  HandSet out{reference, set.hands, set.geometry, set.support, {}, set.scores};
   for (Hand& hand : out.hands) hand.object = -1;
   const HandBody body = make_hand_body(set.geometry, 0.0);
   in_arena(threads, [&] {

@@ -34,6 +34,10 @@ std::string classification_problem(const HandSet& in, const std::vector<std::siz
     const std::size_t i = where[k];
     if (!std::isfinite(out.hands[k].score))
       return "gave hand " + std::to_string(i) + " a score that is not a number";
+    if (out.scores == ScoreMeaning::kProbability &&
+        !(out.hands[k].score >= 0.0 && out.hands[k].score <= 1.0))
+      return "called its scores probabilities but gave hand " + std::to_string(i) + " " +
+             std::to_string(out.hands[k].score);
     if (!out.hands[k].X_FrameHand.matrix().isApprox(in.hands[i].X_FrameHand.matrix()))
       return "moved hand " + std::to_string(i);
   }
@@ -80,6 +84,7 @@ class ClassifyHands final : public bt::SyncActionNode {
     // The input's hands in order: the classified ones moved in, the others as they were.
     auto classified =
         std::make_shared<HandSet>(HandSet{in->cloud, {}, in->geometry, in->support, in->objects});
+    classified->scores = scored.scores;
     classified->hands.reserve(in->hands.size());
     for (std::size_t i = 0, k = 0; i < in->hands.size(); ++i)
       classified->hands.push_back(k < where.size() && where[k] == i ? std::move(scored.hands[k++])

@@ -61,8 +61,8 @@ class TryGrasps final : public bt::SyncActionNode {
       fail("cell", "the cell of " + describe() +
                        " cannot save its world, so trials cannot "
                        "start from one state (a simulated cell such as bullet_cell can)");
-    auto tried =
-        std::make_shared<HandSet>(HandSet{in->cloud, {}, in->geometry, in->support, in->objects});
+    auto tried = std::make_shared<HandSet>(
+        HandSet{in->cloud, {}, in->geometry, in->support, in->objects, in->scores});
     std::vector<GraspAttempt> attempts;
     for (const std::size_t h : draw_hands(*in, std::size_t(trials), random())) {
       // Every trial, the first too, meets a restored world: its caches start cold, as theirs.

@@ -1,3 +1,4 @@
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -13,7 +14,9 @@ namespace {
 /// Makes a model's score a probability of success: fits Platt scaling to its decision values
 /// on outcome-labelled examples it was not trained on (scenes held out from training) and
 /// writes the model with it (SvmModel::calibration). `hog_svm_classifier` with `score:
-/// probability` then scores hands by that probability.
+/// probability` then scores hands by that probability. Given `accept` and `relaxed`, the model
+/// is also written to be read that way by default (SvmModel::operating): probabilities, a
+/// hand a grasp from `accept`, a second chance from `relaxed`.
 class CalibrateClassifier final : public bt::SyncActionNode {
  public:
   using SyncActionNode::SyncActionNode;
@@ -25,6 +28,11 @@ class CalibrateClassifier final : public bt::SyncActionNode {
                  "dataset", "outcome-labelled examples from scenes the model was not trained on"),
              bt::input_port<std::string>("calibrated_file", std::string{},
                                          "where to write the calibrated model (empty: model_file)"),
+             bt::input_port<double>("accept", -1.0,
+                                    "the probability from which a hand is a grasp, stored as the "
+                                    "model's operating point (negative: keep the model's)"),
+             bt::input_port<double>("relaxed", -1.0,
+                                    "the second chance's probability threshold, likewise"),
              bt::input_port<int>("threads", 0, "workers (0: all cores)")},
             0,
             0,
@@ -33,10 +41,26 @@ class CalibrateClassifier final : public bt::SyncActionNode {
   }
 
  protected:
+  // `accept` and `relaxed` together make probabilities the model's default reading; checked
+  // before the examples are scored.
+  std::optional<SvmOperatingPoints> operating_points() const {
+    const double accept = get_input<double>("accept");
+    const double relaxed = get_input<double>("relaxed");
+    if (accept < 0.0 && relaxed < 0.0) return std::nullopt;
+    if (!(accept >= 0.0 && accept <= 1.0))
+      fail("accept", "port 'accept' is a probability in 0..1, got " + std::to_string(accept) +
+                         " (give accept and relaxed, or neither to keep the model's)");
+    if (!(relaxed >= 0.0 && relaxed <= accept))
+      fail("relaxed", "port 'relaxed' is a probability in 0..accept (" + std::to_string(accept) +
+                          "), got " + std::to_string(relaxed));
+    return SvmOperatingPoints{true, accept, relaxed};
+  }
+
   bt::Status tick() override {
     const std::string model_file = get_input<std::string>("model_file");
     std::string out = get_input<std::string>("calibrated_file");
     if (out.empty()) out = model_file;
+    const std::optional<SvmOperatingPoints> operating = operating_points();
     const TrainingSetPtr set = get_input<TrainingSetPtr>("dataset");
     SvmModel model = SvmModel::load(model_file);
     model.check_compatible(set->descriptor, set->geometry, model_file);
@@ -47,6 +71,7 @@ class CalibrateClassifier final : public bt::SyncActionNode {
                           std::to_string(set->positives()) + " successes");
     }
     model.calibration = fit_platt_scaling(scored.values, scored.held);
+    if (operating) model.operating = *operating;
     model.save(out);
     const std::vector<double> p = model.calibration.probabilities(scored.values);
     log("calibrated on " + std::to_string(set->size()) + " held-out examples (" +

@@ -55,6 +55,7 @@ class LabelHands final : public bt::SyncActionNode {
     options.normals.threads = get_input<int>("threads");
     auto labelled = std::make_shared<HandSet>(*hands);
     auto judged = std::make_shared<HandSet>(judged_set(*hands, options.normals.threads));
+    labelled->scores = judged->scores = ScoreMeaning::kOrder;  // the check's scores replace any
     const auto counts = count_antipodal_normals(*judged, options);
     for (std::size_t i = 0; i < counts.size(); ++i) {
       for (HandSet* set : {labelled.get(), judged.get()}) {

@@ -224,7 +224,7 @@ HandSet choose(std::vector<Hand> hands, const std::vector<double>& held, const H
     proposals.push_back(std::move(p));
   }
   std::stable_sort(proposals.begin(), proposals.end(), [&](const Proposal& a, const Proposal& b) {
-    const double first = o.score_first_tolerance;
+    const double first = in.scores == ScoreMeaning::kProbability ? o.score_first_tolerance : 0.0;
     if (first > 0.0 && std::abs(a.mean_score - b.mean_score) > first)
       return a.mean_score > b.mean_score;
     if (std::abs(a.tilt - b.tilt) > o.tilt_tolerance_rad2) return a.tilt < b.tilt;
@@ -314,6 +314,7 @@ HandSet choose(std::vector<Hand> hands, const std::vector<double>& held, const H
       hands[m].merged_into = index;
     }
   }
+  // A grasp's score is its cluster's sum (an order, not a probability, whatever the input's).
   HandSet out{in.cloud, std::move(kept), g, in.support, in.objects};
   out.hands.insert(out.hands.end(), dropped.begin(), dropped.end());
   out.hands.insert(out.hands.end(), hands.begin(), hands.end());

@@ -87,11 +87,11 @@ struct SelectionOptions {
   /// Penalties closer than this (m^2) tie, and the next criterion decides; the last is the
   /// cluster's score.
   double penalty_tolerance_m2 = 1e-6;
-  /// When positive, the clusters' mean member score is the first criterion (for a classifier
-  /// whose score is a probability of success: `hog_svm_classifier` with `score:
-  /// probability`), scores closer than this tying so that tilt, aperture and balance decide;
-  /// 0 keeps the score last.
-  double score_first_tolerance = 0.0;
+  /// When the hands' scores are probabilities of success (HandSet::scores, as
+  /// `hog_svm_classifier` gives them with a grasp-success model), the clusters' mean member
+  /// score is the first criterion, scores closer than this tying so that tilt, aperture and
+  /// balance decide; 0 keeps the score last. Scores that are only an order always come last.
+  double score_first_tolerance = 0.05;
   /// How many grasps to return.
   std::size_t max_grasps = 10;
   /// Workers for the checks of each hand (steps 1-3, and the screen); 0: one per core. The

@@ -2,6 +2,7 @@
 /// @file
 /// What flows from the sampler through the classifier to the selector.
 
+#include <cstdint>
 #include <memory>
 #include <optional>
 #include <vector>
@@ -13,6 +14,15 @@
 #include "antipode/geometry/support_plane.hpp"
 
 namespace antipode {
+
+/// What the hands' scores (Hand::score) say.
+enum class ScoreMeaning : std::uint8_t {
+  kOrder,  ///< higher is better, and nothing more (a decision value, a sampler's score)
+  /// The score of each hand the classifier scored (those without an earlier rejection) is a
+  /// calibrated probability, in [0, 1], that the grasp holds (a classifier trained on
+  /// outcomes): a selector may weigh score differences against other criteria.
+  kProbability,
+};
 
 /// Hands together with the (preprocessed) cloud their `closing_points` index into, the
 /// gripper geometry they were found for (a classifier that images the closing region, such
@@ -26,6 +36,9 @@ struct HandSet {
   /// The objects the sampler found standing on the support (scene_layout.hpp), which the
   /// hands' `object` ids name; empty when it did not segment the scene.
   std::vector<SceneObject> objects{};
+  /// What the hands' scores say; the stage that scores them sets it (a classifier), and a
+  /// stage that passes them on keeps it.
+  ScoreMeaning scores = ScoreMeaning::kOrder;
 };
 
 /// How hand sets travel between behaviour-tree nodes: shared and immutable; a stage that

@@ -23,8 +23,8 @@ namespace bt {
 class NodeRegistry;
 }
 
-constexpr std::uint32_t kAbiMajor = 12;
-constexpr std::uint32_t kAbiMinor = 1;
+constexpr std::uint32_t kAbiMajor = 13;
+constexpr std::uint32_t kAbiMinor = 0;
 
 /// One thing a plugin can make. For a component kind ("sampler", "classifier", "selector",
 /// "planner", "cell") `create` is set and `register_node` is null; for kind "node" it is the

@@ -13,6 +13,7 @@
 ///     home_rad: [0, -0.785, 0, -2.356, 0, 1.571, 0.785]
 ///     gripper: ../grippers/franka_hand.yaml  # the hand's geometry (a gripper file)
 ///     model: ../../models/hog_svm_franka.model  # optional: a classifier for that gripper
+///     success_model: my_outcome.model        # optional: its grasp-success model
 ///
 /// Frames and units: the URDF's root link is the robot's base frame, the frame clouds and
 /// grasps are given in (the cell's frame: a robot's placement in the cell is the URDF's own
@@ -23,9 +24,12 @@
 /// links below them are not checked against the observed points when the arm's reach and
 /// motion are planned (the fingers enclose the target's points). Without it, the whole hand
 /// (`gripper_from` and below) is left unchecked: right for a hand no wider than the gripper
-/// file's palm, which the sampler checks against the points itself. Every key but `name`,
-/// `model` and `points_unchecked` is required: a file that left one out would silently
-/// describe part of another robot.
+/// file's palm, which the sampler checks against the points itself. `model` is the classifier
+/// trained on the paper's near-antipodal labels; `success_model` one trained on the cell's
+/// grasp outcomes, whose score is a probability of success (docs/training.md), which
+/// `hog_svm_classifier` takes with `labels: outcome`. Every key but `name`, `model`,
+/// `success_model` and `points_unchecked` is required: a file that left one out would
+/// silently describe part of another robot.
 
 #include <string>
 #include <vector>
@@ -49,6 +53,8 @@ struct RobotFile {
   std::string gripper_path;      ///< the gripper file
   HandGeometry gripper;          ///< its geometry
   std::string model_path;        ///< the HOG + SVM model trained for it; "" when not named
+  /// The HOG + SVM model trained on grasp outcomes for it; "" when not named.
+  std::string success_model_path;
 };
 
 /// Reads the robot file at `path`. Throws antipode::Error with one line naming the file and,

@@ -73,6 +73,18 @@ struct SvmTrainingInfo {
   std::string description;  ///< free text (training data, command line, ...)
 };
 
+/// How a model's scores are read and the thresholds it is meant to be used at: its operating
+/// points, chosen when it was made (on training scenes, docs/training.md) and stored in its
+/// file, so that a tree names only the model. `hog_svm_classifier` takes its `score` and
+/// `threshold` defaults from here. Files of formats 4 and 5 load with the defaults below.
+struct SvmOperatingPoints {
+  /// true: hands are scored by their calibrated probability of success (the model must be
+  /// calibrated); false: by the SVM's decision value.
+  bool probability = false;
+  double accept = 0.0;    ///< hands scoring at least this are grasps
+  double relaxed = -0.5;  ///< a second chance's lower threshold (trees/clear_box.yaml); <= accept
+};
+
 class SvmModel {
  public:
   SvmDescriptorSpec descriptor;
@@ -101,6 +113,9 @@ class SvmModel {
   /// calibrated on held-out outcomes (calibration.hpp, `CalibrateClassifier`). Files of
   /// format 4, from before calibration, load uncalibrated.
   PlattScaling calibration;
+  /// How the classifier reads the scores by default (format 6; older files: decision values,
+  /// 0 and -0.5).
+  SvmOperatingPoints operating;
 
   std::size_t input_dimension() const { return mean.size(); }
   std::size_t components() const { return scale.size(); }
@@ -108,7 +123,9 @@ class SvmModel {
 
   /// Throws antipode::Error (prefixed with `context`, e.g. the file name) when the sizes
   /// disagree with each other or with the descriptor options, a number is non-finite, a
-  /// polynomial kernel's degree is outside [1, 10] or the model has no support vector.
+  /// polynomial kernel's degree is outside [1, 10], the model has no support vector, or the
+  /// operating points are not finite, relaxed exceeds accept, or they are probabilities of an
+  /// uncalibrated model or outside [0, 1].
   void validate(const std::string& context = "SVM model") const;
 
   /// Decision values f(x) of `n` row-major descriptors of `dim` numbers at `rows`, using
