@@ -31,9 +31,8 @@ namespace {
 using namespace antipode;
 namespace fs = std::filesystem;
 
-// The robot file's model for `labels`.
-std::string robot_model_path(const Parameters& params) {
-  const RobotFile robot = robot_file_parameter(params, "robot");
+// `labels`, checked whatever model is used: one of the three, and only beside a robot file.
+std::string read_labels(const Parameters& params) {
   const std::string labels = params.get<std::string>("labels", "antipodal");
   if (labels != "antipodal" && labels != "outcome" && labels != "outcome_or_antipodal") {
     params.fail("labels",
@@ -41,6 +40,17 @@ std::string robot_model_path(const Parameters& params) {
                 "outcome_or_antipodal, got '" +
                     labels + "'");
   }
+  if (params.has("labels") && !params.has("robot")) {
+    params.fail("labels",
+                "parameter 'labels' chooses among the models of a robot file: give "
+                "the classifier a 'robot'");
+  }
+  return labels;
+}
+
+// The robot file's model for `labels`.
+std::string robot_model_path(const Parameters& params, const std::string& labels) {
+  const RobotFile robot = robot_file_parameter(params, "robot");
   if (labels != "antipodal" && !robot.success_model_path.empty()) return robot.success_model_path;
   if (labels == "outcome") {
     params.fail("labels", "parameter 'labels': " + robot.path +
@@ -57,17 +67,9 @@ std::string robot_model_path(const Parameters& params) {
 // The model file: `model`, else the robot file's for `labels`, else the shipped model for
 // Baxter's gripper. A `model` given beside a robot file replaces its models.
 std::string model_path(const Parameters& params) {
-  if (params.has("labels") && !params.has("robot")) {
-    params.fail("labels",
-                "parameter 'labels' chooses among the models of a robot file: give "
-                "the classifier a 'robot'");
-  }
-  if (params.has("model")) {
-    (void)params.get<std::string>("robot", "");
-    (void)params.get<std::string>("labels", "");
-  } else if (params.has("robot")) {
-    return robot_model_path(params);
-  }
+  const std::string labels = read_labels(params);
+  if (params.has("robot") && !params.has("model")) return robot_model_path(params, labels);
+  (void)params.get<std::string>("robot", "");  // read: replaced by `model`
   return resolve_path(params.get<std::string>("model", "models/hog_svm.model"), params.file());
 }
 

@@ -26,8 +26,8 @@ constexpr const char* kMagic = "ANTPSVM1";
 // 3: support vectors in half precision; not read.
 // 4: basis in 8-bit codes; support vectors in half precision (the leading components) and
 //    8-bit codes (the rest).
-constexpr std::uint32_t kVersion =
-    6;  // 5: Platt scaling after the training facts; 6: operating points
+// 5: Platt scaling after the training facts. 6: the operating points after it.
+constexpr std::uint32_t kVersion = 6;
 // The largest finite half-precision number.
 constexpr float kHalfMax = 65504.0f;
 constexpr int kMaxOption = 4096;  // bound on each image option read from a file
