@@ -242,13 +242,31 @@ TEST_F(ClutterBenchTest, ReportWritesMarkdownAndAChart) {
 TEST_F(ClutterBenchTest, ReportNamesTheClassifierARunSwappedIn) {
   const std::string nc = "--set classifier.plugin=passthrough_classifier";
   report("--runs 1 --objects-per-run 2 --seed 3 " + nc, "clutter-nc.json");
-  report("--runs 1 --objects-per-run 2 --seed 3", "clutter-svm.json");
+  const auto svm = report("--runs 1 --objects-per-run 2 --seed 3", "clutter-svm.json");
   const CommandResult made = antipode("report " + file("clutter-svm.json") + " " +
                                       file("clutter-nc.json") + " --out " + file("nc.md"));
   ASSERT_EQ(made.exit_code, 0) << made.out;
   std::ifstream in(file("nc.md"));
   const std::string markdown((std::istreambuf_iterator<char>(in)), {});
-  EXPECT_NE(markdown.find("## Dense clutter: procedural shapes\n"), std::string::npos) << markdown;
+  // Baxter's robot file names a grasp-success model, which the tree's default `labels`
+  // (outcome_or_antipodal) chooses: the report records both and says so.
+  EXPECT_EQ(svm.value("labels", ""), "outcome_or_antipodal") << svm.dump();
+  EXPECT_EQ(std::filesystem::path(svm["robot"].value("success_model", "")).filename(),
+            "hog_svm_outcome.model");
+  const std::string outcome_title =
+      "## Dense clutter: procedural shapes, ranked by success probability "
+      "(`hog_svm_outcome.model`)\n";
+  EXPECT_NE(markdown.find(outcome_title), std::string::npos) << markdown;
+  // The paper's antipodal-labelled model, chosen by `labels` or by a robot file without a
+  // grasp-success model, gets the plain title.
+  auto antipodal = svm;
+  antipodal["overrides"] = {"labels=antipodal"};
+  EXPECT_NE(report_markdown(antipodal).find("## Dense clutter: procedural shapes\n"),
+            std::string::npos);
+  auto no_success_model = svm;
+  no_success_model["robot"].erase("success_model");
+  EXPECT_NE(report_markdown(no_success_model).find("## Dense clutter: procedural shapes\n"),
+            std::string::npos);
   EXPECT_NE(markdown.find("## Dense clutter: procedural shapes, no classifier (NC)\n"),
             std::string::npos)
       << markdown;

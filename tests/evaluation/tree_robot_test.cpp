@@ -32,6 +32,15 @@ TEST(TreeRobotTest, TheLastSetRobotElseTheTreesSettingElseNone) {
   fs::remove(broken);
 }
 
+// A setting as a run sees it: the last override, else the tree's own, as written.
+TEST(TreeRobotTest, TreeSettingTakesTheLastOverrideElseTheTreesValue) {
+  const std::string tree = kSource + "/trees/clear_box.yaml";
+  EXPECT_EQ(tree_setting(tree, {}, "labels"), "outcome_or_antipodal");
+  EXPECT_EQ(tree_setting(tree, {"labels=outcome", "labels=antipodal"}, "labels"), "antipodal");
+  EXPECT_EQ(tree_setting(tree, {"labelsx=outcome"}, "labels"), "outcome_or_antipodal");
+  EXPECT_EQ(tree_setting(tree, {}, "no_such_setting"), "");
+}
+
 TEST(TreeRobotTest, ReportsNameTheRobotASetPutInTheTreesPlace) {
   nlohmann::ordered_json report = {{"tree", "trees/clear_box.yaml"},
                                    {"overrides", {"cell.seed=3"}}};

@@ -96,6 +96,7 @@ TEST_F(PipelineNodesTest, AMisbehavingClassifierFailsItsNodeWithTheReason) {
   for (const auto& [garbage, reason] :
        {std::pair<std::string, std::string>{"nan", "gave hand 0 a score that is not a number"},
         {"drop", "returned 4 hands for 5"},
+        {"probability", "called its scores probabilities but gave hand 0 1.5, outside [0, 1]"},
         {"throw", "the classifier failed: the model file vanished"},
         {"std",
          "ClassifyHands's code or its classifier 'classifier' (plugin garbage_classifier) "

@@ -632,7 +632,14 @@ Json run_clutter_bench(const ClutterBenchOptions& options) {
   report["summary"] = summary;
   report["run_records"] = std::move(runs);
   if (gripper) report["gripper"] = {{"file", o.gripper_path}, {"name", gripper->name}};
-  if (robot) report["robot"] = {{"file", robot_path}, {"name", robot->name}};
+  if (robot) {
+    report["robot"] = {{"file", robot_path}, {"name", robot->name}};
+    if (!robot->success_model_path.empty())
+      report["robot"]["success_model"] = robot->success_model_path;
+  }
+  // Which of the robot file's models the classifiers use (trees/clear_box.yaml's `labels`).
+  if (const std::string labels = tree_setting(o.tree_path, o.set, "labels"); !labels.empty())
+    report["labels"] = labels;
   if (!shard.whole()) report["shard"] = shard_json(shard, total);
   return report;
 }

@@ -75,26 +75,43 @@ std::string robot_words(const nlohmann::ordered_json& report) {
   }
 }
 
+// Whether the run's classifiers scored hands with the robot file's grasp-success model
+// (hog_svm_classifier's `labels`): the tree's `labels` setting as the report records it (an
+// override, else the tree's own), `outcome_or_antipodal` when the robot file names one.
+bool robot_success_model_used(const nlohmann::ordered_json& report) {
+  std::string labels = report.value("labels", "");
+  for (const auto& entry : report.value("overrides", nlohmann::ordered_json::array()))
+    if (const std::string text = entry.get<std::string>(); text.rfind("labels=", 0) == 0)
+      labels = text.substr(7);
+  if (labels == "outcome") return true;
+  return labels == "outcome_or_antipodal" && report.contains("robot") &&
+         report.at("robot").contains("success_model");
+}
+
 std::string classifier_words(const nlohmann::ordered_json& report) {
-  std::string plugin, model;
+  std::string plugin, model, success_model;
   bool probability = false;
   for (const auto& entry : report.value("overrides", nlohmann::ordered_json::array())) {
     const std::string text = entry.get<std::string>();
     if (text.rfind("classifier.plugin=", 0) == 0) plugin = text.substr(18);
     if (text.rfind("classifier.model=", 0) == 0) model = text.substr(17);
     if (text == "classifier.score=probability") probability = true;
-    // A robot file's grasp-success model (hog_svm_classifier's `labels`).
-    if (text == "labels=outcome" || text == "labels=outcome_or_antipodal") probability = true;
   }
-  if (probability) {
-    return "ranked by success probability" +
-           (model.empty() ? std::string()
-                          : " (`" + std::filesystem::path(model).filename().string() + "`)");
+  if (!plugin.empty() && plugin != "hog_svm_classifier") {
+    if (plugin == "passthrough_classifier") return "no classifier (NC)";
+    if (plugin == "antipodal_classifier") return "the antipodal classifier (A)";
+    return "classifier `" + plugin + "`";
   }
-  if (plugin.empty()) return "";
-  if (plugin == "passthrough_classifier") return "no classifier (NC)";
-  if (plugin == "antipodal_classifier") return "the antipodal classifier (A)";
-  return "classifier `" + plugin + "`";
+  if (model.empty() && robot_success_model_used(report)) {
+    probability = true;
+    // Reports written before the robot's model was recorded name none.
+    if (report.contains("robot") && report.at("robot").contains("success_model"))
+      model = report.at("robot").at("success_model").get<std::string>();
+  }
+  if (!probability) return "";
+  return "ranked by success probability" +
+         (model.empty() ? std::string()
+                        : " (`" + std::filesystem::path(model).filename().string() + "`)");
 }
 
 std::string object_set_name(const std::string& objects) {

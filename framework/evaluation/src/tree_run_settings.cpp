@@ -65,18 +65,25 @@ void check_entries_are_read(const std::string& tree_path, const std::vector<std:
   }
 }
 
-std::string tree_robot_path(const std::string& tree_path, const std::vector<std::string>& set) {
+std::string tree_setting(const std::string& tree_path, const std::vector<std::string>& set,
+                         const std::string& key) {
+  const std::string prefix = key + "=";
   for (auto it = set.rbegin(); it != set.rend(); ++it)
-    if (it->rfind("robot=", 0) == 0) return resolve_path(it->substr(6), tree_path);
+    if (it->rfind(prefix, 0) == 0) return it->substr(prefix.size());
   try {
     const YAML::Node settings = YAML::LoadFile(tree_path)["settings"];
-    if (settings.IsDefined() && settings.IsMap() && settings["robot"].IsDefined() &&
-        settings["robot"].IsScalar())
-      return resolve_path(settings["robot"].Scalar(), tree_path);
+    if (settings.IsDefined() && settings.IsMap() && settings[key].IsDefined() &&
+        settings[key].IsScalar())
+      return settings[key].Scalar();
   } catch (const YAML::Exception&) {
     // loading the tree reports the file's own errors
   }
   return {};
+}
+
+std::string tree_robot_path(const std::string& tree_path, const std::vector<std::string>& set) {
+  const std::string robot = tree_setting(tree_path, set, "robot");
+  return robot.empty() ? robot : resolve_path(robot, tree_path);
 }
 
 }  // namespace antipode::evaluation

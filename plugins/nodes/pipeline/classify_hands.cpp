@@ -1,5 +1,7 @@
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <cstdio>
 #include <string>
 #include <vector>
 
@@ -23,6 +25,13 @@ HandSet candidates_of(const HandSet& in, std::vector<std::size_t>& where) {
   return candidates;
 }
 
+// `value` as %g writes it (1.5, not to_string's 1.500000).
+std::string shortest(double value) {
+  std::array<char, 32> text{};
+  std::snprintf(text.data(), text.size(), "%g", value);
+  return text.data();
+}
+
 // What is wrong with `out` as a classification of the hands of `in` at `where`: other
 // hands, or scores that are not numbers. "" when nothing is.
 std::string classification_problem(const HandSet& in, const std::vector<std::size_t>& where,
@@ -37,7 +46,7 @@ std::string classification_problem(const HandSet& in, const std::vector<std::siz
     if (out.scores == ScoreMeaning::kProbability &&
         !(out.hands[k].score >= 0.0 && out.hands[k].score <= 1.0))
       return "called its scores probabilities but gave hand " + std::to_string(i) + " " +
-             std::to_string(out.hands[k].score);
+             shortest(out.hands[k].score) + ", outside [0, 1]";
     if (!out.hands[k].X_FrameHand.matrix().isApprox(in.hands[i].X_FrameHand.matrix()))
       return "moved hand " + std::to_string(i);
   }

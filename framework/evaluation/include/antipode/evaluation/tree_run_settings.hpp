@@ -29,6 +29,12 @@ std::vector<std::pair<std::string, std::string>> parse_overrides(
 /// have that name.
 void check_entries_are_read(const std::string& tree_path, const std::vector<std::string>& set);
 
+/// The value of the tree's setting `key` as a run sees it: the last `--set key=VALUE` of
+/// `set`, else the tree file's `settings` entry (docs/trees.md, settings), as written; "" when
+/// neither gives one (or the file cannot be read: loading the tree reports that).
+std::string tree_setting(const std::string& tree_path, const std::vector<std::string>& set,
+                         const std::string& key);
+
 /// The robot file a pick tree runs with: the last `--set robot=FILE` of `set`, else the
 /// tree file's `robot` setting (docs/trees.md, settings), resolved as the tree resolves it;
 /// "" when it names none.
