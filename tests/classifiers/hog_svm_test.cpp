@@ -3,6 +3,8 @@
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <string>
+#include <tuple>
 
 #include <gtest/gtest.h>
 
@@ -12,6 +14,7 @@
 #include "antipode/grasp/svm_model.hpp"
 #include "antipode/grasp/svm_training.hpp"
 #include "antipode/interfaces/classifier.hpp"
+#include "antipode/io/gripper_file.hpp"
 #include "antipode/plugin/plugin_host.hpp"
 #include "support/error_of.hpp"
 #include "support/toy_hands.hpp"
@@ -258,6 +261,31 @@ TEST_F(HogSvmTest, LabelsChooseAmongTheRobotFilesModels) {
               create(model_yaml() + "\nlabels: outcome");
             }).find("parameter 'labels' chooses among the models of a robot file"),
             std::string::npos);
+}
+
+// The shipped grasp-success models are calibrated and read as probabilities at the
+// operating points trees/train_outcomes.yaml writes (0.7, 0.4), each for the gripper it was
+// trained with, and refuse the other's hands.
+TEST(ShippedSuccessModelsTest, AreCalibratedProbabilitiesForTheirGrippers) {
+  const std::string source = ANTIPODE_TEST_SOURCE_DIR;
+  const std::string baxter = "robots/grippers/baxter_electric.yaml";
+  const std::string wide = "robots/grippers/parallel_8cm.yaml";
+  for (const auto& [model_file, gripper, other] :
+       {std::tuple<std::string, std::string, std::string>{"models/hog_svm_outcome.model", baxter,
+                                                          wide},
+        {"models/hog_svm_8cm_outcome.model", wide, baxter}}) {
+    const SvmModel model = SvmModel::load(source + "/" + model_file);
+    EXPECT_TRUE(model.calibration.fitted()) << model_file;
+    EXPECT_LT(model.calibration.a, 0.0) << model_file;  // larger decision values hold more
+    EXPECT_TRUE(model.operating.probability) << model_file;
+    EXPECT_DOUBLE_EQ(model.operating.accept, 0.7) << model_file;
+    EXPECT_DOUBLE_EQ(model.operating.relaxed, 0.4) << model_file;
+    const auto geometry = [&](const std::string& file) {
+      return read_gripper_file(source + "/" + file).geometry;
+    };
+    EXPECT_NO_THROW(model.check_compatible(model.descriptor.image, geometry(gripper)));
+    EXPECT_THROW(model.check_compatible(model.descriptor.image, geometry(other)), Error);
+  }
 }
 
 TEST_F(HogSvmTest, AHandSetOfAnotherGeometryIsRefused) {
