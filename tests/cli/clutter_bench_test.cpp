@@ -261,8 +261,15 @@ TEST_F(ClutterBenchTest, ReportNamesTheClassifierARunSwappedIn) {
   // grasp-success model, gets the plain title.
   auto antipodal = svm;
   antipodal["overrides"] = {"labels=antipodal"};
+  antipodal["labels"] = "antipodal";  // as the bench records the override
   EXPECT_NE(report_markdown(antipodal).find("## Dense clutter: procedural shapes\n"),
             std::string::npos);
+  // A report from before `labels` was recorded: its last override decides.
+  antipodal.erase("labels");
+  EXPECT_NE(report_markdown(antipodal).find("## Dense clutter: procedural shapes\n"),
+            std::string::npos);
+  antipodal["overrides"] = {"labels=antipodal", "labels=outcome"};
+  EXPECT_NE(report_markdown(antipodal).find(outcome_title), std::string::npos);
   auto no_success_model = svm;
   no_success_model["robot"].erase("success_model");
   EXPECT_NE(report_markdown(no_success_model).find("## Dense clutter: procedural shapes\n"),

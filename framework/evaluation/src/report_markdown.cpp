@@ -77,19 +77,21 @@ std::string robot_words(const nlohmann::ordered_json& report) {
 
 // Whether the run's classifiers scored hands with the robot file's grasp-success model
 // (hog_svm_classifier's `labels`): the tree's `labels` setting as the report records it (an
-// override, else the tree's own), `outcome_or_antipodal` when the robot file names one.
+// override, else the tree's own; reports from before it was recorded: the last override),
+// `outcome_or_antipodal` when the robot file names one.
 bool robot_success_model_used(const nlohmann::ordered_json& report) {
   std::string labels = report.value("labels", "");
-  for (const auto& entry : report.value("overrides", nlohmann::ordered_json::array()))
-    if (const std::string text = entry.get<std::string>(); text.rfind("labels=", 0) == 0)
-      labels = text.substr(7);
+  if (!report.contains("labels"))
+    for (const auto& entry : report.value("overrides", nlohmann::ordered_json::array()))
+      if (const std::string text = entry.get<std::string>(); text.rfind("labels=", 0) == 0)
+        labels = text.substr(7);
   if (labels == "outcome") return true;
   return labels == "outcome_or_antipodal" && report.contains("robot") &&
          report.at("robot").contains("success_model");
 }
 
 std::string classifier_words(const nlohmann::ordered_json& report) {
-  std::string plugin, model, success_model;
+  std::string plugin, model;
   bool probability = false;
   for (const auto& entry : report.value("overrides", nlohmann::ordered_json::array())) {
     const std::string text = entry.get<std::string>();
