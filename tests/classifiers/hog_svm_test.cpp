@@ -270,10 +270,12 @@ TEST(ShippedSuccessModelsTest, AreCalibratedProbabilitiesForTheirGrippers) {
   const std::string source = ANTIPODE_TEST_SOURCE_DIR;
   const std::string baxter = "robots/grippers/baxter_electric.yaml";
   const std::string wide = "robots/grippers/parallel_8cm.yaml";
+  const std::string franka = "robots/grippers/franka_hand.yaml";
   for (const auto& [model_file, gripper, other] :
        {std::tuple<std::string, std::string, std::string>{"models/hog_svm_outcome.model", baxter,
                                                           wide},
-        {"models/hog_svm_8cm_outcome.model", wide, baxter}}) {
+        {"models/hog_svm_8cm_outcome.model", wide, baxter},
+        {"models/hog_svm_franka_outcome.model", franka, wide}}) {
     const SvmModel model = SvmModel::load(source + "/" + model_file);
     EXPECT_TRUE(model.calibration.fitted()) << model_file;
     EXPECT_LT(model.calibration.a, 0.0) << model_file;  // larger decision values hold more

@@ -26,7 +26,8 @@ class PandaWithoutBaxterTest : public ::testing::Test {
       fs::copy(source / folder, root_ / folder, fs::copy_options::recursive);
     for (const char* folder : {"robots/panda", "robots/grippers"})
       fs::copy(source / folder, root_ / folder, fs::copy_options::recursive);
-    fs::copy(source / "models/hog_svm_franka.model", root_ / "models/hog_svm_franka.model");
+    for (const char* model : {"hog_svm_franka.model", "hog_svm_franka_outcome.model"})
+      fs::copy(source / "models" / model, root_ / "models" / model);
   }
   static void TearDownTestSuite() { fs::remove_all(root_); }
 
