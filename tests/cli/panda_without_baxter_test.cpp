@@ -45,7 +45,8 @@ TEST_F(PandaWithoutBaxterTest, ClearsASeededBoxOfFourObjects) {
       "run trees/clear_box.yaml --set robot=robots/panda/panda.yaml --set cell.object_count=4 "
       "--set cell.seed=3");
   ASSERT_EQ(r.exit_code, 0) << r.out;
-  // Seed 3 clears all four in six attempts; a floor of three leaves room for other CPUs.
+  // Seed 3 clears all four in four attempts (six with `labels=antipodal`); a floor of three
+  // leaves room for other CPUs.
   int cleared = -1;
   const auto at = r.out.find("cleared ");
   ASSERT_NE(at, std::string::npos) << r.out;
