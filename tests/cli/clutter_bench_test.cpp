@@ -468,10 +468,21 @@ TEST_F(ClutterBenchTest, SelectionsAreWrittenForEveryAttempt) {
     expected.insert(std::string(stem) + ".pcd");
     expected.insert(std::string(stem) + "-objects.json");
     if (cycles[c].contains("record")) expected.insert(std::string(stem) + "-path.json");  // planned
-    if (cycles[c]["outcome"] == "no grasp found") continue;  // no selection to write
     const std::string name = std::string(stem) + ".json";
-    expected.insert(name);
     std::ifstream in(folder + "/" + name);
+    if (cycles[c]["outcome"] == "no grasp found" ||
+        cycles[c]["outcome"] == "no grasp predicted to hold") {
+      // When the selector ran and kept nothing, its selection says why: every hand rejected.
+      if (!in) continue;
+      expected.insert(name);
+      const auto hands = nlohmann::json::parse(in).at("hands");
+      ASSERT_FALSE(hands.empty()) << name;
+      EXPECT_TRUE(std::all_of(hands.begin(), hands.end(), [](const auto& hand) {
+        return hand.contains("rejection");
+      })) << name;
+      continue;
+    }
+    expected.insert(name);
     ASSERT_TRUE(in) << name;
     const auto selection = nlohmann::json::parse(in);
     const auto& hands = selection.at("hands");
@@ -492,6 +503,35 @@ TEST_F(ClutterBenchTest, SelectionsAreWrittenForEveryAttempt) {
     written.insert(entry.path().filename().string());
   EXPECT_EQ(written, expected);
   EXPECT_FALSE(expected.empty());
+}
+
+// A cycle whose selection keeps no grasp writes it too, so that --selections shows why the
+// cycle found none: with clusters of at least 1,000 hands required, every cycle's selection
+// rejects every hand, and the run ends after three such cycles.
+TEST_F(ClutterBenchTest, ASelectionThatKeepsNoGraspIsWrittenWithEveryReason) {
+  const std::string folder = file("none-kept");
+  const auto r = report(
+      "--runs 1 --objects-per-run 3 --seed 2001 --set selector.min_cluster_size=1000"
+      " --selections " +
+          folder,
+      "none-kept.json");
+  const auto& cycles = r["run_records"][0]["cycles"];
+  ASSERT_EQ(cycles.size(), 3u) << r["run_records"][0]["summary"];
+  for (std::size_t c = 0; c < cycles.size(); ++c) {
+    EXPECT_EQ(cycles[c]["outcome"], "no grasp found");
+    char name[64];
+    std::snprintf(name, sizeof name, "seed-2001-cycle-%02zu.json", c + 1);
+    std::ifstream in(folder + "/" + name);
+    ASSERT_TRUE(in) << name;
+    const auto hands = nlohmann::json::parse(in).at("hands");
+    ASSERT_FALSE(hands.empty()) << name;
+    std::size_t too_small = 0;
+    for (const auto& hand : hands) {
+      ASSERT_TRUE(hand.contains("rejection")) << name;
+      too_small += hand["rejection"] == "cluster too small";
+    }
+    EXPECT_GT(too_small, 0u) << name;
+  }
 }
 
 // Soak, short form: one process runs twelve clear-the-box episodes back to back; every one

@@ -2,6 +2,7 @@
 // is the plane objects stand on, not the largest one, and the objects are its segments.
 #include "antipode/geometry/scene_layout.hpp"
 
+#include <algorithm>
 #include <cstdio>
 
 #include <gtest/gtest.h>
@@ -175,6 +176,34 @@ TEST(SceneLayoutTest, AnObjectRisesAtLeastTheLeastHeightAboveTheSupport) {
       3u);
 }
 
+// A pile's upper layer hides its own lower part: a box lying 1 cm above another (the gap
+// between them hidden in a real pile) rests on it and is an object; a box as high above
+// the table with nothing under it is not.
+TEST(SceneLayoutTest, AnObjectRestingOnAnotherIsAnObjectAFloatingOneIsNot) {
+  Cloud raw = testing::plane_cloud(kOnTable, kUp, 0.4, sparse());
+  Eigen::Matrix3d rotation;
+  rotation << kAcross, kAway, kUp;
+  const Eigen::Vector3d standing = kOnTable - 0.06 * kAcross + 0.03 * kUp;  // 6 cm tall
+  testing::append(raw, testing::box_cloud(standing, rotation, {0.05, 0.05, 0.06}));
+  testing::append(raw, testing::box_cloud(standing + 0.055 * kUp, rotation, {0.08, 0.04, 0.03}));
+  const Eigen::Vector3d floating = kOnTable + 0.1 * kAcross + 0.085 * kUp;
+  testing::append(raw, testing::box_cloud(floating, rotation, {0.05, 0.04, 0.03}));
+  const Cloud cloud = prepared(raw);
+  const SceneLayout layout =
+      find_scene_layout(cloud, Eigen::Vector3f::Zero(), SceneOptions{}, RandomStream(1));
+  ASSERT_EQ(layout.objects.size(), 2u) << layout.summary();
+  for (const SceneObject& object : layout.objects)
+    EXPECT_LT(object.centroid_m.cast<double>().dot(kAcross), 0.0) << layout.summary();
+  const auto [lower, higher] = std::minmax(layout.objects[0].height_m, layout.objects[1].height_m);
+  EXPECT_NEAR(lower, 0.06, 0.005) << layout.summary();   // the standing box's top
+  EXPECT_NEAR(higher, 0.10, 0.005) << layout.summary();  // the resting box's
+  SceneOptions standing_only;
+  standing_only.max_rest_gap_m = 0.0f;
+  EXPECT_EQ(find_scene_layout(cloud, Eigen::Vector3f::Zero(), standing_only, RandomStream(1))
+                .objects.size(),
+            1u);
+}
+
 TEST(SceneLayoutTest, InvalidOptionsAreErrors) {
   SceneOptions options;
   options.cluster_tolerance_m = 0.0f;
@@ -191,6 +220,9 @@ TEST(SceneLayoutTest, InvalidOptionsAreErrors) {
   }
   options = SceneOptions{};
   options.min_object_height_m = 0.005f;  // below the inlier distance
+  EXPECT_THROW(options.validate(), Error);
+  options = SceneOptions{};
+  options.max_rest_gap_m = -0.01f;
   EXPECT_THROW(options.validate(), Error);
 }
 

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstdio>
 #include <iterator>
+#include <numeric>
 #include <optional>
 
 #include <Eigen/Geometry>
@@ -151,9 +152,85 @@ std::vector<std::int32_t> largest_patch(const Points& points,
   return best;
 }
 
-// The objects standing on `c`: clusters of the points above it within its extent's footprint.
-std::vector<SceneObject> objects_on(const Points& points, const Candidate& c,
-                                    const SceneOptions& o) {
+// A cluster of the points above a candidate, measured against the object tests.
+struct Segment {
+  SceneObject object;
+  bool standing = false;  // reaches down to within max_gap_m of the plane
+};
+
+// `cluster` measured along the candidate `c`; nullopt when it fails a test other than
+// standing (too few points, too flat, cut by the height limit, too wide).
+std::optional<Segment> measure(const Points& points, const Candidate& c,
+                               std::vector<std::int32_t> cluster, const SceneOptions& o) {
+  if (cluster.size() < o.min_object_points) return std::nullopt;
+  const auto flat = [&](const Eigen::Vector3f& p) {
+    return Eigen::Vector2f(c.e1.dot(p), c.e2.dot(p));
+  };
+  SceneObject object;
+  object.min_m = object.max_m = points[std::size_t(cluster.front())];
+  Eigen::Vector2f lo = flat(object.min_m), hi = lo;
+  float low = o.max_object_height_m;
+  Eigen::Vector3d sum = Eigen::Vector3d::Zero();
+  for (const std::int32_t i : cluster) {
+    const Eigen::Vector3f& p = points[std::size_t(i)];
+    object.min_m = object.min_m.cwiseMin(p), object.max_m = object.max_m.cwiseMax(p);
+    lo = lo.cwiseMin(flat(p)), hi = hi.cwiseMax(flat(p));
+    low = std::min(low, c.plane.distance(p));
+    object.height_m = std::max(object.height_m, c.plane.distance(p));
+    sum += p.cast<double>();
+  }
+  const bool cut = object.height_m > o.max_object_height_m - 0.01f;
+  const bool too_flat = object.height_m < o.min_object_height_m;
+  if (cut || too_flat || (hi - lo).maxCoeff() > o.max_object_size_m) return std::nullopt;
+  object.centroid_m = (sum / static_cast<double>(cluster.size())).cast<float>();
+  object.points = std::move(cluster);
+  return Segment{std::move(object), low <= o.max_gap_m};
+}
+
+// Marks as standing the segments that rest on a standing one: joined to it by a chain of
+// segments, each within `max_rest_gap_m` of the next. They are a pile's upper layer, whose
+// lower part the layer itself hides from the sensors, so that its lowest visible points are
+// far above the plane. The chains are Euclidean clusters of an even subset of the segments'
+// points (at most one in kRestStride): the gaps between segments are several voxels wide,
+// and every point would cost a radius search of a few hundred neighbours.
+constexpr std::size_t kRestStride = 4;
+
+void mark_resting(const Points& points, std::vector<Segment>& segments, const SceneOptions& o) {
+  const auto standing = [](const Segment& s) { return s.standing; };
+  if (!(o.max_rest_gap_m > 0.0f) || std::all_of(segments.begin(), segments.end(), standing)) return;
+  std::vector<std::int32_t> subset;
+  std::vector<std::size_t> segment_of(points.size());
+  for (std::size_t s = 0; s < segments.size(); ++s) {
+    const std::vector<std::int32_t>& members = segments[s].object.points;
+    for (std::size_t k = 0; k < members.size(); k += kRestStride) {
+      subset.push_back(members[k]);
+      segment_of[std::size_t(members[k])] = s;
+    }
+  }
+  std::sort(subset.begin(), subset.end());
+  // The segments a pile joins are one group (union-find on segment indices): a segment whose
+  // subset falls into several piles joins them all.
+  std::vector<std::size_t> group(segments.size());
+  std::iota(group.begin(), group.end(), std::size_t{0});
+  const auto root = [&group](std::size_t s) {
+    while (group[s] != s) s = group[s] = group[group[s]];
+    return s;
+  };
+  for (const auto& pile : geometry::euclidean_clusters(points, subset, o.max_rest_gap_m)) {
+    const std::size_t first = root(segment_of[std::size_t(pile.front())]);
+    for (const std::int32_t i : pile) group[root(segment_of[std::size_t(i)])] = first;
+  }
+  std::vector<bool> grounded(segments.size(), false);
+  for (std::size_t s = 0; s < segments.size(); ++s)
+    if (segments[s].standing) grounded[root(s)] = true;
+  for (std::size_t s = 0; s < segments.size(); ++s) segments[s].standing = grounded[root(s)];
+}
+
+// The objects on `c`: clusters of the points above it within its extent's footprint that
+// stand on it, and those that rest on them. `standing_points` receives how many points the
+// standing ones have (what ranks the candidates as supports; resting ones do not count).
+std::vector<SceneObject> objects_on(const Points& points, const Candidate& c, const SceneOptions& o,
+                                    std::size_t& standing_points) {
   const auto flat = [&](const Eigen::Vector3f& p) {
     return Eigen::Vector2f(c.e1.dot(p), c.e2.dot(p));
   };
@@ -173,42 +250,27 @@ std::vector<SceneObject> objects_on(const Points& points, const Candidate& c,
     else if (!in_fixture(o, points[i]))
       above.push_back(static_cast<std::int32_t>(i));
   }
+  standing_points = 0;
   std::vector<SceneObject> objects;
   // A support has little behind it within its extent: a plane through an object has the
   // object's far part there.
   if (static_cast<double>(below) > kMaxBelowFraction * static_cast<double>(c.inliers.size()))
     return objects;
+  std::vector<Segment> segments;
   for (auto& cluster : geometry::euclidean_clusters(points, above, o.cluster_tolerance_m)) {
-    if (cluster.size() < o.min_object_points) continue;
-    SceneObject object;
-    object.min_m = object.max_m = points[std::size_t(cluster.front())];
-    Eigen::Vector2f lo = flat(object.min_m), hi = lo;
-    float low = o.max_object_height_m;
-    Eigen::Vector3d sum = Eigen::Vector3d::Zero();
-    for (const std::int32_t i : cluster) {
-      const Eigen::Vector3f& p = points[std::size_t(i)];
-      object.min_m = object.min_m.cwiseMin(p), object.max_m = object.max_m.cwiseMax(p);
-      lo = lo.cwiseMin(flat(p)), hi = hi.cwiseMax(flat(p));
-      low = std::min(low, c.plane.distance(p));
-      object.height_m = std::max(object.height_m, c.plane.distance(p));
-      sum += p.cast<double>();
+    if (std::optional<Segment> segment = measure(points, c, std::move(cluster), o)) {
+      if (segment->standing) standing_points += segment->object.points.size();
+      segments.push_back(std::move(*segment));
     }
-    const bool standing = low <= o.max_gap_m;
-    const bool cut = object.height_m > o.max_object_height_m - 0.01f;
-    const bool flat = object.height_m < o.min_object_height_m;
-    if (!standing || cut || flat || (hi - lo).maxCoeff() > o.max_object_size_m) continue;
-    object.centroid_m = (sum / static_cast<double>(cluster.size())).cast<float>();
-    object.id = static_cast<std::int32_t>(objects.size());
-    object.points = std::move(cluster);
-    objects.push_back(std::move(object));
+  }
+  if (standing_points == 0) return objects;
+  mark_resting(points, segments, o);
+  for (Segment& segment : segments) {
+    if (!segment.standing) continue;
+    segment.object.id = static_cast<std::int32_t>(objects.size());
+    objects.push_back(std::move(segment.object));
   }
   return objects;
-}
-
-std::size_t point_count(const std::vector<SceneObject>& objects) {
-  std::size_t n = 0;
-  for (const SceneObject& object : objects) n += object.points.size();
-  return n;
 }
 
 }  // namespace
@@ -231,6 +293,7 @@ void SceneOptions::validate() const {
           "min_object_height_m must be in [plane_distance_m, max_object_height_m)");
   require(max_gap_m >= 0.0f && max_gap_m < max_object_height_m,
           "max_gap_m must be in [0, max_object_height_m)");
+  require(max_rest_gap_m >= 0.0f && max_rest_gap_m < 0.1f, "max_rest_gap_m must be in [0, 0.1)");
   require(cluster_tolerance_m > 0.0f && cluster_tolerance_m < 0.1f,
           "cluster_tolerance_m must be in (0, 0.1)");
   require(min_object_points >= 1, "min_object_points must be at least 1");
@@ -258,8 +321,8 @@ SceneLayout find_scene_layout(const Cloud& cloud, const Eigen::Vector3f& toward_
     if (options.up && c->plane.normal.dot(*options.up) < min_cosine) continue;
     if (geometry::facing_fraction(cloud.points_m, index, c->inliers, c->plane) < kMinFacingFraction)
       continue;
-    std::vector<SceneObject> objects = objects_on(cloud.points_m, *c, options);
-    const std::size_t n = point_count(objects);
+    std::size_t n = 0;
+    std::vector<SceneObject> objects = objects_on(cloud.points_m, *c, options, n);
     if (n == 0 || n < best_points || (n == best_points && c->inliers.size() <= best_inliers))
       continue;
     best_points = n, best_inliers = c->inliers.size();

@@ -145,6 +145,7 @@ SceneOptions scene_options(const Parameters& params) {
       float(number(p, "min_object_height_m", o.min_object_height_m, 0.0, false));
   o.max_object_size_m = float(number(p, "max_object_size_m", o.max_object_size_m, 0.0, false));
   o.max_gap_m = float(number(p, "max_gap_m", o.max_gap_m, 0.0, true));
+  o.max_rest_gap_m = float(number(p, "max_rest_gap_m", o.max_rest_gap_m, 0.0, true));
   o.cluster_tolerance_m =
       float(number(p, "cluster_tolerance_m", o.cluster_tolerance_m, 0.0, false));
   o.min_object_points = std::size_t(integer(p, "min_object_points", int(o.min_object_points), 1));

@@ -21,6 +21,11 @@
 ///     along the plane. A cluster lower than `min_object_height_m` is taken for a stretch
 ///     of the support itself: a far, noisy or bent part of a table yields flat patches a
 ///     little beyond the inlier distance.
+///     A cluster that passes every test but reaching down is an object resting on others
+///     when a chain of such clusters, each within `max_rest_gap_m` of the next, joins it to
+///     a standing one: the upper layer of a pile, which hides its own lower part (and the
+///     objects under it) from the sensors, so that its lowest visible point can be far above
+///     the plane. It does not count towards the support's choice (step 4).
 ///  4. The support is the candidate with the most object points (ties: more inliers). With
 ///     `up` given (the direction against gravity in the cloud's frame), only candidates whose
 ///     normal lies within `max_tilt_deg` of it count; without, "up" is each plane's normal
@@ -55,7 +60,10 @@ struct SceneOptions {
   /// is an object, a 1.2 cm rise of the table's far end is not.
   float min_object_height_m = 0.015f;
   float max_object_size_m = 0.5f;
-  float max_gap_m = 0.03f;             ///< how far above the plane an object's lowest point may be
+  float max_gap_m = 0.03f;  ///< how far above the plane an object's lowest point may be
+  /// How close a cluster that does not reach the plane must come to an object to rest on it
+  /// (step 3); 0: only clusters that reach the plane are objects.
+  float max_rest_gap_m = 0.015f;
   float cluster_tolerance_m = 0.006f;  ///< neighbours on a 3 mm voxel grid, and a little noise
   std::size_t min_object_points = 30;
   std::optional<Eigen::Vector3f> up;  ///< against gravity, in the cloud's frame (unit)
@@ -66,7 +74,7 @@ struct SceneOptions {
   void validate() const;
 };
 
-/// One object standing on the support: a segment of the cloud.
+/// One object standing on the support, or resting on objects that do: a segment of the cloud.
 struct SceneObject {
   std::int32_t id = 0;               ///< 0, 1, ... in the order of their first point
   std::vector<std::int32_t> points;  ///< indices into the cloud, increasing
