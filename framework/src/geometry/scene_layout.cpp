@@ -152,6 +152,11 @@ std::vector<std::int32_t> largest_patch(const Points& points,
   return best;
 }
 
+// `p` in the candidate's plane coordinates (along e1 and e2).
+Eigen::Vector2f flat(const Candidate& c, const Eigen::Vector3f& p) {
+  return Eigen::Vector2f(c.e1.dot(p), c.e2.dot(p));
+}
+
 // A cluster of the points above a candidate, measured against the object tests.
 struct Segment {
   SceneObject object;
@@ -163,18 +168,15 @@ struct Segment {
 std::optional<Segment> measure(const Points& points, const Candidate& c,
                                std::vector<std::int32_t> cluster, const SceneOptions& o) {
   if (cluster.size() < o.min_object_points) return std::nullopt;
-  const auto flat = [&](const Eigen::Vector3f& p) {
-    return Eigen::Vector2f(c.e1.dot(p), c.e2.dot(p));
-  };
   SceneObject object;
   object.min_m = object.max_m = points[std::size_t(cluster.front())];
-  Eigen::Vector2f lo = flat(object.min_m), hi = lo;
+  Eigen::Vector2f lo = flat(c, object.min_m), hi = lo;
   float low = o.max_object_height_m;
   Eigen::Vector3d sum = Eigen::Vector3d::Zero();
   for (const std::int32_t i : cluster) {
     const Eigen::Vector3f& p = points[std::size_t(i)];
     object.min_m = object.min_m.cwiseMin(p), object.max_m = object.max_m.cwiseMax(p);
-    lo = lo.cwiseMin(flat(p)), hi = hi.cwiseMax(flat(p));
+    lo = lo.cwiseMin(flat(c, p)), hi = hi.cwiseMax(flat(c, p));
     low = std::min(low, c.plane.distance(p));
     object.height_m = std::max(object.height_m, c.plane.distance(p));
     sum += p.cast<double>();
@@ -231,19 +233,16 @@ void mark_resting(const Points& points, std::vector<Segment>& segments, const Sc
 // standing ones have (what ranks the candidates as supports; resting ones do not count).
 std::vector<SceneObject> objects_on(const Points& points, const Candidate& c, const SceneOptions& o,
                                     std::size_t& standing_points) {
-  const auto flat = [&](const Eigen::Vector3f& p) {
-    return Eigen::Vector2f(c.e1.dot(p), c.e2.dot(p));
-  };
   std::vector<Eigen::Vector2f> footprint;
   for (const std::int32_t i : largest_patch(points, c.inliers, kVoxel_m))
-    footprint.push_back(flat(points[std::size_t(i)]));
+    footprint.push_back(flat(c, points[std::size_t(i)]));
   const std::vector<Eigen::Vector2f> hull = geometry::convex_hull(std::move(footprint));
   std::vector<std::int32_t> above;
   std::size_t below = 0;
   for (std::size_t i = 0; i < points.size(); ++i) {
     const float h = c.plane.distance(points[i]);
     if (std::fabs(h) <= o.plane_distance_m || std::fabs(h) > o.max_object_height_m ||
-        !inside(hull, flat(points[i])))
+        !inside(hull, flat(c, points[i])))
       continue;
     if (h < 0.0f)
       ++below;
